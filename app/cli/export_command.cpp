@@ -1,0 +1,38 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/input.hpp"
+#include "nome/io/obj.hpp"
+#include "nome/io/stl.hpp"
+
+namespace nome::cli {
+
+int export_command(const std::vector<std::string>& args) {
+  std::vector<OptionSpec> specs = {{"--output", "-o", "OUT", "output file: .obj or .stl"},
+                                   {"--ascii", "", "", "write ASCII STL instead of binary"}};
+  for (OptionSpec& s : input_options()) specs.push_back(std::move(s));
+  Arguments parsed("export", "nome export FILE... -o OUT.obj|OUT.stl [--ascii] [pipeline options]", specs);
+  parsed.parse(args);
+  if (parsed.has("--help")) {
+    std::cout << "Writes the result of the pipeline as OBJ (exact positions) or STL (binary by default).\n\n"
+              << parsed.help();
+    return 0;
+  }
+  const auto out = parsed.value("--output");
+  if (!out) throw UsageError("export needs -o OUT.obj or -o OUT.stl");
+  const std::filesystem::path path(*out);
+  const std::string ext = path.extension().string();
+  if (ext != ".obj" && ext != ".stl")
+    throw UsageError("output must end in .obj or .stl, found '" + *out + "'");
+  if (parsed.has("--ascii") && ext != ".stl") throw UsageError("--ascii applies to .stl output only");
+  const Mesh mesh = load_input(parsed);
+  if (ext == ".obj")
+    write_obj(path, mesh);
+  else
+    write_stl(path, mesh, parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary);
+  std::cerr << "nome: wrote " << *out << " (" << mesh.num_vertices() << " vertices, " << mesh.num_faces()
+            << " faces)\n";
+  return 0;
+}
+
+}  // namespace nome::cli

@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+
+#include "nome/mesh/topology_report.hpp"
+
+namespace nome::cli {
+
+// The report as one JSON object (keys fixed by the CLI contract in DESIGN.md).
+std::string report_json(const TopologyReport& report);
+// The report as aligned text for people.
+std::string report_text(const TopologyReport& report);
+
+}  // namespace nome::cli

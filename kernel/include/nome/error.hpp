@@ -1,0 +1,39 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace nome {
+
+// The small typed set (pmp-library's model). User-content errors carry a location in their message,
+// already formatted as `file:line:col: what`; programmer errors start with the function name.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A caller broke a precondition or passed an argument outside its domain.
+class InvalidInputError : public Error {
+ public:
+  using Error::Error;
+};
+
+// The polygons do not form a 2-manifold (the message names the elements).
+class TopologyError : public Error {
+ public:
+  using Error::Error;
+};
+
+// Reading or writing a file failed, or a file's content is malformed.
+class IoError : public Error {
+ public:
+  using Error::Error;
+};
+
+// A request whose output would exceed the memory budget (the message gives the estimate).
+class BudgetError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace nome

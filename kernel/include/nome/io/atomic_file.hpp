@@ -1,0 +1,16 @@
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+
+namespace nome {
+
+// Writes a file so that it is always either the complete old or the complete new content: the
+// writer fills a temporary file in the same folder, which is flushed, synced and renamed over the
+// target. On any failure (the writer throws, the disk is full) the temporary file is removed, the
+// target is untouched, and IoError is thrown.
+void write_file_atomically(const std::filesystem::path& path,
+                           const std::function<void(std::ostream&)>& writer);
+
+}  // namespace nome

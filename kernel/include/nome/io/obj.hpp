@@ -1,0 +1,19 @@
+#pragma once
+
+#include <filesystem>
+
+#include "nome/mesh/mesh.hpp"
+#include "nome/mesh/polygon_soup.hpp"
+
+namespace nome {
+
+// Reads a Wavefront OBJ through tinyobjloader, keeping polygons as polygons. Faces with fewer than 3
+// vertices and vertex indices out of range are errors with `file:line:col`; other parse failures are
+// reported with the line tinyobjloader names. Throws IoError.
+PolygonSoup read_obj(const std::filesystem::path& path);
+
+// Writes positions with full double precision (`%.17g`), so reading the file back is exact; faces in
+// their orientation. Vertex names become comments. Atomic (see write_file_atomically).
+void write_obj(const std::filesystem::path& path, const Mesh& mesh);
+
+}  // namespace nome

@@ -1,0 +1,13 @@
+#pragma once
+
+#include <filesystem>
+
+#include "nome/mesh/polygon_soup.hpp"
+
+namespace nome {
+
+// Reads a polygon file by its extension: .obj or .stl (case-insensitive). Throws IoError for an
+// unknown extension or a malformed file.
+PolygonSoup read_polygons(const std::filesystem::path& path);
+
+}  // namespace nome

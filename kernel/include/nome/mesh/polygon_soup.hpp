@@ -1,0 +1,40 @@
+#pragma once
+
+#include <initializer_list>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "nome/mesh/types.hpp"
+
+namespace nome {
+
+// Positions and polygons as given, before any topology: the input of build_mesh.
+// Optional per-element names and colours travel with the elements into the Mesh.
+struct PolygonSoup {
+  std::vector<Vec3> positions;
+  std::vector<Index> face_offsets{0};  // face f has corners [face_offsets[f], face_offsets[f+1])
+  std::vector<Index> face_vertices;
+  std::vector<std::string> vertex_names;             // empty, or one per vertex
+  std::vector<std::string> face_names;               // empty, or one per face
+  std::vector<Color> face_colors;                    // empty, or one per face
+  std::vector<std::pair<Index, Index>> sharp_edges;  // vertex pairs whose edge is marked sharp
+
+  Index add_vertex(const Vec3& p) {
+    positions.push_back(p);
+    return static_cast<Index>(positions.size() - 1);
+  }
+  template <typename Range>
+  Index add_face(const Range& vertices) {
+    for (Index v : vertices) face_vertices.push_back(v);
+    face_offsets.push_back(static_cast<Index>(face_vertices.size()));
+    return num_faces() - 1;
+  }
+  Index add_face(std::initializer_list<Index> vertices) {
+    return add_face<std::initializer_list<Index>>(vertices);
+  }
+  Index num_vertices() const { return static_cast<Index>(positions.size()); }
+  Index num_faces() const { return static_cast<Index>(face_offsets.size() - 1); }
+};
+
+}  // namespace nome

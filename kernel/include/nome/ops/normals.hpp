@@ -1,0 +1,25 @@
+#pragma once
+
+#include <vector>
+
+#include "nome/mesh/mesh.hpp"
+
+namespace nome {
+
+// Newell's normal of face f (unnormalized: its length is twice the polygon's area), robust for
+// non-planar and non-convex polygons.
+Vec3 face_area_normal(const Mesh& mesh, Index f);
+
+struct Normals {
+  std::vector<Vec3> faces;     // unit face normals (zero for a degenerate face)
+  std::vector<Vec3> vertices;  // unit vertex normals, relative to the first face of each vertex's fan
+  std::vector<Index> degenerate_faces;     // zero area or coinciding vertices
+  std::vector<Index> degenerate_vertices;  // the signed sum over the fan vanished
+};
+
+// Face normals by Newell; vertex normal = normalize(sum over the fan of s(f) * n_f), s the corner's
+// orientation sign (Möbius-aware: no dot-product guessing). Degenerate elements get a zero normal and
+// are listed, never NaN.
+Normals compute_normals(const Mesh& mesh);
+
+}  // namespace nome

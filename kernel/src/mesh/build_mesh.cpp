@@ -1,0 +1,322 @@
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "nome/error.hpp"
+#include "nome/mesh/mesh.hpp"
+
+namespace nome {
+namespace {
+
+// Collects topology problems so one error can name several elements.
+class Problems {
+ public:
+  void add(std::string message) {
+    if (messages_.size() < max_listed) messages_.push_back(std::move(message));
+    ++count_;
+  }
+  void throw_if_any() const {
+    if (count_ == 0) return;
+    std::ostringstream out;
+    out << "build_mesh: not a 2-manifold: " << messages_.front();
+    for (size_t i = 1; i < messages_.size(); ++i) out << "; " << messages_[i];
+    if (count_ > messages_.size()) out << "; and " << (count_ - messages_.size()) << " more";
+    throw TopologyError(out.str());
+  }
+
+ private:
+  static constexpr size_t max_listed = 8;
+  std::vector<std::string> messages_;
+  size_t count_ = 0;
+};
+
+std::string label(const std::vector<std::string>& names, const char* prefix, Index i) {
+  if (i < names.size() && !names[i].empty()) return names[i];
+  return prefix + std::to_string(i);
+}
+
+// Counting sort of `keys` into CSR offsets: offsets[k]..offsets[k+1] will hold the items with key k.
+std::vector<Index> csr_offsets(const std::vector<Index>& keys, Index num_keys) {
+  std::vector<Index> offsets(size_t(num_keys) + 1, 0);
+  for (Index k : keys) ++offsets[k + 1];
+  for (Index k = 0; k < num_keys; ++k) offsets[k + 1] += offsets[k];
+  return offsets;
+}
+
+}  // namespace
+
+Mesh build_mesh(PolygonSoup soup) {
+  Mesh m;
+  Problems problems;
+  const Index nv = soup.num_vertices();
+  const Index nf = soup.num_faces();
+  auto v_label = [&](Index v) { return label(m.vertex_names_, "v", v); };
+  auto f_label = [&](Index f) { return label(m.face_names_, "f", f); };
+
+  if (soup.face_offsets.empty() || soup.face_offsets.front() != 0 ||
+      soup.face_offsets.back() != soup.face_vertices.size())
+    throw InvalidInputError("build_mesh: face_offsets do not describe face_vertices");
+  if (!soup.vertex_names.empty() && soup.vertex_names.size() != nv)
+    throw InvalidInputError("build_mesh: vertex_names must be empty or one per vertex");
+  if (!soup.face_names.empty() && soup.face_names.size() != nf)
+    throw InvalidInputError("build_mesh: face_names must be empty or one per face");
+  if (!soup.face_colors.empty() && soup.face_colors.size() != nf)
+    throw InvalidInputError("build_mesh: face_colors must be empty or one per face");
+
+  m.vertex_names_ = std::move(soup.vertex_names);
+  m.face_names_ = std::move(soup.face_names);
+  m.face_colors_ = std::move(soup.face_colors);
+
+  // phase: faces. Degree, index range, repeated vertices (a stamp array makes the check O(degree)).
+  std::vector<Index> stamp(nv, no_index);
+  for (Index f = 0; f < nf; ++f) {
+    const Index b = soup.face_offsets[f], e = soup.face_offsets[f + 1];
+    if (e < b) throw InvalidInputError("build_mesh: face_offsets are not increasing");
+    if (e - b < 3) {
+      problems.add("face " + f_label(f) + " has " + std::to_string(e - b) + " vertices (at least 3 needed)");
+      continue;
+    }
+    for (Index c = b; c < e; ++c) {
+      const Index v = soup.face_vertices[c];
+      if (v >= nv) {
+        problems.add("face " + f_label(f) + " refers to vertex " + std::to_string(v) +
+                     " but there are only " + std::to_string(nv) + " vertices");
+      } else if (stamp[v] == f) {
+        problems.add("face " + f_label(f) + " repeats vertex " + v_label(v));
+      } else {
+        stamp[v] = f;
+      }
+    }
+  }
+  for (size_t i = 0; i < soup.positions.size(); ++i) {
+    const Vec3& p = soup.positions[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      problems.add("vertex " + v_label(Index(i)) + " has a non-finite position");
+  }
+  problems.throw_if_any();
+
+  m.positions_ = std::move(soup.positions);
+  m.face_offsets_ = std::move(soup.face_offsets);
+  m.corner_vertices_ = std::move(soup.face_vertices);
+  const Index nc = m.num_corners();
+  m.corner_faces_.resize(nc);
+  for (Index f = 0; f < nf; ++f)
+    std::fill(m.corner_faces_.begin() + m.face_offsets_[f], m.corner_faces_.begin() + m.face_offsets_[f + 1],
+              f);
+
+  // phase: edges. Half-edges (corner c runs from its vertex to the next corner's) are bucketed by their
+  // smaller end vertex; within a bucket a stamp array indexed by the larger end finds the partner.
+  // No hashing, O(corners).
+  std::vector<Index> min_vertex(nc);
+  for (Index c = 0; c < nc; ++c)
+    min_vertex[c] = std::min(m.corner_vertices_[c], m.corner_vertices_[m.next_corner(c)]);
+  std::vector<Index> bucket_offsets = csr_offsets(min_vertex, nv);
+  std::vector<Index> bucket(nc);
+  {
+    std::vector<Index> fill(bucket_offsets.begin(), bucket_offsets.end() - 1);
+    for (Index c = 0; c < nc; ++c) bucket[fill[min_vertex[c]]++] = c;
+  }
+  min_vertex = {};
+  m.corner_edges_.assign(nc, no_index);
+  m.edges_.reserve(nc / 2 + 1);
+  std::fill(stamp.begin(), stamp.end(), no_index);
+  for (Index a = 0; a < nv; ++a) {
+    for (Index i = bucket_offsets[a]; i < bucket_offsets[a + 1]; ++i) {
+      const Index c = bucket[i];
+      const Index from = m.corner_vertices_[c], to = m.corner_vertices_[m.next_corner(c)];
+      const Index other = from == a ? to : from;
+      Index e = stamp[other];
+      if (e == no_index || m.edges_[e].vertices[0] + m.edges_[e].vertices[1] != a + other ||
+          std::min(m.edges_[e].vertices[0], m.edges_[e].vertices[1]) != a) {
+        e = static_cast<Index>(m.edges_.size());
+        Edge edge;
+        edge.vertices = {from, to};
+        edge.faces[0] = m.corner_faces_[c];
+        edge.corners[0] = c;
+        m.edges_.push_back(edge);
+        stamp[other] = e;
+      } else {
+        Edge& edge = m.edges_[e];
+        if (edge.faces[1] != no_index) {
+          problems.add("edge (" + v_label(edge.vertices[0]) + ", " + v_label(edge.vertices[1]) +
+                       ") has a third face " + f_label(m.corner_faces_[c]) + " besides " +
+                       f_label(edge.faces[0]) + " and " + f_label(edge.faces[1]));
+          continue;
+        }
+        edge.faces[1] = m.corner_faces_[c];
+        edge.corners[1] = c;
+        edge.is_mobius = from == edge.vertices[0];
+      }
+      m.corner_edges_[c] = e;
+    }
+  }
+  problems.throw_if_any();
+  bucket = {};
+  bucket_offsets = {};
+
+  // Edges are numbered by their smaller vertex; renumber them by first appearance in face order so
+  // that numbering follows the input, as users expect when reading messages and files.
+  {
+    std::vector<Index> order(m.edges_.size(), no_index);
+    Index next = 0;
+    for (Index c = 0; c < nc; ++c)
+      if (order[m.corner_edges_[c]] == no_index) order[m.corner_edges_[c]] = next++;
+    std::vector<Edge> sorted(m.edges_.size());
+    for (Index e = 0; e < m.edges_.size(); ++e) sorted[order[e]] = m.edges_[e];
+    m.edges_ = std::move(sorted);
+    for (Index& e : m.corner_edges_) e = order[e];
+  }
+  // phase: fans. Corners bucketed by vertex, then each vertex's fan walked face to face across edges.
+  m.fan_corner_offsets_ = csr_offsets(m.corner_vertices_, nv);
+  std::vector<Index> vertex_corner_list(nc);
+  {
+    std::vector<Index> fill(m.fan_corner_offsets_.begin(), m.fan_corner_offsets_.end() - 1);
+    for (Index c = 0; c < nc; ++c) vertex_corner_list[fill[m.corner_vertices_[c]]++] = c;
+  }
+  m.fan_corners_.resize(nc);
+  m.corner_signs_.assign(nc, 0);
+  m.fan_edge_offsets_.assign(size_t(nv) + 1, 0);
+  m.fan_edges_.clear();
+  m.fan_edges_.reserve(size_t(nc) + nv);
+  std::vector<char> visited(nc, 0);
+  for (Index v = 0; v < nv; ++v) {
+    const Index b = m.fan_corner_offsets_[v], k = m.fan_corner_offsets_[v + 1] - b;
+    m.fan_edge_offsets_[v + 1] = m.fan_edge_offsets_[v];
+    if (k == 0) continue;
+    // Start at a corner whose incoming edge (the edge before it in its face) is a border, if any.
+    Index start = vertex_corner_list[b];
+    Index start_edge = m.corner_edges_[m.prev_corner(start)];
+    Index borders_here = 0;
+    for (Index i = b; i < b + k; ++i) {
+      const Index c = vertex_corner_list[i];
+      for (Index e : {m.corner_edges_[c], m.corner_edges_[m.prev_corner(c)]}) {
+        if (m.edges_[e].is_boundary()) {
+          if (borders_here++ == 0) {
+            start = c;
+            start_edge = e;
+          }
+        }
+      }
+    }
+    Index c = start, entered = start_edge;
+    int sign = 1;
+    Index count = 0;
+    const bool is_boundary = borders_here > 0;
+    for (;;) {
+      visited[c] = 1;
+      m.fan_edges_.push_back(entered);
+      m.fan_corners_[b + count] = c;
+      m.corner_signs_[c] = static_cast<signed char>(sign);
+      ++count;
+      // Leave through the other edge of this face at v.
+      const Index e_out =
+          m.corner_edges_[c] == entered ? m.corner_edges_[m.prev_corner(c)] : m.corner_edges_[c];
+      const Edge& edge = m.edges_[e_out];
+      if (edge.is_boundary()) {
+        m.fan_edges_.push_back(e_out);
+        break;
+      }
+      const Index f_next = edge.other_face(m.corner_faces_[c]);
+      const Index side = edge.faces[0] == f_next ? 0 : 1;
+      Index c_next = edge.corners[side];
+      if (m.corner_vertices_[c_next] != v) c_next = m.next_corner(c_next);
+      if (edge.is_mobius) sign = -sign;
+      if (c_next == start) break;
+      if (visited[c_next] || count == k) break;
+      c = c_next;
+      entered = e_out;
+    }
+    if (count != k || (is_boundary && borders_here != 2)) {
+      problems.add("vertex " + v_label(v) + ": its " + std::to_string(k) +
+                   " faces do not form one fan (the surface touches itself there)");
+    }
+    m.fan_edge_offsets_[v + 1] = static_cast<Index>(m.fan_edges_.size());
+  }
+  problems.throw_if_any();
+
+  // Sharp marks name vertex pairs; the fan of the first vertex finds the edge.
+  for (const auto& [a, b] : soup.sharp_edges) {
+    Index found = no_index;
+    if (a < nv && b < nv)
+      for (Index e : m.vertex_edges(a))
+        if (m.edges_[e].other_vertex(a) == b) found = e;
+    if (found == no_index)
+      throw TopologyError("build_mesh: sharp edge (" + v_label(a) + ", " + v_label(b) +
+                          ") is not an edge of any face");
+    m.edges_[found].is_sharp = true;
+  }
+
+  // phase: boundary loops. From a border edge, step to the other border edge at its far vertex
+  // (the last edge of that vertex's fan if we came in by the first, and vice versa).
+  {
+    std::vector<char> used(m.edges_.size(), 0);
+    for (Index e0 = 0; e0 < m.edges_.size(); ++e0) {
+      if (!m.edges_[e0].is_boundary() || used[e0]) continue;
+      Index e = e0, v = m.edges_[e0].vertices[0];
+      do {
+        used[e] = 1;
+        m.loop_edges_.push_back(e);
+        m.loop_vertices_.push_back(v);
+        v = m.edges_[e].other_vertex(v);
+        const auto fan = m.vertex_edges(v);
+        e = fan.front() == e ? fan.back() : fan.front();
+      } while (e != e0);
+      m.loop_offsets_.push_back(static_cast<Index>(m.loop_edges_.size()));
+    }
+  }
+
+  // phase: components, by a breadth-first walk over faces across edges.
+  m.face_components_.assign(nf, no_index);
+  std::vector<Index> queue;
+  queue.reserve(nf);
+  for (Index f0 = 0; f0 < nf; ++f0) {
+    if (m.face_components_[f0] != no_index) continue;
+    const Index comp = m.num_components_++;
+    m.face_components_[f0] = comp;
+    queue.assign(1, f0);
+    for (size_t q = 0; q < queue.size(); ++q) {
+      for (Index e : m.face_edges(queue[q])) {
+        const Index g = m.edges_[e].other_face(queue[q]);
+        if (g != no_index && m.face_components_[g] == no_index) {
+          m.face_components_[g] = comp;
+          queue.push_back(g);
+        }
+      }
+    }
+  }
+  return m;
+}
+
+Index Mesh::vertex_component(Index v) const {
+  const auto corners = vertex_corners(v);
+  return corners.empty() ? no_index : face_components_[corner_faces_[corners.front()]];
+}
+
+std::string Mesh::vertex_label(Index v) const {
+  return label(vertex_names_, "v", v);
+}
+std::string Mesh::face_label(Index f) const {
+  return label(face_names_, "f", f);
+}
+
+PolygonSoup to_soup(const Mesh& mesh) {
+  PolygonSoup soup;
+  soup.positions = mesh.positions();
+  soup.face_offsets = mesh.face_offsets();
+  soup.face_vertices = mesh.corner_vertices();
+  soup.vertex_names = mesh.vertex_names();
+  soup.face_names = mesh.face_names();
+  soup.face_colors = mesh.face_colors();
+  for (const Edge& e : mesh.edges())
+    if (e.is_sharp) soup.sharp_edges.emplace_back(e.vertices[0], e.vertices[1]);
+  return soup;
+}
+
+Mesh transformed(const Mesh& mesh, const glm::dmat4& matrix) {
+  Mesh out = mesh;
+  for (Vec3& p : out.positions()) p = Vec3(matrix * glm::dvec4(p, 1.0));
+  return out;
+}
+
+}  // namespace nome

@@ -1,0 +1,52 @@
+#include "nome/ops/normals.hpp"
+
+#include <glm/geometric.hpp>
+
+namespace nome {
+
+Vec3 face_area_normal(const Mesh& mesh, Index f) {
+  const auto vs = mesh.face_vertices(f);
+  Vec3 n(0.0);
+  for (size_t i = 0; i < vs.size(); ++i) {
+    const Vec3& a = mesh.position(vs[i]);
+    const Vec3& b = mesh.position(vs[(i + 1) % vs.size()]);
+    n += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  }
+  return n;
+}
+
+Normals compute_normals(const Mesh& mesh) {
+  Normals out;
+  out.faces.resize(mesh.num_faces());
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    const Vec3 n = face_area_normal(mesh, f);
+    const double len = glm::length(n);
+    // Relative threshold: area against the squared size of the face's bounding extent.
+    double extent = 0.0;
+    const auto vs = mesh.face_vertices(f);
+    for (size_t i = 0; i < vs.size(); ++i)
+      extent = std::max(extent, glm::length(mesh.position(vs[i]) - mesh.position(vs[(i + 1) % vs.size()])));
+    if (!(len > 1e-14 * extent * extent) || extent == 0.0) {
+      out.faces[f] = Vec3(0.0);
+      out.degenerate_faces.push_back(f);
+    } else {
+      out.faces[f] = n / len;
+    }
+  }
+  out.vertices.resize(mesh.num_vertices());
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    Vec3 sum(0.0);
+    for (Index c : mesh.vertex_corners(v))
+      sum += double(mesh.corner_sign(c)) * out.faces[mesh.corner_face(c)];
+    const double len = glm::length(sum);
+    if (len > 1e-12) {
+      out.vertices[v] = sum / len;
+    } else {
+      out.vertices[v] = Vec3(0.0);
+      if (!mesh.is_isolated_vertex(v)) out.degenerate_vertices.push_back(v);
+    }
+  }
+  return out;
+}
+
+}  // namespace nome

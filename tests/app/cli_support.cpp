@@ -1,0 +1,38 @@
+#include "app/cli_support.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace nome::test {
+
+std::string scratch_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "nome_app_tests" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+CommandResult run_nome(const std::string& arguments) {
+  static int counter = 0;
+  const std::string base = scratch_dir("run_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+  const std::string out = base + "/out", err = base + "/err";
+  const std::string command =
+      std::string(NOME_EXECUTABLE) + " " + arguments + " >" + out + " 2>" + err + " </dev/null";
+  const int raw = std::system(command.c_str());
+  CommandResult r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  std::ostringstream o, e;
+  o << std::ifstream(out).rdbuf();
+  e << std::ifstream(err).rdbuf();
+  r.out = o.str();
+  r.err = e.str();
+  std::filesystem::remove_all(base);
+  return r;
+}
+
+}  // namespace nome::test

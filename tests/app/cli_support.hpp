@@ -1,0 +1,19 @@
+#pragma once
+
+#include <string>
+
+namespace nome::test {
+
+struct CommandResult {
+  int status = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+// Runs the built `nome` binary with the given arguments (a shell word list) and captures its output.
+CommandResult run_nome(const std::string& arguments);
+
+// A fresh scratch folder for one test's files.
+std::string scratch_dir(const std::string& name);
+
+}  // namespace nome::test
