@@ -5,7 +5,7 @@ PACKAGES := build-essential cmake pkg-config clang-format libglfw3-dev libimgui-
             libbenchmark-dev libopenmesh-dev
 
 JOBS    ?= 2
-EXAMPLE ?= assets/funnel_cube.nome
+EXAMPLE ?= assets/mobius_band.obj
 RELEASE := build/release
 TESTDIR := build/test
 SOURCES  = $(shell git ls-files '*.cpp' '*.hpp' 2>/dev/null | grep -v '^third_party/')
