@@ -1,0 +1,82 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "nome/mesh/mesh.hpp"
+#include "nome/query/display_triangles.hpp"
+#include "nome/query/ray.hpp"
+
+namespace nome {
+
+// What a ray hit: a face's interior, one of its polygon edges, or one of its corners (decided exactly
+// from the barycentric weights of the hit on a real polygon side; fan diagonals count as interior).
+enum class ElementKind { face, edge, vertex };
+
+// One crossing of the ray with the surface (libigl's unproject_onto_mesh result, with every hit kept:
+// self-intersecting surfaces overlap).
+struct RayHit {
+  ElementKind kind = ElementKind::face;
+  Index element = no_index;  // the face, edge or vertex id named by kind
+  Index face = no_index;
+  Index triangle = no_index;                       // index into DisplayTriangles
+  std::array<double, 3> barycentric{0, 0, 0};      // weights of the triangle's three corners
+  Vec3 point{0.0};                                 // world position of the hit
+  double depth = 0.0;                              // ray parameter t
+};
+
+struct BvhOptions {
+  Index max_leaf_size = 4;
+  Index sah_bins = 16;
+};
+
+// Hits nearest first (equal depths ordered by face, then triangle), one per face and depth: a ray through
+// a fan diagonal or a face's first corner crosses several triangles of one face at one point.
+std::vector<RayHit> sorted_unique_hits(std::vector<RayHit> hits);
+
+// A bounding volume hierarchy over a mesh's display triangles (binned SAH build), for CPU picking.
+// It copies the positions it needs, so it stays valid while the mesh it came from changes or dies;
+// rebuild it when the displayed geometry changes.
+class TriangleBvh {
+ public:
+  TriangleBvh() = default;
+  TriangleBvh(const Mesh& mesh, const BvhOptions& options = {});
+
+  // Every hit along the ray, nearest first (equal depths ordered by face). A face is reported once
+  // per depth even when the ray crosses a fan diagonal.
+  std::vector<RayHit> cast_all(const Ray& ray) const;
+  // The nearest hit, if any.
+  std::optional<RayHit> cast_nearest(const Ray& ray) const;
+
+  Index num_triangles() const { return triangles_.size(); }
+  Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
+  const DisplayTriangles& triangles() const { return triangles_; }
+
+  // The classified hit of the ray on display triangle t at the given triangle hit (shared with the
+  // brute-force reference in the tests).
+  RayHit make_hit(const Ray& ray, Index t, const TriangleHit& hit) const;
+  // Tests one triangle (for brute force comparisons).
+  bool intersect(const ShearedRay& ray, Index t, TriangleHit& hit) const;
+
+ private:
+  struct Node {
+    Vec3 lower{0.0}, upper{0.0};
+    Index first = 0;  // leaf: first entry in order_; inner: index of the left child (right = left + 1)
+    Index count = 0;  // leaf: number of triangles; inner: 0
+  };
+
+  template <typename Visit>
+  void traverse(const ShearedRay& ray, double& t_max, Visit&& visit) const;
+
+  DisplayTriangles triangles_;
+  std::vector<Vec3> positions_;
+  std::vector<Index> order_;  // triangle ids, leaves own contiguous ranges
+  std::vector<Node> nodes_;
+  // Polygon structure for classifying hits on edges and corners.
+  std::vector<Index> corner_vertices_;
+  std::vector<Index> corner_edges_;
+  std::vector<Index> corner_next_;
+};
+
+}  // namespace nome
