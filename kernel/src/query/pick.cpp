@@ -4,8 +4,9 @@
 
 namespace nome {
 
-std::optional<Index> nearest_corner_on_screen(const Mesh& mesh, Index face, const ScreenProjection& projection,
-                                              glm::dvec2 cursor, double max_pixels) {
+std::optional<Index> nearest_corner_on_screen(const Mesh& mesh, Index face,
+                                              const ScreenProjection& projection, glm::dvec2 cursor,
+                                              double max_pixels) {
   std::optional<Index> best;
   double best_distance = max_pixels;
   for (Index v : mesh.face_vertices(face)) {
@@ -27,7 +28,8 @@ std::optional<Index> pick_vertex(const Mesh& mesh, const TriangleBvh& bvh, const
   return nearest_corner_on_screen(mesh, hit->face, projection, cursor, max_pixels);
 }
 
-std::optional<Index> pick_face(const TriangleBvh& bvh, const ScreenProjection& projection, glm::dvec2 cursor) {
+std::optional<Index> pick_face(const TriangleBvh& bvh, const ScreenProjection& projection,
+                               glm::dvec2 cursor) {
   const auto hit = bvh.cast_nearest(ray_through_pixel(projection, cursor));
   if (!hit) return std::nullopt;
   return hit->face;

@@ -24,7 +24,8 @@ namespace {
 // Edge functions in extended precision, used only when the double ones are exactly zero (the ray
 // passes through an edge or vertex to double precision) so that the sign decision is exact enough.
 template <typename Real>
-void edge_functions(const ShearedRay& r, const Vec3& a, const Vec3& b, const Vec3& c, Real& u, Real& v, Real& w) {
+void edge_functions(const ShearedRay& r, const Vec3& a, const Vec3& b, const Vec3& c, Real& u, Real& v,
+                    Real& w) {
   const auto [kx, ky, kz] = r.axes;
   const Real ax = Real(a[kx] - r.ray.origin[kx]) - Real(r.shear_x) * Real(a[kz] - r.ray.origin[kz]);
   const Real ay = Real(a[ky] - r.ray.origin[ky]) - Real(r.shear_y) * Real(a[kz] - r.ray.origin[kz]);

@@ -201,10 +201,9 @@ TriangleBvh::TriangleBvh(const Mesh& mesh, const BvhOptions& options)
       }
     }
     if (!is_split) {
-      std::nth_element(items.begin() + task.begin, items.begin() + mid, items.begin() + task.end,
-                       [&](const BuildItem& a, const BuildItem& b) {
-                         return a.centroid()[axis] < b.centroid()[axis];
-                       });
+      std::nth_element(
+          items.begin() + task.begin, items.begin() + mid, items.begin() + task.end,
+          [&](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
       for (Index i = task.begin; i < task.end; ++i) {
         const int side = i < mid ? 0 : 1;
         child_bounds[side].grow(item(i).box);
@@ -284,7 +283,8 @@ void TriangleBvh::traverse(const ShearedRay& sheared, double& t_max, Visit&& vis
     double entry_left = 0.0, entry_right = 0.0;
     const Node& left = nodes_[node.first];
     const Node& right = nodes_[node.first + 1];
-    const bool hit_left = ray_hits_box(left.lower, left.upper, ray.origin, inverse, ray.t_min, t_max, entry_left);
+    const bool hit_left =
+        ray_hits_box(left.lower, left.upper, ray.origin, inverse, ray.t_min, t_max, entry_left);
     const bool hit_right =
         ray_hits_box(right.lower, right.upper, ray.origin, inverse, ray.t_min, t_max, entry_right);
     // Push the farther child first so the nearer one is visited first (tightens t_max sooner).

@@ -125,10 +125,11 @@ TEST_CASE("the BVH agrees with brute force on random rays through random surface
     const char* name;
     PolygonSoup soup;
   };
-  const Case cases[] = {{"torus", test::torus(24, 12)},
-                        {"Möbius band", test::mobius_band(40, 3)},
-                        {"Klein bottle (self-intersecting)", test::klein_bottle(24, 12)},
-                        {"two overlapping tori", test::disjoint_union(test::torus(16, 8), test::torus(12, 9))}};
+  const Case cases[] = {
+      {"torus", test::torus(24, 12)},
+      {"Möbius band", test::mobius_band(40, 3)},
+      {"Klein bottle (self-intersecting)", test::klein_bottle(24, 12)},
+      {"two overlapping tori", test::disjoint_union(test::torus(16, 8), test::torus(12, 9))}};
   for (const Case& c : cases) {
     INFO(c.name);
     const Mesh mesh = build_mesh(c.soup);
@@ -153,7 +154,8 @@ TEST_CASE("the BVH agrees with brute force on random rays through random surface
   }
 }
 
-TEST_CASE("oblique rays through interior vertices and edges of a rotated grid never slip through", "[kernel]") {
+TEST_CASE("oblique rays through interior vertices and edges of a rotated grid never slip through",
+          "[kernel]") {
   const glm::dmat4 rotation = glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(Vec3(1.0, 2.0, 3.0)));
   const Mesh mesh = transformed(build_mesh(test::grid(8, 8)), rotation);
   const TriangleBvh bvh(mesh);

@@ -9,8 +9,9 @@ namespace nome {
 
 // The corner of face f nearest to the cursor on screen, if it lies within max_pixels of it (report
 // 7.3.2: vertex selection extends face selection). Returns the vertex id.
-std::optional<Index> nearest_corner_on_screen(const Mesh& mesh, Index face, const ScreenProjection& projection,
-                                              glm::dvec2 cursor, double max_pixels);
+std::optional<Index> nearest_corner_on_screen(const Mesh& mesh, Index face,
+                                              const ScreenProjection& projection, glm::dvec2 cursor,
+                                              double max_pixels);
 
 // A click's vertex: the nearest corner of the frontmost face under the cursor within max_pixels.
 std::optional<Index> pick_vertex(const Mesh& mesh, const TriangleBvh& bvh, const ScreenProjection& projection,

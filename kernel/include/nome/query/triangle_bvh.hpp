@@ -20,10 +20,10 @@ struct RayHit {
   ElementKind kind = ElementKind::face;
   Index element = no_index;  // the face, edge or vertex id named by kind
   Index face = no_index;
-  Index triangle = no_index;                       // index into DisplayTriangles
-  std::array<double, 3> barycentric{0, 0, 0};      // weights of the triangle's three corners
-  Vec3 point{0.0};                                 // world position of the hit
-  double depth = 0.0;                              // ray parameter t
+  Index triangle = no_index;                   // index into DisplayTriangles
+  std::array<double, 3> barycentric{0, 0, 0};  // weights of the triangle's three corners
+  Vec3 point{0.0};                             // world position of the hit
+  double depth = 0.0;                          // ray parameter t
 };
 
 struct BvhOptions {
