@@ -141,4 +141,28 @@ PolygonSoup disjoint_union(const PolygonSoup& a, const PolygonSoup& b) {
   return s;
 }
 
+std::vector<PolygonSoup> split_faces(const PolygonSoup& soup, const std::vector<Index>& part_of_face) {
+  const Index num_parts =
+      part_of_face.empty() ? 0 : *std::max_element(part_of_face.begin(), part_of_face.end()) + 1;
+  std::vector<PolygonSoup> parts(num_parts);
+  std::vector<std::vector<Index>> copies(num_parts, std::vector<Index>(soup.num_vertices(), no_index));
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    PolygonSoup& part = parts[part_of_face[f]];
+    std::vector<Index>& copy = copies[part_of_face[f]];
+    std::vector<Index> face;
+    for (Index c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) {
+      const Index v = soup.face_vertices[c];
+      if (copy[v] == no_index) {
+        copy[v] = part.add_vertex(soup.positions[v]);
+        if (!soup.vertex_names.empty()) part.vertex_names.push_back(soup.vertex_names[v]);
+      }
+      face.push_back(copy[v]);
+    }
+    part.add_face(face);
+    if (!soup.face_names.empty()) part.face_names.push_back(soup.face_names[f]);
+    if (!soup.face_colors.empty()) part.face_colors.push_back(soup.face_colors[f]);
+  }
+  return parts;
+}
+
 }  // namespace nome::test

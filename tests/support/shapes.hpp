@@ -24,5 +24,8 @@ PolygonSoup renumber_vertices(PolygonSoup soup, std::mt19937& rng);
 PolygonSoup rotate_corners(PolygonSoup soup, std::mt19937& rng);
 // Concatenates two soups as separate parts.
 PolygonSoup disjoint_union(const PolygonSoup& a, const PolygonSoup& b);
+// Cuts a soup into parts (face f goes to part part_of_face[f]), each with its own copies of the
+// vertices it uses, names and colours carried along.
+std::vector<PolygonSoup> split_faces(const PolygonSoup& soup, const std::vector<Index>& part_of_face);
 
 }  // namespace nome::test
