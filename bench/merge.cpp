@@ -6,8 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 
 #include "nome/ops/merge.hpp"
 
@@ -25,8 +25,7 @@ int main() {
   for (Index j = 0; j < n; ++j)
     for (Index i = 0; i < n; ++i) {
       const Index base = soup.num_vertices();
-      for (Index k = 0; k < 4; ++k)
-        soup.add_vertex(lattice_point(i + (k == 1 || k == 2), j + (k >= 2)));
+      for (Index k = 0; k < 4; ++k) soup.add_vertex(lattice_point(i + (k == 1 || k == 2), j + (k >= 2)));
       soup.add_face({base, base + 1, base + 2, base + 3});
     }
   const Mesh exploded = build_mesh(std::move(soup));
@@ -41,7 +40,8 @@ int main() {
     const std::clock_t cpu_start = std::clock();
     result = merge_boundaries(exploded, options);
     best_cpu = std::min(best_cpu, double(std::clock() - cpu_start) / CLOCKS_PER_SEC);
-    best_wall = std::min(best_wall, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    best_wall =
+        std::min(best_wall, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   std::printf("merge: %u boundary vertices, %u faces -> %u vertices, %u edges glued: %.3f s (cpu %.3f s)\n",
               exploded.num_vertices(), exploded.num_faces(), result.mesh.num_vertices(), result.glued_edges,

@@ -17,7 +17,8 @@ PolygonSoup concatenate(std::span<const Mesh> parts) {
     for (Index f = 1; f < part.face_offsets().size(); ++f)
       soup.face_offsets.push_back(part.face_offsets()[f] + corner_base);
     if (has_vertex_names) {
-      soup.vertex_names.insert(soup.vertex_names.end(), part.vertex_names().begin(), part.vertex_names().end());
+      soup.vertex_names.insert(soup.vertex_names.end(), part.vertex_names().begin(),
+                               part.vertex_names().end());
       soup.vertex_names.resize(soup.positions.size());
     }
     if (has_face_names) {

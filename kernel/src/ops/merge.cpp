@@ -121,8 +121,8 @@ class PointGrid {
   double cell_ = 1.0;
   double margin_ = 0.0;
   double tolerance2_ = 0.0;
-  std::vector<Index> ids_;        // vertex ids in cell order
-  std::vector<Vec3> positions_;   // their positions
+  std::vector<Index> ids_;                  // vertex ids in cell order
+  std::vector<Vec3> positions_;             // their positions
   std::vector<std::uint64_t> bucket_keys_;  // one bucket per occupied cell
   std::vector<Index> bucket_starts_;        // CSR into ids_ and positions_
   size_t mask_ = 0;
@@ -220,7 +220,8 @@ std::vector<Candidate> find_candidates(const Mesh& mesh, double tolerance) {
         if (far2 > tol2) continue;
         const Index u2 = su.far_ends[a], w2 = sw.far_ends[b];
         const bool keep = eu < ew ? u < u2 : w < w2;
-        if (keep) out.push_back({std::sqrt(std::max(dist2(pos[u], pos[w]), far2)), {eu, ew}, {u, u2}, {w, w2}});
+        if (keep)
+          out.push_back({std::sqrt(std::max(dist2(pos[u], pos[w]), far2)), {eu, ew}, {u, u2}, {w, w2}});
       }
     }
   });
@@ -342,8 +343,9 @@ double bounding_box_diagonal(const std::vector<Vec3>& positions) {
 
 MergeResult merge_boundaries(const Mesh& mesh, const MergeOptions& options) {
   MergeResult result;
-  result.tolerance = options.tolerance > 0 ? options.tolerance
-                                           : options.relative_tolerance * bounding_box_diagonal(mesh.positions());
+  result.tolerance = options.tolerance > 0
+                         ? options.tolerance
+                         : options.relative_tolerance * bounding_box_diagonal(mesh.positions());
 
   // phase: glue matching boundary edge pairs, closest first, each only if the surface stays 2-manifold.
   VertexClasses classes(mesh.num_vertices());
@@ -383,11 +385,13 @@ MergeResult merge_boundaries(const Mesh& mesh, const MergeOptions& options) {
   soup.face_names = mesh.face_names();
   soup.face_colors = mesh.face_colors();
   for (const Edge& e : mesh.edges())
-    if (e.is_sharp) soup.sharp_edges.emplace_back(result.vertex_map[e.vertices[0]], result.vertex_map[e.vertices[1]]);
+    if (e.is_sharp)
+      soup.sharp_edges.emplace_back(result.vertex_map[e.vertices[0]], result.vertex_map[e.vertices[1]]);
   result.mesh = build_mesh(std::move(soup));
 
   auto boundary_edges = [](const Mesh& m) {
-    return Index(std::count_if(m.edges().begin(), m.edges().end(), [](const Edge& e) { return e.is_boundary(); }));
+    return Index(
+        std::count_if(m.edges().begin(), m.edges().end(), [](const Edge& e) { return e.is_boundary(); }));
   };
   result.glued_edges = (boundary_edges(mesh) - boundary_edges(result.mesh)) / 2;
   return result;

@@ -68,8 +68,9 @@ TEST_CASE("a torus in four pieces merges to a torus", "[kernel]") {
 // boundary edges coincide and no merge by position can tell which belong together.
 TEST_CASE("an exploded surface merges back to itself, whatever the face orientations", "[kernel]") {
   std::mt19937 rng{42};
-  const PolygonSoup shapes[] = {test::torus(9, 5), test::mobius_band(15, 3, 3), test::mobius_band(11, 2),
-                                test::cube(), test::grid(5, 4), test::projective_plane()};
+  const PolygonSoup shapes[] = {test::torus(9, 5),        test::mobius_band(15, 3, 3),
+                                test::mobius_band(11, 2), test::cube(),
+                                test::grid(5, 4),         test::projective_plane()};
   for (const PolygonSoup& shape : shapes) {
     const PolygonSoup soup = test::reverse_random_faces(shape, 0.3, rng);
     std::vector<Index> own_part(soup.num_faces());

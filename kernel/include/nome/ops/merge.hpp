@@ -17,9 +17,9 @@ struct MergeOptions {
 };
 
 enum class MergeSkipReason {
-  third_face_on_edge,        // the glued edge, or an edge at a glued vertex, would have three faces
-  vertex_repeated_in_face,   // a face would visit the merged vertex twice
-  edge_would_collapse,       // both ends of one edge would become one vertex
+  third_face_on_edge,       // the glued edge, or an edge at a glued vertex, would have three faces
+  vertex_repeated_in_face,  // a face would visit the merged vertex twice
+  edge_would_collapse,      // both ends of one edge would become one vertex
 };
 
 // A pair of matching boundary edges that was left apart because gluing it would not give a 2-manifold.
