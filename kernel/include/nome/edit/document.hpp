@@ -1,0 +1,132 @@
+#pragma once
+
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+#include "nome/edit/glue_faces.hpp"
+#include "nome/mesh/mesh.hpp"
+#include "nome/ops/zipper.hpp"
+
+namespace nome {
+
+// A face the user added, its vertices given by hierarchical name so that it follows the scene through
+// slider changes.
+struct EditedFace {
+  std::string name;  // unique within the document: "edit7"
+  std::vector<std::string> vertices;
+};
+
+// What an edit did: applied, or refused with the reason (nothing changed then).
+struct EditOutcome {
+  bool applied = false;
+  std::string message;
+};
+
+// An edit that cannot be shown with the current geometry (a slider lowered a vertex count): it is kept
+// and comes back when its vertices do.
+struct UnresolvedEdit {
+  std::string face;                  // the edited face, or the deleted scene face
+  std::vector<std::string> missing;  // the vertex names not found (empty: the scene face is gone)
+};
+
+// The editing model of the report (7.3.3) as data, without any window: the scene's evaluated geometry,
+// a temporary mesh of added faces, the consolidated mesh they are accepted into, and deleted scene
+// faces. Every edit is a small command on an undo stack (the geometry is never copied per step).
+class Document {
+ public:
+  Document() = default;
+  // `scene_geometry`: every top-level instance with hierarchically named vertices and faces (as the
+  // scene's combined soup gives it).
+  explicit Document(PolygonSoup scene_geometry);
+
+  // Replaces the geometry after a slider change. Edits refer to names and are resolved again.
+  void set_scene_geometry(PolygonSoup geometry);
+  const PolygonSoup& scene_geometry() const { return scene_; }
+  // The consolidated faces (vertex names) and deleted face names read from a saved file; clears the
+  // temporary mesh and the undo history.
+  void load_edits(const std::vector<std::vector<std::string>>& consolidated, std::vector<std::string> deleted);
+
+  // Adds a polygon through the named vertices, in order, to the temporary mesh. Refused if a vertex is
+  // unknown or repeated or an edge already has two faces. Reversed if most of its edges that already
+  // have a face would otherwise run the same way as that face (the report's "auto-correct orientation").
+  EditOutcome add_polygon(const std::vector<std::string>& vertex_names);
+  // Moves the temporary faces into the consolidated mesh.
+  EditOutcome accept_temporary();
+  EditOutcome clear_temporary();
+  // Deletes faces by name: scene faces are recorded as deleted, edited faces removed. Edges and
+  // vertices left without faces disappear from the derived meshes.
+  EditOutcome delete_faces(const std::vector<std::string>& face_names);
+  // Zips two borders of `displayed` (a mesh whose vertex names are scene names, such as a part or the
+  // merged mesh) into the temporary mesh.
+  EditOutcome zipper(const Mesh& displayed, const BorderSelection& a, const BorderSelection& b,
+                     const ZipperOptions& options = {});
+
+  bool can_undo() const { return done_ > 0; }
+  bool can_redo() const { return done_ < history_.size(); }
+  bool undo();
+  bool redo();
+
+  const std::vector<EditedFace>& temporary_faces() const { return temporary_; }
+  const std::vector<EditedFace>& consolidated_faces() const { return consolidated_; }
+  const std::vector<std::string>& deleted_faces() const { return deleted_; }
+  std::vector<UnresolvedEdit> unresolved() const;
+
+  // Derived geometry: the scene without its deleted faces, the consolidated and the temporary mesh.
+  // Faces that only touch at a vertex keep separate vertices there (see glue_faces).
+  GluedFaces scene_mesh() const;
+  GluedFaces consolidated_mesh() const;
+  GluedFaces temporary_mesh() const;
+  // The three meshes, for the merge stage and the viewer.
+  std::vector<Mesh> parts() const;
+
+ private:
+  struct AddTemporary {
+    std::vector<EditedFace> faces;
+  };
+  struct Accept {
+    size_t count;
+  };
+  struct ClearTemporary {
+    std::vector<EditedFace> faces;
+  };
+  struct DeleteFaces {
+    std::vector<std::string> scene_faces;
+    std::vector<std::pair<size_t, EditedFace>> temporary;  // with their former positions
+    std::vector<std::pair<size_t, EditedFace>> consolidated;
+  };
+  using Command = std::variant<AddTemporary, Accept, ClearTemporary, DeleteFaces>;
+
+  // Faces on one undirected edge: the face and whether it runs from the lower to the higher vertex id.
+  struct EdgeUse {
+    std::string face;
+    bool runs_up;
+  };
+
+  void execute(Command command);
+  void apply(const Command& command);
+  void revert(const Command& command);
+  void index_scene();
+  std::vector<EdgeUse> uses_of(Index u, Index w) const;
+  // Why a new face cannot be added next to the current faces plus `pending` (faces of the same edit),
+  // or empty; with `orient`, reverses it where its neighbours disagree with it.
+  std::string check_face(EditedFace& face, const std::vector<EditedFace>& pending, bool orient) const;
+  Index vertex_id(const std::string& name) const;
+  GluedFaces edited_mesh(const std::vector<EditedFace>& faces) const;
+  std::string next_face_name() { return "edit" + std::to_string(++face_counter_); }
+
+  PolygonSoup scene_;
+  std::unordered_map<std::string, Index> vertex_ids_;
+  std::unordered_map<std::string, Index> face_ids_;
+  std::unordered_map<std::uint64_t, std::vector<Index>> scene_edge_faces_;
+
+  std::vector<EditedFace> temporary_;
+  std::vector<EditedFace> consolidated_;
+  std::vector<std::string> deleted_;
+  std::vector<Command> history_;
+  size_t done_ = 0;  // history_[0, done_) is applied; the rest can be redone
+  std::size_t face_counter_ = 0;
+};
+
+}  // namespace nome

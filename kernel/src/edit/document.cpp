@@ -1,0 +1,307 @@
+#include "nome/edit/document.hpp"
+
+#include <algorithm>
+#include <span>
+
+#include "nome/error.hpp"
+
+namespace nome {
+namespace {
+
+std::uint64_t edge_key(Index u, Index w) {
+  return (std::uint64_t(std::min(u, w)) << 32) | std::max(u, w);
+}
+
+template <typename T>
+void erase_at(std::vector<T>& list, const std::vector<std::pair<size_t, T>>& removed) {
+  for (auto it = removed.rbegin(); it != removed.rend(); ++it) list.erase(list.begin() + long(it->first));
+}
+
+template <typename T>
+void insert_at(std::vector<T>& list, const std::vector<std::pair<size_t, T>>& removed) {
+  for (const auto& [at, item] : removed) list.insert(list.begin() + long(at), item);
+}
+
+}  // namespace
+
+Document::Document(PolygonSoup scene_geometry) {
+  set_scene_geometry(std::move(scene_geometry));
+}
+
+void Document::set_scene_geometry(PolygonSoup geometry) {
+  scene_ = std::move(geometry);
+  index_scene();
+}
+
+void Document::index_scene() {
+  vertex_ids_.clear();
+  face_ids_.clear();
+  scene_edge_faces_.clear();
+  for (Index v = 0; v < scene_.vertex_names.size(); ++v) vertex_ids_.emplace(scene_.vertex_names[v], v);
+  for (Index f = 0; f < scene_.face_names.size(); ++f) face_ids_.emplace(scene_.face_names[f], f);
+  for (Index f = 0; f < scene_.num_faces(); ++f) {
+    const Index b = scene_.face_offsets[f], e = scene_.face_offsets[f + 1];
+    for (Index c = b; c < e; ++c)
+      scene_edge_faces_[edge_key(scene_.face_vertices[c], scene_.face_vertices[c + 1 == e ? b : c + 1])].push_back(f);
+  }
+}
+
+void Document::load_edits(const std::vector<std::vector<std::string>>& consolidated,
+                          std::vector<std::string> deleted) {
+  temporary_.clear();
+  consolidated_.clear();
+  for (const auto& vertices : consolidated) consolidated_.push_back({next_face_name(), vertices});
+  deleted_ = std::move(deleted);
+  history_.clear();
+  done_ = 0;
+}
+
+Index Document::vertex_id(const std::string& name) const {
+  const auto it = vertex_ids_.find(name);
+  return it == vertex_ids_.end() ? no_index : it->second;
+}
+
+std::vector<Document::EdgeUse> Document::uses_of(Index u, Index w) const {
+  std::vector<EdgeUse> uses;
+  auto runs_up = [](Index from, Index to) { return from < to; };
+  if (const auto it = scene_edge_faces_.find(edge_key(u, w)); it != scene_edge_faces_.end()) {
+    for (Index f : it->second) {
+      const std::string name = f < scene_.face_names.size() ? scene_.face_names[f] : "f" + std::to_string(f);
+      if (std::find(deleted_.begin(), deleted_.end(), name) != deleted_.end()) continue;
+      const Index b = scene_.face_offsets[f], e = scene_.face_offsets[f + 1];
+      for (Index c = b; c < e; ++c) {
+        const Index from = scene_.face_vertices[c], to = scene_.face_vertices[c + 1 == e ? b : c + 1];
+        if (edge_key(from, to) == edge_key(u, w)) uses.push_back({name, runs_up(from, to)});
+      }
+    }
+  }
+  for (const auto* list : {&temporary_, &consolidated_}) {
+    for (const EditedFace& face : *list) {
+      for (size_t k = 0; k < face.vertices.size(); ++k) {
+        const Index from = vertex_id(face.vertices[k]), to = vertex_id(face.vertices[(k + 1) % face.vertices.size()]);
+        if (from != no_index && to != no_index && edge_key(from, to) == edge_key(u, w))
+          uses.push_back({face.name, runs_up(from, to)});
+      }
+    }
+  }
+  return uses;
+}
+
+std::string Document::check_face(EditedFace& face, const std::vector<EditedFace>& pending, bool orient) const {
+  const size_t n = face.vertices.size();
+  if (n < 3) return "a polygon needs at least 3 vertices, " + std::to_string(n) + " selected";
+  std::vector<Index> ids;
+  for (const std::string& name : face.vertices) {
+    const Index v = vertex_id(name);
+    if (v == no_index) return "no vertex named " + name;
+    if (std::find(ids.begin(), ids.end(), v) != ids.end()) return "vertex " + name + " is selected twice";
+    ids.push_back(v);
+  }
+  int votes = 0;
+  for (size_t k = 0; k < n; ++k) {
+    const Index u = ids[k], w = ids[(k + 1) % n];
+    std::vector<EdgeUse> uses = uses_of(u, w);
+    for (const EditedFace& other : pending)
+      for (size_t i = 0; i < other.vertices.size(); ++i) {
+        const Index from = vertex_id(other.vertices[i]), to = vertex_id(other.vertices[(i + 1) % other.vertices.size()]);
+        if (edge_key(from, to) == edge_key(u, w)) uses.push_back({other.name, from < to});
+      }
+    if (uses.size() >= 2)
+      return "the edge (" + face.vertices[k] + ", " + face.vertices[(k + 1) % n] + ") already has two faces (" +
+             uses[0].face + ", " + uses[1].face + ")";
+    // A neighbour running the same way along the shared edge disagrees with this orientation.
+    if (uses.size() == 1) votes += uses[0].runs_up == (u < w) ? -1 : 1;
+  }
+  if (orient && votes < 0) std::reverse(face.vertices.begin(), face.vertices.end());
+  return {};
+}
+
+EditOutcome Document::add_polygon(const std::vector<std::string>& vertex_names) {
+  EditedFace face{{}, vertex_names};
+  if (std::string refused = check_face(face, {}, true); !refused.empty()) return {false, refused};
+  face.name = next_face_name();
+  const std::string message = "added " + face.name + " to the temporary mesh";
+  execute(AddTemporary{{std::move(face)}});
+  return {true, message};
+}
+
+EditOutcome Document::zipper(const Mesh& displayed, const BorderSelection& a, const BorderSelection& b,
+                             const ZipperOptions& options) {
+  if (displayed.vertex_names().empty()) return {false, "the mesh has no vertex names to refer to"};
+  ZipperFaces strip;
+  try {
+    strip = zipper_borders(displayed, a, b, options);
+  } catch (const InvalidInputError& e) {
+    return {false, e.what()};
+  }
+  std::vector<EditedFace> faces;
+  for (const auto& polygon : strip.faces) {
+    EditedFace face;
+    for (Index v : polygon) face.vertices.push_back(displayed.vertex_names()[v]);
+    if (std::string refused = check_face(face, faces, false); !refused.empty()) return {false, refused};
+    face.name = next_face_name();
+    faces.push_back(std::move(face));
+  }
+  const std::string message = "zipper: " + std::to_string(strip.quads) + " quads and " +
+                              std::to_string(strip.triangles) + " triangles added to the temporary mesh";
+  execute(AddTemporary{std::move(faces)});
+  return {true, message};
+}
+
+EditOutcome Document::accept_temporary() {
+  if (temporary_.empty()) return {false, "the temporary mesh is empty"};
+  const size_t count = temporary_.size();
+  execute(Accept{count});
+  return {true, std::to_string(count) + " faces moved into the consolidated mesh"};
+}
+
+EditOutcome Document::clear_temporary() {
+  if (temporary_.empty()) return {false, "the temporary mesh is empty"};
+  execute(ClearTemporary{temporary_});
+  return {true, "temporary mesh cleared"};
+}
+
+EditOutcome Document::delete_faces(const std::vector<std::string>& face_names) {
+  if (face_names.empty()) return {false, "no face selected"};
+  DeleteFaces command;
+  for (const std::string& name : face_names) {
+    auto find_in = [&](const std::vector<EditedFace>& list) {
+      return std::find_if(list.begin(), list.end(), [&](const EditedFace& f) { return f.name == name; });
+    };
+    if (auto it = find_in(temporary_); it != temporary_.end()) {
+      command.temporary.emplace_back(size_t(it - temporary_.begin()), *it);
+    } else if (auto it2 = find_in(consolidated_); it2 != consolidated_.end()) {
+      command.consolidated.emplace_back(size_t(it2 - consolidated_.begin()), *it2);
+    } else if (face_ids_.count(name) && std::find(deleted_.begin(), deleted_.end(), name) == deleted_.end()) {
+      command.scene_faces.push_back(name);
+    } else {
+      return {false, "no face named " + name};
+    }
+  }
+  auto by_position = [](const auto& x, const auto& y) { return x.first < y.first; };
+  std::sort(command.temporary.begin(), command.temporary.end(), by_position);
+  std::sort(command.consolidated.begin(), command.consolidated.end(), by_position);
+  const size_t count = face_names.size();
+  execute(std::move(command));
+  return {true, std::to_string(count) + (count == 1 ? " face" : " faces") + " deleted"};
+}
+
+void Document::execute(Command command) {
+  history_.resize(done_);
+  history_.push_back(std::move(command));
+  apply(history_.back());
+  ++done_;
+}
+
+bool Document::undo() {
+  if (!can_undo()) return false;
+  revert(history_[--done_]);
+  return true;
+}
+
+bool Document::redo() {
+  if (!can_redo()) return false;
+  apply(history_[done_++]);
+  return true;
+}
+
+void Document::apply(const Command& command) {
+  if (const auto* add = std::get_if<AddTemporary>(&command)) {
+    temporary_.insert(temporary_.end(), add->faces.begin(), add->faces.end());
+  } else if (std::holds_alternative<Accept>(command)) {
+    consolidated_.insert(consolidated_.end(), temporary_.begin(), temporary_.end());
+    temporary_.clear();
+  } else if (std::holds_alternative<ClearTemporary>(command)) {
+    temporary_.clear();
+  } else {
+    const auto& del = std::get<DeleteFaces>(command);
+    erase_at(temporary_, del.temporary);
+    erase_at(consolidated_, del.consolidated);
+    deleted_.insert(deleted_.end(), del.scene_faces.begin(), del.scene_faces.end());
+  }
+}
+
+void Document::revert(const Command& command) {
+  if (const auto* add = std::get_if<AddTemporary>(&command)) {
+    temporary_.resize(temporary_.size() - add->faces.size());
+  } else if (const auto* accept = std::get_if<Accept>(&command)) {
+    temporary_.assign(consolidated_.end() - long(accept->count), consolidated_.end());
+    consolidated_.resize(consolidated_.size() - accept->count);
+  } else if (const auto* clear = std::get_if<ClearTemporary>(&command)) {
+    temporary_ = clear->faces;
+  } else {
+    const auto& del = std::get<DeleteFaces>(command);
+    deleted_.resize(deleted_.size() - del.scene_faces.size());
+    insert_at(consolidated_, del.consolidated);
+    insert_at(temporary_, del.temporary);
+  }
+}
+
+std::vector<UnresolvedEdit> Document::unresolved() const {
+  std::vector<UnresolvedEdit> out;
+  for (const auto* list : {&consolidated_, &temporary_}) {
+    for (const EditedFace& face : *list) {
+      UnresolvedEdit edit{face.name, {}};
+      for (const std::string& name : face.vertices)
+        if (vertex_id(name) == no_index) edit.missing.push_back(name);
+      if (!edit.missing.empty()) out.push_back(std::move(edit));
+    }
+  }
+  for (const std::string& name : deleted_)
+    if (!face_ids_.count(name)) out.push_back({name, {}});
+  return out;
+}
+
+GluedFaces Document::scene_mesh() const {
+  PolygonSoup soup;
+  soup.positions = scene_.positions;
+  soup.vertex_names = scene_.vertex_names;
+  soup.sharp_edges = scene_.sharp_edges;
+  for (Index f = 0; f < scene_.num_faces(); ++f) {
+    if (f < scene_.face_names.size() &&
+        std::find(deleted_.begin(), deleted_.end(), scene_.face_names[f]) != deleted_.end())
+      continue;
+    soup.add_face(std::span(scene_.face_vertices).subspan(scene_.face_offsets[f], scene_.face_offsets[f + 1] - scene_.face_offsets[f]));
+    if (!scene_.face_names.empty()) soup.face_names.push_back(scene_.face_names[f]);
+    if (!scene_.face_colors.empty()) soup.face_colors.push_back(scene_.face_colors[f]);
+  }
+  return glue_faces(soup);
+}
+
+GluedFaces Document::edited_mesh(const std::vector<EditedFace>& faces) const {
+  PolygonSoup soup;
+  std::unordered_map<Index, Index> local;
+  for (const EditedFace& face : faces) {
+    std::vector<Index> ids;
+    for (const std::string& name : face.vertices) ids.push_back(vertex_id(name));
+    if (std::find(ids.begin(), ids.end(), no_index) != ids.end()) continue;  // reported by unresolved()
+    for (Index& v : ids) {
+      const auto [it, is_new] = local.emplace(v, soup.num_vertices());
+      if (is_new) {
+        soup.add_vertex(scene_.positions[v]);
+        soup.vertex_names.push_back(scene_.vertex_names[v]);
+      }
+      v = it->second;
+    }
+    soup.add_face(ids);
+    soup.face_names.push_back(face.name);
+  }
+  return glue_faces(soup);
+}
+
+GluedFaces Document::consolidated_mesh() const {
+  return edited_mesh(consolidated_);
+}
+
+GluedFaces Document::temporary_mesh() const {
+  return edited_mesh(temporary_);
+}
+
+std::vector<Mesh> Document::parts() const {
+  std::vector<Mesh> out;
+  for (GluedFaces glued : {scene_mesh(), consolidated_mesh(), temporary_mesh()})
+    if (glued.mesh.num_faces() > 0) out.push_back(std::move(glued.mesh));
+  return out;
+}
+
+}  // namespace nome

@@ -1,0 +1,96 @@
+#include "nome/edit/glue_faces.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "nome/error.hpp"
+
+namespace nome {
+namespace {
+
+Index find(std::vector<Index>& parent, Index v) {
+  while (parent[v] != v) v = parent[v] = parent[parent[v]];
+  return v;
+}
+
+}  // namespace
+
+GluedFaces glue_faces(const PolygonSoup& soup) {
+  const Index num_corners = Index(soup.face_vertices.size());
+  auto face_of = [&](Index c) {
+    return Index(std::upper_bound(soup.face_offsets.begin(), soup.face_offsets.end(), c) - soup.face_offsets.begin() - 1);
+  };
+  auto next = [&](Index c) {
+    const Index f = face_of(c);
+    return c + 1 == soup.face_offsets[f + 1] ? soup.face_offsets[f] : c + 1;
+  };
+
+  // phase: every corner its own vertex; corners are joined across each edge with exactly two faces.
+  struct HalfEdge {
+    Index low, high, corner;
+  };
+  std::vector<HalfEdge> half_edges(num_corners);
+  for (Index c = 0; c < num_corners; ++c) {
+    const Index u = soup.face_vertices[c], w = soup.face_vertices[next(c)];
+    half_edges[c] = {std::min(u, w), std::max(u, w), c};
+  }
+  std::sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& a, const HalfEdge& b) {
+    return a.low != b.low ? a.low < b.low : a.high != b.high ? a.high < b.high : a.corner < b.corner;
+  });
+  GluedFaces out;
+  std::vector<Index> parent(num_corners);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto label = [&](Index v) {
+    return v < soup.vertex_names.size() && !soup.vertex_names[v].empty() ? soup.vertex_names[v]
+                                                                         : "v" + std::to_string(v);
+  };
+  for (size_t i = 0; i < half_edges.size();) {
+    size_t end = i + 1;
+    while (end < half_edges.size() && half_edges[end].low == half_edges[i].low &&
+           half_edges[end].high == half_edges[i].high)
+      ++end;
+    if (end - i == 2) {
+      // Corner c runs from its vertex to next(c): join the corners that sit at the same vertex.
+      const Index c1 = half_edges[i].corner, c2 = half_edges[i + 1].corner;
+      const bool same_way = soup.face_vertices[c1] == soup.face_vertices[c2];
+      parent[find(parent, c1)] = find(parent, same_way ? c2 : next(c2));
+      parent[find(parent, next(c1))] = find(parent, same_way ? next(c2) : c2);
+    } else if (end - i > 2) {
+      out.problems.push_back("edge (" + label(half_edges[i].low) + ", " + label(half_edges[i].high) + ") has " +
+                             std::to_string(end - i) + " faces");
+    }
+    i = end;
+  }
+
+  // phase: one vertex per group of joined corners.
+  PolygonSoup glued;
+  std::vector<Index> id(num_corners, no_index);
+  const bool has_names = !soup.vertex_names.empty();
+  for (Index c = 0; c < num_corners; ++c) {
+    Index& v = id[find(parent, c)];
+    if (v == no_index) {
+      const Index source = soup.face_vertices[c];
+      v = glued.add_vertex(soup.positions.at(source));
+      out.vertex_sources.push_back(source);
+      if (has_names) glued.vertex_names.push_back(soup.vertex_names[source]);
+    }
+    glued.face_vertices.push_back(v);
+  }
+  if (!soup.sharp_edges.empty()) {
+    std::vector<std::pair<Index, Index>> sharp;
+    for (auto [a, b] : soup.sharp_edges) sharp.emplace_back(std::min(a, b), std::max(a, b));
+    std::sort(sharp.begin(), sharp.end());
+    for (Index c = 0; c < num_corners; ++c) {
+      const Index u = soup.face_vertices[c], w = soup.face_vertices[next(c)];
+      if (std::binary_search(sharp.begin(), sharp.end(), std::pair{std::min(u, w), std::max(u, w)}))
+        glued.sharp_edges.emplace_back(id[find(parent, c)], id[find(parent, next(c))]);
+    }
+  }
+  glued.face_offsets = soup.face_offsets;
+  glued.face_names = soup.face_names;
+  glued.face_colors = soup.face_colors;
+  out.mesh = build_mesh(std::move(glued));
+  return out;
+}
+
+}  // namespace nome
