@@ -1,5 +1,6 @@
 #include "cli/input.hpp"
 
+#include "cli/merge_option.hpp"
 #include "nome/io/read_polygons.hpp"
 
 namespace nome::cli {
@@ -25,14 +26,14 @@ void append(PolygonSoup& into, const PolygonSoup& part) {
 }  // namespace
 
 std::vector<OptionSpec> input_options() {
-  return {};
+  return merge_options();
 }
 
 Mesh load_input(const Arguments& args) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
   PolygonSoup soup;
   for (const std::string& file : args.positionals()) append(soup, read_polygons(file));
-  return build_mesh(std::move(soup));
+  return apply_merge_option(build_mesh(std::move(soup)), args);
 }
 
 }  // namespace nome::cli

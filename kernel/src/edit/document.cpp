@@ -42,7 +42,8 @@ void Document::index_scene() {
   for (Index f = 0; f < scene_.num_faces(); ++f) {
     const Index b = scene_.face_offsets[f], e = scene_.face_offsets[f + 1];
     for (Index c = b; c < e; ++c)
-      scene_edge_faces_[edge_key(scene_.face_vertices[c], scene_.face_vertices[c + 1 == e ? b : c + 1])].push_back(f);
+      scene_edge_faces_[edge_key(scene_.face_vertices[c], scene_.face_vertices[c + 1 == e ? b : c + 1])]
+          .push_back(f);
   }
 }
 
@@ -78,7 +79,8 @@ std::vector<Document::EdgeUse> Document::uses_of(Index u, Index w) const {
   for (const auto* list : {&temporary_, &consolidated_}) {
     for (const EditedFace& face : *list) {
       for (size_t k = 0; k < face.vertices.size(); ++k) {
-        const Index from = vertex_id(face.vertices[k]), to = vertex_id(face.vertices[(k + 1) % face.vertices.size()]);
+        const Index from = vertex_id(face.vertices[k]),
+                    to = vertex_id(face.vertices[(k + 1) % face.vertices.size()]);
         if (from != no_index && to != no_index && edge_key(from, to) == edge_key(u, w))
           uses.push_back({face.name, runs_up(from, to)});
       }
@@ -87,7 +89,8 @@ std::vector<Document::EdgeUse> Document::uses_of(Index u, Index w) const {
   return uses;
 }
 
-std::string Document::check_face(EditedFace& face, const std::vector<EditedFace>& pending, bool orient) const {
+std::string Document::check_face(EditedFace& face, const std::vector<EditedFace>& pending,
+                                 bool orient) const {
   const size_t n = face.vertices.size();
   if (n < 3) return "a polygon needs at least 3 vertices, " + std::to_string(n) + " selected";
   std::vector<Index> ids;
@@ -103,12 +106,13 @@ std::string Document::check_face(EditedFace& face, const std::vector<EditedFace>
     std::vector<EdgeUse> uses = uses_of(u, w);
     for (const EditedFace& other : pending)
       for (size_t i = 0; i < other.vertices.size(); ++i) {
-        const Index from = vertex_id(other.vertices[i]), to = vertex_id(other.vertices[(i + 1) % other.vertices.size()]);
+        const Index from = vertex_id(other.vertices[i]),
+                    to = vertex_id(other.vertices[(i + 1) % other.vertices.size()]);
         if (edge_key(from, to) == edge_key(u, w)) uses.push_back({other.name, from < to});
       }
     if (uses.size() >= 2)
-      return "the edge (" + face.vertices[k] + ", " + face.vertices[(k + 1) % n] + ") already has two faces (" +
-             uses[0].face + ", " + uses[1].face + ")";
+      return "the edge (" + face.vertices[k] + ", " + face.vertices[(k + 1) % n] +
+             ") already has two faces (" + uses[0].face + ", " + uses[1].face + ")";
     // A neighbour running the same way along the shared edge disagrees with this orientation.
     if (uses.size() == 1) votes += uses[0].runs_up == (u < w) ? -1 : 1;
   }
@@ -261,7 +265,8 @@ GluedFaces Document::scene_mesh() const {
     if (f < scene_.face_names.size() &&
         std::find(deleted_.begin(), deleted_.end(), scene_.face_names[f]) != deleted_.end())
       continue;
-    soup.add_face(std::span(scene_.face_vertices).subspan(scene_.face_offsets[f], scene_.face_offsets[f + 1] - scene_.face_offsets[f]));
+    soup.add_face(std::span(scene_.face_vertices)
+                      .subspan(scene_.face_offsets[f], scene_.face_offsets[f + 1] - scene_.face_offsets[f]));
     if (!scene_.face_names.empty()) soup.face_names.push_back(scene_.face_names[f]);
     if (!scene_.face_colors.empty()) soup.face_colors.push_back(scene_.face_colors[f]);
   }

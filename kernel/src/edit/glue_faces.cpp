@@ -18,7 +18,8 @@ Index find(std::vector<Index>& parent, Index v) {
 GluedFaces glue_faces(const PolygonSoup& soup) {
   const Index num_corners = Index(soup.face_vertices.size());
   auto face_of = [&](Index c) {
-    return Index(std::upper_bound(soup.face_offsets.begin(), soup.face_offsets.end(), c) - soup.face_offsets.begin() - 1);
+    return Index(std::upper_bound(soup.face_offsets.begin(), soup.face_offsets.end(), c) -
+                 soup.face_offsets.begin() - 1);
   };
   auto next = [&](Index c) {
     const Index f = face_of(c);
@@ -56,8 +57,8 @@ GluedFaces glue_faces(const PolygonSoup& soup) {
       parent[find(parent, c1)] = find(parent, same_way ? c2 : next(c2));
       parent[find(parent, next(c1))] = find(parent, same_way ? next(c2) : c2);
     } else if (end - i > 2) {
-      out.problems.push_back("edge (" + label(half_edges[i].low) + ", " + label(half_edges[i].high) + ") has " +
-                             std::to_string(end - i) + " faces");
+      out.problems.push_back("edge (" + label(half_edges[i].low) + ", " + label(half_edges[i].high) +
+                             ") has " + std::to_string(end - i) + " faces");
     }
     i = end;
   }

@@ -38,7 +38,8 @@ PolygonSoup two_grids() {
 Mesh everything(const Document& doc) {
   PolygonSoup soup = to_soup(doc.scene_mesh().mesh);
   auto id = [&](const std::string& name) {
-    return Index(std::find(soup.vertex_names.begin(), soup.vertex_names.end(), name) - soup.vertex_names.begin());
+    return Index(std::find(soup.vertex_names.begin(), soup.vertex_names.end(), name) -
+                 soup.vertex_names.begin());
   };
   for (const auto* list : {&doc.consolidated_faces(), &doc.temporary_faces()})
     for (const EditedFace& face : *list) {
@@ -148,7 +149,8 @@ TEST_CASE("edits follow vertex names through geometry changes and report what va
   PolygonSoup left = named_grid("left", 2, 2, 0.0), right = named_grid("right", 1, 1, 2.5);
   PolygonSoup smaller = test::disjoint_union(left, right);
   smaller.vertex_names = left.vertex_names;
-  smaller.vertex_names.insert(smaller.vertex_names.end(), right.vertex_names.begin(), right.vertex_names.end());
+  smaller.vertex_names.insert(smaller.vertex_names.end(), right.vertex_names.begin(),
+                              right.vertex_names.end());
   smaller.face_names = left.face_names;
   smaller.face_names.insert(smaller.face_names.end(), right.face_names.begin(), right.face_names.end());
   doc.set_scene_geometry(smaller);

@@ -46,7 +46,8 @@ class Document {
   const PolygonSoup& scene_geometry() const { return scene_; }
   // The consolidated faces (vertex names) and deleted face names read from a saved file; clears the
   // temporary mesh and the undo history.
-  void load_edits(const std::vector<std::vector<std::string>>& consolidated, std::vector<std::string> deleted);
+  void load_edits(const std::vector<std::vector<std::string>>& consolidated,
+                  std::vector<std::string> deleted);
 
   // Adds a polygon through the named vertices, in order, to the temporary mesh. Refused if a vertex is
   // unknown or repeated or an edge already has two faces. Reversed if most of its edges that already
