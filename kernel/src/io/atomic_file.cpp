@@ -13,15 +13,24 @@
 namespace nome {
 namespace {
 
+// Created exclusively, so two writers (threads or processes) never share one; a writer killed before
+// its rename leaves this sibling behind, which no later save reads or reuses.
 std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
   std::random_device seed;
-  std::filesystem::path tmp = path;
-  tmp += "." + std::to_string(::getpid()) + "." + std::to_string(seed() % 1000000) + ".tmp";
-  return tmp;
+  for (;;) {
+    std::filesystem::path tmp = path;
+    tmp += "." + std::to_string(::getpid()) + "." + std::to_string(seed() % 1000000) + ".tmp";
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      ::close(fd);
+      return tmp;
+    }
+    if (errno != EEXIST) throw IoError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+  }
 }
 
-void sync_file(const std::filesystem::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY);
+void sync_path(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return;
   ::fsync(fd);
   ::close(fd);
@@ -40,10 +49,12 @@ void write_file_atomically(const std::filesystem::path& path,
       out.flush();
       if (!out) throw IoError(path.string() + ": write failed (disk full?)");
     }
-    sync_file(tmp);
+    sync_path(tmp);
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) throw IoError(path.string() + ": cannot replace (" + ec.message() + ")");
+    // The rename itself is durable only once the folder is synced.
+    sync_path(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
