@@ -12,9 +12,11 @@ namespace nome {
 PolygonSoup read_polygons(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext == ".obj") return read_obj(path);
-  if (ext == ".stl") return read_stl(path);
-  throw IoError(path.string() + ": unknown file type '" + ext + "' (expected .obj or .stl)");
+  if (ext != ".obj" && ext != ".stl")
+    throw IoError(path.string() + ": unknown file type '" + ext + "' (expected .obj or .stl)");
+  PolygonSoup soup = ext == ".obj" ? read_obj(path) : read_stl(path);
+  if (soup.num_faces() == 0) throw IoError(path.string() + ": no faces: there is no surface in this file");
+  return soup;
 }
 
 }  // namespace nome

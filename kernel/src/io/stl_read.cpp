@@ -1,4 +1,5 @@
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -61,6 +62,10 @@ PolygonSoup read_binary(const std::string& file, const std::string& bytes) {
     for (int k = 0; k < 3; ++k) {
       std::array<float, 3> p;
       std::memcpy(p.data(), rec + 12 * k, 12);
+      for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(p[i]))
+          throw IoError(file + ": byte " + std::to_string(rec - bytes.data() + 12 * k + 4 * i) + ": triangle " +
+                        std::to_string(t) + " has a non-finite coordinate");
       ids[k] = weld.vertex(p);
     }
     soup.add_face(ids);
@@ -68,32 +73,45 @@ PolygonSoup read_binary(const std::string& file, const std::string& bytes) {
   return soup;
 }
 
+// The grammar is fixed (solid, facet normal, outer loop, vertex, endloop, endfacet, endsolid): any other
+// word, a facet cut short or a missing endsolid means the file is not what it claims to be.
 PolygonSoup read_ascii(const std::string& file, const std::string& bytes) {
   PolygonSoup soup;
   Welder weld(soup);
   std::istringstream in(bytes);
   std::string text;
   int line = 0;
+  bool in_solid = false;
   std::vector<Index> corners;
+  auto fail = [&](int column, const std::string& what) {
+    throw IoError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what);
+  };
   while (std::getline(in, text)) {
     ++line;
     std::istringstream words(text);
     std::string word;
     if (!(words >> word)) continue;
+    const int column = int(text.find(word)) + 1;
     if (word == "vertex") {
       std::array<float, 3> p;
-      if (!(words >> p[0] >> p[1] >> p[2]))
-        throw IoError(file + ":" + std::to_string(line) + ":" + std::to_string(text.find("vertex") + 8) +
-                      ": expected three numbers after 'vertex'");
+      if (!(words >> p[0] >> p[1] >> p[2]) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+        fail(column + 7, "expected three finite numbers after 'vertex'");
       corners.push_back(weld.vertex(p));
     } else if (word == "endloop") {
-      if (corners.size() != 3)
-        throw IoError(file + ":" + std::to_string(line) + ":1: expected 3 vertices in a facet, found " +
-                      std::to_string(corners.size()));
+      if (corners.size() != 3) fail(column, "expected 3 vertices in a facet, found " + std::to_string(corners.size()));
       soup.add_face(corners);
       corners.clear();
+    } else if (word == "solid") {
+      in_solid = true;
+    } else if (word == "endsolid") {
+      if (!corners.empty()) fail(column, "expected 'endloop' before 'endsolid'");
+      in_solid = false;
+    } else if (word != "facet" && word != "outer" && word != "endfacet") {
+      fail(column, "expected 'facet', 'outer loop', 'vertex', 'endloop', 'endfacet' or 'endsolid', found '" +
+                       word.substr(0, 40) + "'");
     }
   }
+  if (in_solid || !corners.empty()) fail(1, "the file ends inside a solid (expected 'endsolid'): truncated?");
   return soup;
 }
 

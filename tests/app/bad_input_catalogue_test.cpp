@@ -1,0 +1,117 @@
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "app/cli_support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path catalogue = fs::path(NOME_SOURCE_DIR) / "tests/data/bad";
+
+struct LimitedRun {
+  int status = -1;  // exit status, or 128 + signal
+  std::string out, err;
+  double seconds = 0;
+  long max_rss_mb = 0;
+};
+
+// Runs `nome ARGS...` in a child with a CPU-time limit, measuring its wall time and peak memory. (An
+// address-space limit cannot be used: the sanitizers reserve terabytes of shadow memory.)
+LimitedRun run_limited(const std::vector<std::string>& args, const fs::path& scratch) {
+  const fs::path out = scratch / "stdout", err = scratch / "stderr";
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const rlimit cpu{20, 20};
+    ::setrlimit(RLIMIT_CPU, &cpu);
+    ::dup2(::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 1);
+    ::dup2(::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 2);
+    std::vector<char*> argv{const_cast<char*>(NOME_EXECUTABLE)};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(NOME_EXECUTABLE, argv.data());
+    ::_exit(127);
+  }
+  LimitedRun r;
+  int raw = 0;
+  rusage usage{};
+  ::wait4(child, &raw, 0, &usage);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.max_rss_mb = usage.ru_maxrss / 1024;
+  std::ostringstream o, e;
+  o << std::ifstream(out).rdbuf();
+  e << std::ifstream(err).rdbuf();
+  r.out = o.str();
+  r.err = e.str();
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+// tests/data/bad/EXPECTED: one line per file, `NAME<TAB>part of the message`.
+std::map<std::string, std::string> expected_messages() {
+  std::map<std::string, std::string> out;
+  std::ifstream in(catalogue / "EXPECTED");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    const size_t tab = line.find('\t');
+    out[line.substr(0, tab)] = line.substr(tab + 1);
+  }
+  return out;
+}
+
+void check_refused(const LimitedRun& r, const std::string& expected) {
+  CHECK(r.status == 1);
+  CHECK(r.out.empty());
+  // One message, one line, in the `nome: FILE...: what` form.
+  CHECK_THAT(r.err, Catch::StartsWith("nome: ") && Catch::EndsWith("\n") && Catch::Contains(expected));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(r.seconds < 15.0);
+  CHECK(r.max_rss_mb < 600);
+}
+
+}  // namespace
+
+TEST_CASE("every file of the bad-input catalogue is refused with one clear message", "[app]") {
+  const auto expected = expected_messages();
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(catalogue))
+    if (entry.path().filename() != "EXPECTED") files.push_back(entry.path().filename().string());
+  std::sort(files.begin(), files.end());
+  CHECK(files.size() >= 60);
+  CHECK(files.size() == expected.size());
+
+  const fs::path scratch = nome::test::scratch_dir("bad_input_" + std::to_string(::getpid()));
+  for (const std::string& name : files) {
+    INFO(name);
+    const auto it = expected.find(name);
+    REQUIRE(it != expected.end());
+    const std::string path = (catalogue / name).string();
+    const LimitedRun info = run_limited({"info", path}, scratch);
+    INFO("nome info: " << info.err);
+    check_refused(info, it->second);
+    CHECK_THAT(info.err, Catch::Contains(path));
+
+    // Export writes nothing at all: no output file, no temporary left behind.
+    const LimitedRun exported = run_limited({"export", path, "-o", (scratch / "out.obj").string()}, scratch);
+    INFO("nome export: " << exported.err);
+    check_refused(exported, it->second);
+    CHECK(fs::is_empty(scratch));
+  }
+  fs::remove_all(scratch);
+}
