@@ -1,0 +1,16 @@
+#pragma once
+
+#include "nome/mesh/mesh.hpp"
+
+namespace nome::fuzz {
+
+// Everything downstream of a reader that must hold for any mesh build_mesh accepted: the topology
+// report and normals run, and the soup round trip rebuilds the same counts. Aborts on a violation
+// (libFuzzer records the input).
+void check_downstream(const Mesh& mesh);
+
+// build_mesh on a soup from untrusted input: refusal by TopologyError or InvalidInputError is fine;
+// anything accepted goes through check_downstream.
+void build_and_check(PolygonSoup soup);
+
+}  // namespace nome::fuzz

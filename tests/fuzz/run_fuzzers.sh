@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer target in BUILD_DIR for SECONDS each and prints its execution count.
+# Seeds: the example files in assets/, the bad-input catalogue, tests/data/fuzz/seeds/<format>/ and the
+# checked-in regressions in tests/data/fuzz/<target>/. The corpus grows in BUILD_DIR/corpus/<target>;
+# crashes, hangs (-timeout, default 1 s) and leaks land in BUILD_DIR/artifacts/<target>/.
+set -uo pipefail
+build=${1:?usage: run_fuzzers.sh BUILD_DIR SECONDS}
+seconds=${2:-60}
+timeout=${FUZZ_TIMEOUT:-1}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+failed=0
+for fuzzer in "$build"/tests/fuzz/*_fuzzer; do
+  name=$(basename "$fuzzer")
+  format=${name%_fuzzer}
+  corpus=$build/corpus/$name
+  seeds=$build/seeds/$name
+  artifacts=$build/artifacts/$name
+  mkdir -p "$corpus" "$seeds" "$artifacts"
+  case $format in
+    polygon_soup) max_len=1024 ;;
+    *) max_len=16384
+       cp "$root"/assets/*."$format" "$root"/tests/data/bad/*."$format" "$seeds"/ 2>/dev/null
+       cp "$root"/tests/data/fuzz/seeds/"$format"/* "$seeds"/ 2>/dev/null ;;
+  esac
+  cp "$root"/tests/data/fuzz/"$name"/* "$seeds"/ 2>/dev/null
+  log=$build/$name.log
+  "$fuzzer" -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 -max_len="$max_len" \
+    -print_final_stats=1 -artifact_prefix="$artifacts"/ "$corpus" "$seeds" >"$log" 2>&1
+  status=$?
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
+  echo "$name: ${runs:-?} executions in ${seconds} s, corpus $(ls "$corpus" | wc -l) files, exit $status"
+  if [ "$status" -ne 0 ]; then
+    failed=1
+    grep -m3 -E 'ERROR|SUMMARY|Test unit written' "$log"
+  fi
+done
+exit $failed
