@@ -1,6 +1,7 @@
 #include "cli/input.hpp"
 
 #include "cli/merge_option.hpp"
+#include "nome/error.hpp"
 #include "nome/io/read_polygons.hpp"
 
 namespace nome::cli {
@@ -23,6 +24,24 @@ void append(PolygonSoup& into, const PolygonSoup& part) {
   for (auto [a, b] : part.sharp_edges) into.sharp_edges.emplace_back(a + base, b + base);
 }
 
+// build_mesh on all files together; a topology error names the file at fault, with element numbers of
+// that file alone: the parts are rebuilt one by one (only on this error path) to find it.
+Mesh build_naming_the_file(PolygonSoup soup, std::vector<PolygonSoup>& parts,
+                           const std::vector<std::string>& files) {
+  try {
+    return build_mesh(std::move(soup));
+  } catch (const TopologyError&) {
+    for (size_t i = 0; i < parts.size(); ++i) {
+      try {
+        build_mesh(std::move(parts[i]));
+      } catch (const TopologyError& in_part) {
+        throw TopologyError(files[i] + ": " + in_part.what());
+      }
+    }
+    throw;
+  }
+}
+
 }  // namespace
 
 std::vector<OptionSpec> input_options() {
@@ -32,8 +51,12 @@ std::vector<OptionSpec> input_options() {
 Mesh load_input(const Arguments& args) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
   PolygonSoup soup;
-  for (const std::string& file : args.positionals()) append(soup, read_polygons(file));
-  return apply_merge_option(build_mesh(std::move(soup)), args);
+  std::vector<PolygonSoup> parts;
+  for (const std::string& file : args.positionals()) {
+    parts.push_back(read_polygons(file));
+    append(soup, parts.back());
+  }
+  return apply_merge_option(build_naming_the_file(std::move(soup), parts, args.positionals()), args);
 }
 
 }  // namespace nome::cli

@@ -49,7 +49,7 @@ BruteForceTopology brute_force_topology(const PolygonSoup& soup) {
   // Faces, and every side keyed by its unordered vertex pair.
   std::map<std::pair<Index, Index>, std::vector<Side>> sides;
   std::vector<std::vector<std::pair<Index, Index>>> link(nv);  // per vertex: (previous, next) per face
-  std::vector<bool> used(nv, false);
+  std::vector<Index> first_face(nv, no_index);
   for (size_t f = 0; f < nf; ++f) {
     const std::vector<Index> vs = face(f);
     if (vs.size() < 3) return refuse("face with fewer than 3 vertices");
@@ -60,7 +60,7 @@ BruteForceTopology brute_force_topology(const PolygonSoup& soup) {
       const Index a = vs[i], b = vs[(i + 1) % vs.size()], before = vs[(i + vs.size() - 1) % vs.size()];
       sides[{std::min(a, b), std::max(a, b)}].push_back({Index(f), a < b});
       link[a].emplace_back(before, b);
-      used[a] = true;
+      if (first_face[a] == no_index) first_face[a] = Index(f);
     }
   }
   for (const auto& [pair, list] : sides)
@@ -111,19 +111,12 @@ BruteForceTopology brute_force_topology(const PolygonSoup& soup) {
   TopologyReport& r = out.report;
   r.components.resize(part_of_root.size());
   for (size_t f = 0; f < nf; ++f) ++r.components[part[f]].faces;
+  // Any face at v names its part (the link is connected).
   for (size_t v = 0; v < nv; ++v) {
-    if (!used[v]) {
+    if (first_face[v] == no_index)
       ++r.isolated_vertices;
-      continue;
-    }
-    // Any face at v names its part (the link is connected).
-    const Index some_face = [&] {
-      for (size_t f = 0; f < nf; ++f)
-        for (Index w : face(f))
-          if (w == v) return Index(f);
-      return no_index;
-    }();
-    ++r.components[part[some_face]].vertices;
+    else
+      ++r.components[part[first_face[v]]].vertices;
   }
   UnionFind border_vertices(nv);
   std::vector<std::pair<Index, Index>> border_edges;
@@ -142,15 +135,15 @@ BruteForceTopology brute_force_topology(const PolygonSoup& soup) {
     loop_part[border_vertices.find(a)] = part[f];
   }
   for (const auto& [root, p] : loop_part) ++r.components[p].borders;
-  std::vector<std::set<size_t>> cover_roots(r.components.size());
-  for (size_t f = 0; f < nf; ++f) cover_roots[part[f]].insert(cover.find(2 * f));
+  // The double cover of an orientable part falls apart into two copies; of a non-orientable one, not.
+  std::vector<std::set<size_t>> cover_parts(r.components.size());
+  for (size_t f = 0; f < nf; ++f) {
+    cover_parts[part[f]].insert(cover.find(2 * f));
+    cover_parts[part[f]].insert(cover.find(2 * f + 1));
+  }
   for (size_t p = 0; p < r.components.size(); ++p) {
     ComponentTopology& c = r.components[p];
-    // The double cover of an orientable part falls apart into two copies; of a non-orientable one, not.
-    std::set<size_t> both = cover_roots[p];
-    for (size_t f = 0; f < nf; ++f)
-      if (part[f] == p) both.insert(cover.find(2 * f + 1));
-    c.orientable = both.size() == 2;
+    c.orientable = cover_parts[p].size() == 2;
     c.chi = static_cast<long long>(c.vertices) - c.edges + c.faces;
     const long long handles = 2 - c.chi - c.borders;
     c.genus = c.orientable ? handles / 2 : handles;

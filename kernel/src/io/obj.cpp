@@ -55,6 +55,11 @@ std::vector<Token> tokens_after(const std::string& text, size_t i) {
   }
 }
 
+// A token as messages show it: quoted, and cut short when long.
+std::string quoted(std::string_view token) {
+  return "'" + std::string(token.substr(0, 40)) + (token.size() > 40 ? "...'" : "'");
+}
+
 // A face corner: v, v/vt, v//vn or v/vt/vn with non-zero whole numbers. Returns the vertex index.
 std::optional<long long> corner_vertex_index(std::string_view token) {
   auto number = [&](size_t& i, long long& value) {
@@ -87,7 +92,8 @@ LineScan scan_lines(const std::filesystem::path& path) {
   while (std::getline(in, text)) {
     ++line;
     const size_t i = text.find_first_not_of(" \t");
-    if (i == std::string::npos || i + 1 >= text.size() || (text[i + 1] != ' ' && text[i + 1] != '\t')) continue;
+    // Only the one-letter statements `v` and `f` (not vt, vn, fo...).
+    if (i == std::string::npos || (i + 1 < text.size() && text.find_first_of(" \t\r#", i + 1) != i + 1)) continue;
     if (text[i] == 'v') {
       const std::vector<Token> tokens = tokens_after(text, i + 1);
       // x y z, x y z w, or x y z r g b (a common extension for vertex colours).
@@ -99,8 +105,8 @@ LineScan scan_lines(const std::filesystem::path& path) {
         char* end = nullptr;
         const double value = std::strtod(token.c_str(), &end);
         if (end != token.c_str() + token.size())
-          fail(line, tokens[k].column, "expected a number, found '" + token + "'");
-        if (!std::isfinite(value)) fail(line, tokens[k].column, "expected a finite number, found '" + token + "'");
+          fail(line, tokens[k].column, "expected a number, found " + quoted(tokens[k].text));
+        if (!std::isfinite(value)) fail(line, tokens[k].column, "expected a finite number, found " + quoted(tokens[k].text));
         if (k < 3) v[int(k)] = value;
       }
       scan.positions.push_back(v);
@@ -111,8 +117,8 @@ LineScan scan_lines(const std::filesystem::path& path) {
         const auto index = corner_vertex_index(t.text);
         if (!index)
           fail(line, t.column,
-               "expected a vertex index (a non-zero whole number, as in 3, 3/1, 3//2 or 3/1/2), found '" +
-                   std::string(t.text) + "'");
+               "expected a vertex index (a non-zero whole number, as in 3, 3/1, 3//2 or 3/1/2), found " +
+                   quoted(t.text));
         if (*index < 0 && -*index > (long long)scan.positions.size())
           fail(line, t.column, "vertex index out of range (" + std::to_string(scan.positions.size()) +
                                    " vertices are defined before this line)");
