@@ -22,7 +22,8 @@ void check_downstream(const Mesh& mesh) {
   require(report.edges == mesh.num_edges() && report.faces == mesh.num_faces());
   require(report.chi == (long long)report.vertices - report.edges + report.faces);
   const Normals normals = compute_normals(mesh);
-  for (const Vec3& n : normals.vertices) require(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+  for (const Vec3& n : normals.vertices)
+    require(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
   const Mesh again = build_mesh(to_soup(mesh));
   require(again.num_edges() == mesh.num_edges() && again.num_boundary_loops() == mesh.num_boundary_loops());
 }

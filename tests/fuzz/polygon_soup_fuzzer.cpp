@@ -10,13 +10,14 @@ namespace {
 
 bool same(const nome::TopologyReport& a, const nome::TopologyReport& b) {
   if (a.vertices != b.vertices || a.edges != b.edges || a.faces != b.faces || a.orientable != b.orientable ||
-      a.borders != b.borders || a.mobius_edges != b.mobius_edges || a.isolated_vertices != b.isolated_vertices ||
-      a.components.size() != b.components.size())
+      a.borders != b.borders || a.mobius_edges != b.mobius_edges ||
+      a.isolated_vertices != b.isolated_vertices || a.components.size() != b.components.size())
     return false;
   for (size_t i = 0; i < a.components.size(); ++i) {
     const auto &p = a.components[i], &q = b.components[i];
-    if (p.vertices != q.vertices || p.edges != q.edges || p.faces != q.faces || p.orientable != q.orientable ||
-        p.borders != q.borders || p.genus != q.genus || p.mobius_edges != q.mobius_edges)
+    if (p.vertices != q.vertices || p.edges != q.edges || p.faces != q.faces ||
+        p.orientable != q.orientable || p.borders != q.borders || p.genus != q.genus ||
+        p.mobius_edges != q.mobius_edges)
       return false;
   }
   return true;

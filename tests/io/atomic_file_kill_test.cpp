@@ -29,7 +29,8 @@ std::string version_content(int version, size_t size) {
 void write_version(const fs::path& path, const std::string& content) {
   write_file_atomically(path, [&](std::ostream& out) {
     // Many small writes: a kill has many chances to land in the middle of the content.
-    for (size_t i = 0; i < content.size(); i += 4096) out.write(content.data() + i, std::min<size_t>(4096, content.size() - i));
+    for (size_t i = 0; i < content.size(); i += 4096)
+      out.write(content.data() + i, std::min<size_t>(4096, content.size() - i));
   });
 }
 
@@ -56,7 +57,8 @@ TEST_CASE("a writer killed at random moments leaves the old or the new file, nev
   // Kill moments spread over about one and a half times a whole save.
   const auto start = std::chrono::steady_clock::now();
   write_version(target, version_content(0, size));
-  const auto save_us = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start).count();
+  const auto save_us =
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start).count();
   std::mt19937 rng{42};
   std::uniform_int_distribution<long> moment(0, save_us * 3 / 2 + 1);
 

@@ -30,7 +30,8 @@ std::string bytes_of(const fs::path& p) {
 // What the reader fuzz targets do with one input: read, build, report. Errors are fine; crashes and
 // sanitizer reports are not (make test runs this under ASan + UBSan).
 void replay_reader(const fs::path& input, const std::string& extension) {
-  const fs::path copy = fs::temp_directory_path() / ("nome_fuzz_replay_" + std::to_string(::getpid()) + extension);
+  const fs::path copy =
+      fs::temp_directory_path() / ("nome_fuzz_replay_" + std::to_string(::getpid()) + extension);
   fs::copy_file(input, copy, fs::copy_options::overwrite_existing);
   try {
     const Mesh mesh = build_mesh(extension == ".obj" ? read_obj(copy) : read_stl(copy));

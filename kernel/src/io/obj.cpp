@@ -64,8 +64,10 @@ std::string quoted(std::string_view token) {
 std::optional<long long> corner_vertex_index(std::string_view token) {
   auto number = [&](size_t& i, long long& value) {
     const char* first = token.data() + i;
-    const auto [ptr, ec] = std::from_chars(first + (*first == '+' ? 1 : 0), token.data() + token.size(), value);
-    if (ec != std::errc() || ptr == first || value == 0 || value > INT32_MAX || value < -INT32_MAX) return false;
+    const auto [ptr, ec] =
+        std::from_chars(first + (*first == '+' ? 1 : 0), token.data() + token.size(), value);
+    if (ec != std::errc() || ptr == first || value == 0 || value > INT32_MAX || value < -INT32_MAX)
+      return false;
     i = size_t(ptr - token.data());
     return true;
   };
@@ -93,12 +95,14 @@ LineScan scan_lines(const std::filesystem::path& path) {
     ++line;
     const size_t i = text.find_first_not_of(" \t");
     // Only the one-letter statements `v` and `f` (not vt, vn, fo...).
-    if (i == std::string::npos || (i + 1 < text.size() && text.find_first_of(" \t\r#", i + 1) != i + 1)) continue;
+    if (i == std::string::npos || (i + 1 < text.size() && text.find_first_of(" \t\r#", i + 1) != i + 1))
+      continue;
     if (text[i] == 'v') {
       const std::vector<Token> tokens = tokens_after(text, i + 1);
       // x y z, x y z w, or x y z r g b (a common extension for vertex colours).
       if (tokens.size() != 3 && tokens.size() != 4 && tokens.size() != 6)
-        fail(line, int(i) + 1, "expected 3 coordinates after 'v', found " + std::to_string(tokens.size()) + " numbers");
+        fail(line, int(i) + 1,
+             "expected 3 coordinates after 'v', found " + std::to_string(tokens.size()) + " numbers");
       Vec3 v;
       for (size_t k = 0; k < tokens.size(); ++k) {
         const std::string token(tokens[k].text);
@@ -106,7 +110,8 @@ LineScan scan_lines(const std::filesystem::path& path) {
         const double value = std::strtod(token.c_str(), &end);
         if (end != token.c_str() + token.size())
           fail(line, tokens[k].column, "expected a number, found " + quoted(tokens[k].text));
-        if (!std::isfinite(value)) fail(line, tokens[k].column, "expected a finite number, found " + quoted(tokens[k].text));
+        if (!std::isfinite(value))
+          fail(line, tokens[k].column, "expected a finite number, found " + quoted(tokens[k].text));
         if (k < 3) v[int(k)] = value;
       }
       scan.positions.push_back(v);
@@ -120,13 +125,15 @@ LineScan scan_lines(const std::filesystem::path& path) {
                "expected a vertex index (a non-zero whole number, as in 3, 3/1, 3//2 or 3/1/2), found " +
                    quoted(t.text));
         if (*index < 0 && -*index > (long long)scan.positions.size())
-          fail(line, t.column, "vertex index out of range (" + std::to_string(scan.positions.size()) +
-                                   " vertices are defined before this line)");
+          fail(line, t.column,
+               "vertex index out of range (" + std::to_string(scan.positions.size()) +
+                   " vertices are defined before this line)");
         face.token_columns.push_back(t.column);
       }
       if (tokens.size() > max_face_degree)
-        fail(line, 1, "a face has " + std::to_string(tokens.size()) + " vertices; at most " +
-                          std::to_string(max_face_degree) + " are supported");
+        fail(line, 1,
+             "a face has " + std::to_string(tokens.size()) + " vertices; at most " +
+                 std::to_string(max_face_degree) + " are supported");
       scan.faces.push_back(std::move(face));
     }
   }

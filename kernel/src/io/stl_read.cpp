@@ -64,8 +64,8 @@ PolygonSoup read_binary(const std::string& file, const std::string& bytes) {
       std::memcpy(p.data(), rec + 12 * k, 12);
       for (int i = 0; i < 3; ++i)
         if (!std::isfinite(p[i]))
-          throw IoError(file + ": byte " + std::to_string(rec - bytes.data() + 12 * k + 4 * i) + ": triangle " +
-                        std::to_string(t) + " has a non-finite coordinate");
+          throw IoError(file + ": byte " + std::to_string(rec - bytes.data() + 12 * k + 4 * i) +
+                        ": triangle " + std::to_string(t) + " has a non-finite coordinate");
       ids[k] = weld.vertex(p);
     }
     soup.add_face(ids);
@@ -94,11 +94,13 @@ PolygonSoup read_ascii(const std::string& file, const std::string& bytes) {
     const int column = int(text.find(word)) + 1;
     if (word == "vertex") {
       std::array<float, 3> p;
-      if (!(words >> p[0] >> p[1] >> p[2]) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      if (!(words >> p[0] >> p[1] >> p[2]) || !std::isfinite(p[0]) || !std::isfinite(p[1]) ||
+          !std::isfinite(p[2]))
         fail(column + 7, "expected three finite numbers after 'vertex'");
       corners.push_back(weld.vertex(p));
     } else if (word == "endloop") {
-      if (corners.size() != 3) fail(column, "expected 3 vertices in a facet, found " + std::to_string(corners.size()));
+      if (corners.size() != 3)
+        fail(column, "expected 3 vertices in a facet, found " + std::to_string(corners.size()));
       soup.add_face(corners);
       corners.clear();
     } else if (word == "solid") {
