@@ -5,8 +5,8 @@
 namespace nome::fuzz {
 
 // Everything downstream of a reader that must hold for any mesh build_mesh accepted: the topology
-// report and normals run, and the soup round trip rebuilds the same counts. Aborts on a violation
-// (libFuzzer records the input).
+// report and normals run, the soup round trip rebuilds the same counts, and a boundary merge gives a
+// 2-manifold that passes the same checks. Aborts on a violation (libFuzzer records the input).
 void check_downstream(const Mesh& mesh);
 
 // build_mesh on a soup from untrusted input: refusal by TopologyError or InvalidInputError is fine;
