@@ -9,6 +9,7 @@ namespace nome::cli {
 // 0 success, 1 an error in the input (printed as `nome: FILE:LINE:COL: message`), 2 a usage error.
 int info_command(const std::vector<std::string>& args);
 int export_command(const std::vector<std::string>& args);
+int render_command(const std::vector<std::string>& args);
 
 // Dispatches `nome COMMAND ...`; catches every error so no input can crash the program.
 int run(int argc, char** argv);

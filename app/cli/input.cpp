@@ -59,4 +59,19 @@ Mesh load_input(const Arguments& args) {
   return apply_merge_option(build_naming_the_file(std::move(soup), parts, args.positionals()), args);
 }
 
+Stage parse_stage(const std::string& name) {
+  const std::pair<const char*, const char*> pending[] = {
+      {"merged", "merging"}, {"subdivided", "subdivision"}, {"offset", "offsetting"}};
+  if (name == "scene") return Stage::scene;
+  for (const auto& [stage, feature] : pending)
+    if (name == stage) throw UsageError("--stage " + name + ": " + feature + " is not built yet (available: scene)");
+  throw UsageError("--stage expects scene, merged, subdivided or offset, found '" + name + "'");
+}
+
+Mesh load_input(const Arguments& args, Stage last) {
+  // parse_stage admits only the scene stage until merging, subdivision and offsetting land.
+  if (last != Stage::scene && last != Stage::offset) throw UsageError("this stage is not built yet");
+  return load_input(args);
+}
+
 }  // namespace nome::cli

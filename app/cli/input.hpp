@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "cli/arguments.hpp"
@@ -10,7 +11,15 @@ namespace nome::cli {
 // The options every command that reads geometry shares (DESIGN.md, "The command line").
 std::vector<OptionSpec> input_options();
 
+// The pipeline's stages in order (DESIGN.md); `nome render --stage` shows an earlier one than the last.
+enum class Stage { scene, merged, subdivided, offset };
+
+// Parses a --stage value; refuses (UsageError) a stage whose kernel feature has not landed yet.
+Stage parse_stage(const std::string& name);
+
 // Reads the FILE arguments (several become parts of one mesh) and runs the pipeline the options ask for.
 Mesh load_input(const Arguments& args);
+// The same, stopping after `last`.
+Mesh load_input(const Arguments& args, Stage last);
 
 }  // namespace nome::cli

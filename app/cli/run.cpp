@@ -18,6 +18,7 @@ struct Command {
 const Command commands[] = {
     {"info", info_command, "print the topology report of a file (V, E, F, chi, orientable, borders, genus)"},
     {"export", export_command, "write the result as .obj or .stl"},
+    {"render", render_command, "draw the result headless into a PNG (EGL or OSMesa, no display needed)"},
 };
 
 void print_help(std::ostream& out) {

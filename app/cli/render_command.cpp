@@ -1,0 +1,137 @@
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "cli/color_argument.hpp"
+#include "cli/commands.hpp"
+#include "cli/input.hpp"
+#include "nome/error.hpp"
+#include "render/offscreen_context.hpp"
+#include "render/snapshot.hpp"
+
+namespace nome::cli {
+namespace {
+
+// "AxB" with A and B in 1..max, as --size and friends write pairs.
+std::pair<double, double> parse_pair(const std::string& option, const std::string& text, char separator,
+                                     const char* expected) {
+  std::istringstream in(text);
+  double a = 0, b = 0;
+  char sep = 0;
+  if (!(in >> a >> sep >> b) || sep != separator || !(in >> std::ws).eof() || !std::isfinite(a) ||
+      !std::isfinite(b))
+    throw UsageError(option + " expects " + expected + ", found '" + text + "'");
+  return {a, b};
+}
+
+render::SnapshotOptions snapshot_options(const Arguments& args) {
+  render::SnapshotOptions options;
+  if (const auto size = args.value("--size")) {
+    const auto [w, h] = parse_pair("--size", *size, 'x', "WIDTHxHEIGHT (e.g. 1024x768)");
+    if (w != std::floor(w) || h != std::floor(h) || w < 16 || h < 16 || w > 8192 || h > 8192)
+      throw UsageError("--size must be whole numbers of pixels between 16 and 8192, found '" + *size + "'");
+    options.width = int(w);
+    options.height = int(h);
+  }
+  render::ViewAngle view;
+  if (const auto text = args.value("--view")) {
+    const auto [az, el] = parse_pair("--view", *text, ',', "AZ,EL in degrees (e.g. 30,25)");
+    if (el < -90 || el > 90) throw UsageError("--view elevation must be between -90 and 90, found '" + *text + "'");
+    view = {az, el};
+  }
+  options.views = render::views_around(view, args.int_value("--views", 1, 1, 16));
+  render::DisplaySettings& display = options.display;
+  display.show_wireframe = args.has("--wire");
+  display.shading = args.has("--flat") ? render::Shading::flat : render::Shading::smooth;
+  display.show_mobius_edges = args.has("--mobius-edges");
+  display.show_borders = args.has("--borders");
+  if (const auto back = args.value("--backface-color")) {
+    if (*back == "same")
+      display.back_faces = render::BackFacePolicy::same;
+    else if (*back == "cull")
+      display.back_faces = render::BackFacePolicy::cull;
+    else
+      display.back_color = parse_color("--backface-color", *back);
+  }
+  if (const auto color = args.value("--color")) display.front_color = parse_color("--color", *color);
+  if (const auto background = args.value("--background"))
+    display.background = glm::vec4(parse_color("--background", *background), 1.0f);
+  options.is_transparent = args.has("--transparent");
+  return options;
+}
+
+}  // namespace
+
+int render_command(const std::vector<std::string>& args) {
+  std::vector<OptionSpec> specs = {
+      {"--output", "-o", "OUT", "the PNG to write"},
+      {"--size", "", "WxH", "picture size in pixels (default 1024x768)"},
+      {"--view", "", "AZ,EL", "azimuth about +Y and elevation in degrees (default 30,25: three-quarter)"},
+      {"--views", "", "N", "a contact sheet of N views around the object (azimuths 360/N apart)"},
+      {"--stage", "", "STAGE", "show the pipeline after scene|merged|subdivided|offset (default: all of it)"},
+      {"--wire", "", "", "draw the real polygon edges over the faces"},
+      {"--flat", "", "", "flat shading (one normal per face)"},
+      {"--mobius-edges", "", "", "highlight the Möbius edges (where the faces' orientations disagree)"},
+      {"--borders", "", "", "highlight the border edges"},
+      {"--color", "", "COLOR", "front face colour (#rrggbb, R,G,B in 0..1, or a name)"},
+      {"--backface-color", "", "COLOR", "back face colour; 'same' as the front, 'cull' to hide back faces"},
+      {"--background", "", "COLOR", "background colour (default white)"},
+      {"--transparent", "", "", "transparent background (PNG alpha)"},
+      {"--backend", "", "egl|osmesa", "force the offscreen GL backend (default: EGL, else OSMesa)"},
+      {"--verbose", "-v", "", "print the GL backend, vendor, renderer and timings"}};
+  for (OptionSpec& s : input_options()) specs.push_back(std::move(s));
+  Arguments parsed("render",
+                   "nome render FILE... -o OUT.png [--size WxH] [--view AZ,EL] [--wire] [--flat] "
+                   "[--backend egl|osmesa] [pipeline options]",
+                   specs);
+  parsed.parse(args);
+  if (parsed.has("--help")) {
+    std::cout << "Draws the result headless (no display, no GPU needed) with the viewer's renderer and writes "
+                 "a PNG.\nFront faces and back faces have their own colours: a one-sided surface shows both.\n\n"
+              << parsed.help();
+    return 0;
+  }
+  const auto out = parsed.value("--output");
+  if (!out) throw UsageError("render needs -o OUT.png");
+  if (std::filesystem::path(*out).extension() != ".png")
+    throw UsageError("output must end in .png, found '" + *out + "'");
+  const render::SnapshotOptions options = snapshot_options(parsed);
+  render::Backend backend = render::Backend::automatic;
+  if (const auto name = parsed.value("--backend")) {
+    if (*name != "egl" && *name != "osmesa") throw UsageError("--backend expects egl or osmesa, found '" + *name + "'");
+    backend = render::parse_backend(*name);
+  }
+  const Stage stage = parsed.has("--stage") ? parse_stage(*parsed.value("--stage")) : Stage::offset;
+  const bool verbose = parsed.has("--verbose");
+
+  using Clock = std::chrono::steady_clock;
+  auto milliseconds = [](Clock::time_point since) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+  };
+  const auto start = Clock::now();
+  const Mesh mesh = load_input(parsed, stage);
+  const double load_ms = milliseconds(start);
+  const auto context_start = Clock::now();
+  const render::OffscreenContext context(backend);
+  const double context_ms = milliseconds(context_start);
+  if (verbose)
+    std::cerr << "nome: " << context.platform() << ": " << context.description() << "\n";
+  const auto draw_start = Clock::now();
+  const render::Image image = render::render_snapshot(mesh, options);
+  const double draw_ms = milliseconds(draw_start);
+  const auto write_start = Clock::now();
+  render::write_png(*out, image);
+  if (verbose) {
+    char figures[160];
+    std::snprintf(figures, sizeof figures,
+                  "nome: load %.1f ms, context %.1f ms, draw + read-back %.1f ms, PNG %.1f ms\n", load_ms,
+                  context_ms, draw_ms, milliseconds(write_start));
+    std::cerr << figures;
+  }
+  std::cerr << "nome: wrote " << *out << " (" << image.width << "x" << image.height << ", " << mesh.num_faces()
+            << " faces, " << context.platform() << ")\n";
+  return 0;
+}
+
+}  // namespace nome::cli

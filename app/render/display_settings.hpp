@@ -1,0 +1,38 @@
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace nome::render {
+
+// How back faces show (polyscope's BackFacePolicy): `different` is how a one-sided surface shows itself.
+enum class BackFacePolicy { same, different, cull };
+
+enum class Shading { smooth, flat };
+
+// Everything the viewer's View menu and `nome render`'s options change; one struct so the window and
+// the PNG agree for the same settings.
+struct DisplaySettings {
+  Shading shading = Shading::smooth;
+  BackFacePolicy back_faces = BackFacePolicy::different;
+  bool show_faces = true;
+  bool show_wireframe = false;
+  bool show_mobius_edges = false;
+  bool show_borders = false;
+  bool use_face_colors = true;
+
+  glm::vec3 front_color{0.80f, 0.62f, 0.25f};     // warm gold
+  glm::vec3 back_color{0.25f, 0.45f, 0.80f};      // blue: the other side
+  glm::vec3 selection_color{0.95f, 0.25f, 0.20f};
+  glm::vec4 wire_color{0.08f, 0.08f, 0.10f, 1.0f};
+  glm::vec4 mobius_color{0.85f, 0.10f, 0.55f, 1.0f};
+  glm::vec4 border_color{0.05f, 0.60f, 0.30f, 1.0f};
+  glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};
+
+  // Widths in pixels at the reference resolution; the renderer scales them with the picture's height
+  // (Renderer::Frame::pixel_scale) so a large render looks like a small one, only sharper.
+  float wire_width = 1.0f;
+  float highlight_width = 3.0f;
+};
+
+}  // namespace nome::render

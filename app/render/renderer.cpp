@@ -1,0 +1,131 @@
+#include "render/renderer.hpp"
+
+#include "render/shader_program.hpp"
+
+namespace nome::render {
+
+struct Renderer::Programs {
+  ShaderProgram mesh{"mesh",
+                     {{GL_VERTEX_SHADER, {"mesh.vert"}}, {GL_FRAGMENT_SHADER, {"lighting.glsl", "mesh.frag"}}}};
+  ShaderProgram lines{"lines",
+                      {{GL_VERTEX_SHADER, {"lines.vert"}},
+                       {GL_GEOMETRY_SHADER, {"lines.geom"}},
+                       {GL_FRAGMENT_SHADER, {"lines.frag"}}}};
+  ShaderProgram cubes{"cubes",
+                      {{GL_VERTEX_SHADER, {"cubes.vert"}}, {GL_FRAGMENT_SHADER, {"lighting.glsl", "cubes.frag"}}}};
+};
+
+Renderer::Frame Renderer::Frame::of(const Camera& camera, glm::ivec2 origin, glm::ivec2 size) {
+  Frame frame;
+  frame.origin = origin;
+  frame.size = glm::max(size, glm::ivec2(1));
+  frame.view = camera.view_matrix();
+  frame.projection = camera.projection_matrix(double(frame.size.x) / double(frame.size.y));
+  // Line widths are tuned for a picture about 600 pixels high.
+  frame.pixel_scale = std::max(1.0f, float(frame.size.y) / 600.0f);
+  return frame;
+}
+
+Renderer::Renderer() : programs_(std::make_unique<Programs>()) {}
+
+Renderer::~Renderer() = default;
+
+void Renderer::begin(const Frame& frame, const glm::vec4& background) const {
+  glViewport(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
+  glClearColor(background.r, background.g, background.b, background.a);
+  glClearDepth(1.0);
+  glDepthMask(GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glEnable(GL_MULTISAMPLE);
+  glDisable(GL_BLEND);
+}
+
+void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const DisplaySettings& settings) const {
+  glViewport(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
+  if (settings.show_faces && mesh.triangle_index_count() > 0) {
+    const ShaderProgram& p = programs_->mesh;
+    p.use();
+    p.set("model_view", frame.view);
+    p.set("projection", frame.projection);
+    p.set("use_flat_normals", settings.shading == Shading::flat ? 1 : 0);
+    p.set("front_color", settings.front_color);
+    p.set("back_color", settings.back_color);
+    p.set("selection_color", settings.selection_color);
+    p.set("different_back_color", settings.back_faces == BackFacePolicy::different ? 1 : 0);
+    p.set("use_face_colors", settings.use_face_colors ? 1 : 0);
+    p.set("opacity", 1.0f);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_BUFFER, mesh.face_color_texture());
+    p.set("face_colors", 0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_BUFFER, mesh.face_flag_texture());
+    p.set("face_flags", 1);
+    glActiveTexture(GL_TEXTURE0);
+    if (settings.back_faces == BackFacePolicy::cull) {
+      glEnable(GL_CULL_FACE);
+      glCullFace(GL_BACK);
+      glFrontFace(GL_CCW);
+    }
+    // Faces step back a little so edges drawn exactly on them win the depth test.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    glBindVertexArray(mesh.surface_vao());
+    glDrawElements(GL_TRIANGLES, mesh.triangle_index_count(), GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CULL_FACE);
+  }
+  if (settings.show_wireframe)
+    draw_segments(mesh.edge_vao(), mesh.all_edges(), frame, settings.wire_color, settings.wire_width);
+  if (settings.show_borders)
+    draw_segments(mesh.edge_vao(), mesh.border_edges(), frame, settings.border_color, settings.highlight_width);
+  if (settings.show_mobius_edges)
+    draw_segments(mesh.edge_vao(), mesh.mobius_edges(), frame, settings.mobius_color, settings.highlight_width);
+  glBindVertexArray(0);
+}
+
+void Renderer::draw_segments(GLuint vao, SegmentRange range, const Frame& frame, const glm::vec4& color,
+                             float width) const {
+  if (range.count == 0) return;
+  glViewport(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
+  const ShaderProgram& p = programs_->lines;
+  p.use();
+  p.set("model_view", frame.view);
+  p.set("projection", frame.projection);
+  p.set("depth_bias", 2e-5f);
+  p.set("viewport_size", glm::vec2(frame.size));
+  p.set("width", width * frame.pixel_scale);
+  p.set("color", color);
+  const bool is_translucent = color.a < 1.0f;
+  if (is_translucent) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  glBindVertexArray(vao);
+  glDrawElements(GL_LINES, GLsizei(range.count * 2), GL_UNSIGNED_INT,
+                 reinterpret_cast<void*>(std::size_t(range.first) * 2 * sizeof(std::uint32_t)));
+  glBindVertexArray(0);
+  if (is_translucent) glDisable(GL_BLEND);
+}
+
+void Renderer::draw_lines(const LineSet& lines, const Frame& frame, const glm::vec4& color, float width) const {
+  draw_segments(lines.vao(), {0, std::uint32_t(lines.index_count() / 2)}, frame, color, width);
+}
+
+void Renderer::draw_cubes(const CubeSet& cubes, const Frame& frame) const {
+  if (cubes.count() == 0) return;
+  glViewport(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
+  const ShaderProgram& p = programs_->cubes;
+  p.use();
+  p.set("model_view", frame.view);
+  p.set("projection", frame.projection);
+  glBindVertexArray(cubes.vao());
+  glDrawArraysInstanced(GL_TRIANGLES, 0, 36, cubes.count());
+  glBindVertexArray(0);
+}
+
+}  // namespace nome::render

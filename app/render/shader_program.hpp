@@ -1,0 +1,44 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "render/gl.hpp"
+
+namespace nome::render {
+
+struct ShaderStage {
+  GLenum type;                     // GL_VERTEX_SHADER, GL_GEOMETRY_SHADER, GL_FRAGMENT_SHADER
+  std::vector<std::string> files;  // concatenated after the #version line (shared code first)
+};
+
+// A linked GLSL 3.30 program built from files found by find_shader_source(). Throws Error with the
+// compiler's log and the files' origins when a stage does not compile or link.
+class ShaderProgram {
+ public:
+  ShaderProgram(const std::string& name, const std::vector<ShaderStage>& stages);
+  ~ShaderProgram();
+  ShaderProgram(const ShaderProgram&) = delete;
+  ShaderProgram& operator=(const ShaderProgram&) = delete;
+
+  void use() const { glUseProgram(program_); }
+  // Setters for the program in use; a uniform the compiler removed is ignored.
+  void set(const char* name, int value) const { glUniform1i(location(name), value); }
+  void set(const char* name, float value) const { glUniform1f(location(name), value); }
+  void set(const char* name, const glm::vec2& value) const;
+  void set(const char* name, const glm::vec3& value) const;
+  void set(const char* name, const glm::vec4& value) const;
+  void set(const char* name, const glm::mat4& value) const;
+
+ private:
+  GLint location(const char* name) const { return glGetUniformLocation(program_, name); }
+
+  GLuint program_ = 0;
+};
+
+}  // namespace nome::render

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <vector>
+
+#include "nome/mesh/mesh.hpp"
+#include "render/display_settings.hpp"
+#include "render/image.hpp"
+
+namespace nome::render {
+
+struct ViewAngle {
+  double azimuth = 30.0;    // degrees about +Y
+  double elevation = 25.0;  // degrees above the XZ plane
+};
+
+struct SnapshotOptions {
+  int width = 1024;
+  int height = 768;
+  // One view fills the picture; several become a contact sheet of tiles, row by row.
+  std::vector<ViewAngle> views{ViewAngle{}};
+  DisplaySettings display;
+  bool is_transparent = false;  // background alpha 0 (the PNG keeps an alpha channel)
+  int samples = 4;              // multisampling
+};
+
+// The views of several tiles: `count` azimuths evenly around the first view, same elevation.
+std::vector<ViewAngle> views_around(ViewAngle first, int count);
+
+// Renders the mesh with the shared renderer into an offscreen framebuffer, each view framed to the
+// whole mesh. Needs a current context (OffscreenContext).
+Image render_snapshot(const Mesh& mesh, const SnapshotOptions& options);
+
+}  // namespace nome::render

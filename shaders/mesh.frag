@@ -1,0 +1,33 @@
+// Two-sided lighting. A face seen from behind is lit with its normal flipped and, under the
+// "different" back-face policy, painted in the back colour: on a one-sided surface (Möbius band,
+// Klein bottle) both colours meet along the Möbius edges, which is how one-sidedness shows.
+in vec3 view_position;
+in vec3 view_normal;
+flat in uint face_id;
+
+uniform vec3 front_color;
+uniform vec3 back_color;
+uniform vec3 selection_color;
+uniform bool different_back_color;
+uniform bool use_face_colors;
+uniform samplerBuffer face_colors;  // RGBA per face; alpha 0 = the front colour
+uniform usamplerBuffer face_flags;  // bit 0: selected
+uniform float opacity;
+
+out vec4 fragment;
+
+void main() {
+  vec3 n = view_normal;
+  // A degenerate face has a zero normal: fall back to the triangle's own plane.
+  if (dot(n, n) < 1e-20) n = cross(dFdx(view_position), dFdy(view_position));
+  n = normalize(n);
+  if (!gl_FrontFacing) n = -n;
+  vec3 base = front_color;
+  if (use_face_colors) {
+    vec4 own = texelFetch(face_colors, int(face_id));
+    if (own.a > 0.0) base = own.rgb;
+  }
+  if (!gl_FrontFacing && different_back_color) base = back_color;
+  if ((texelFetch(face_flags, int(face_id)).r & 1u) != 0u) base = mix(base, selection_color, 0.65);
+  fragment = vec4(shade(base, n, view_position), opacity);
+}
