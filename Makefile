@@ -16,7 +16,9 @@ SANITIZER_ENV := ASAN_OPTIONS=abort_on_error=1:halt_on_error=1:detect_leaks=1:de
                  UBSAN_OPTIONS=abort_on_error=1:halt_on_error=1:print_stacktrace=1
 SOURCES  = $(shell git ls-files '*.cpp' '*.hpp' 2>/dev/null | grep -v '^third_party/')
 
-.PHONY: run test deps release test-build format format-check bench clean soak fuzz fuzz-build tsan
+GALLERY_SIZE ?= 640x480
+
+.PHONY: run test deps release test-build format format-check bench clean soak fuzz fuzz-build tsan references gallery
 
 deps:
 	@missing=""; for p in $(PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -33,7 +35,10 @@ run: release
 	@if [ -n "$$DISPLAY" ]; then \
 	  $(RELEASE)/app/nome $(EXAMPLE); \
 	else \
-	  $(RELEASE)/app/nome info $(EXAMPLE); \
+	  out=build/run/$$(basename $(EXAMPLE) | sed 's/\.[^.]*$$//').png; mkdir -p build/run; \
+	  echo "No DISPLAY: rendering $(EXAMPLE) headless instead of opening the viewer."; \
+	  $(RELEASE)/app/nome info $(EXAMPLE) && \
+	  $(RELEASE)/app/nome render $(EXAMPLE) -o $$out --verbose && echo "Picture: $$PWD/$$out"; \
 	fi
 
 test-build: deps
@@ -71,6 +76,26 @@ format-check: deps
 
 format: deps
 	clang-format -i $(SOURCES)
+
+# Rewrites tests/render/reference/*.png after an intended change to the pictures (look at them first).
+references: test-build
+	NOME_UPDATE_REFERENCES=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
+	  $(TESTDIR)/tests/nome_app_tests "[reference]"
+
+# Renders every file in assets/ into docs/gallery/ and lists them, with their topology, in docs/gallery.md.
+gallery: release
+	@rm -rf docs/gallery && mkdir -p docs/gallery
+	@{ echo "# Gallery"; echo; \
+	   echo "Every file in assets/, drawn by \`make gallery\` (\`nome render FILE --size $(GALLERY_SIZE)\`):"; \
+	   echo "gold is the front of a face, blue its back, so a one-sided surface shows both colours."; \
+	   echo; } > docs/gallery.md
+	@for f in $$(git ls-files assets | sort); do \
+	  name=$$(basename $$f | sed 's/\./_/g'); \
+	  $(RELEASE)/app/nome render $$f -o docs/gallery/$$name.png --size $(GALLERY_SIZE) || exit 1; \
+	  { echo "## $$(basename $$f)"; echo; echo '```'; $(RELEASE)/app/nome info $$f | head -2; echo '```'; \
+	    echo; echo "![$$(basename $$f)](gallery/$$name.png)"; echo; } >> docs/gallery.md; \
+	done
+	@echo "Wrote docs/gallery.md and $$(ls docs/gallery | wc -l) pictures in docs/gallery/"
 
 bench: deps
 	cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DNOME_TESTS=OFF -DNOME_BENCH=ON >/dev/null

@@ -40,6 +40,21 @@ render::SnapshotOptions snapshot_options(const Arguments& args) {
     if (el < -90 || el > 90) throw UsageError("--view elevation must be between -90 and 90, found '" + *text + "'");
     view = {az, el};
   }
+  if (const auto text = args.value("--target")) {
+    std::istringstream in(*text);
+    glm::dvec3 t;
+    char c1 = 0, c2 = 0;
+    if (!(in >> t.x >> c1 >> t.y >> c2 >> t.z) || c1 != ',' || c2 != ',' || !(in >> std::ws).eof())
+      throw UsageError("--target expects X,Y,Z, found '" + *text + "'");
+    options.target = t;
+  }
+  if (args.has("--distance")) {
+    const double d = args.double_value("--distance", 0.0);
+    if (!(d > 0.0)) throw UsageError("--distance must be positive, found '" + *args.value("--distance") + "'");
+    options.distance = d;
+  }
+  if (args.has("--fit") && (options.target || options.distance))
+    throw UsageError("--fit frames the whole scene: it cannot be combined with --target or --distance");
   options.views = render::views_around(view, args.int_value("--views", 1, 1, 16));
   render::DisplaySettings& display = options.display;
   display.show_wireframe = args.has("--wire");
@@ -69,6 +84,9 @@ int render_command(const std::vector<std::string>& args) {
       {"--size", "", "WxH", "picture size in pixels (default 1024x768)"},
       {"--view", "", "AZ,EL", "azimuth about +Y and elevation in degrees (default 30,25: three-quarter)"},
       {"--views", "", "N", "a contact sheet of N views around the object (azimuths 360/N apart)"},
+      {"--fit", "", "", "frame the whole scene in each view (the default)"},
+      {"--target", "", "X,Y,Z", "look at this point instead of the scene's centre"},
+      {"--distance", "", "D", "eye distance from the target instead of the fitted one"},
       {"--stage", "", "STAGE", "show the pipeline after scene|merged|subdivided|offset (default: all of it)"},
       {"--wire", "", "", "draw the real polygon edges over the faces"},
       {"--flat", "", "", "flat shading (one normal per face)"},

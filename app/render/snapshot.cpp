@@ -34,6 +34,8 @@ Image render_snapshot(const Mesh& mesh, const SnapshotOptions& options) {
     Camera camera;
     camera.set_view(options.views[i].azimuth, options.views[i].elevation);
     camera.fit(mesh.positions(), double(tile.x) / double(tile.y));
+    if (options.target) camera.target = *options.target;
+    if (options.distance) camera.distance = *options.distance;
     // Tiles fill rows from the top; GL counts rows from the bottom.
     const glm::ivec2 origin((i % columns) * tile.x, options.height - (i / columns + 1) * tile.y);
     const Renderer::Frame frame = Renderer::Frame::of(camera, origin, tile);

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <optional>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "nome/mesh/mesh.hpp"
 #include "render/display_settings.hpp"
@@ -18,6 +21,10 @@ struct SnapshotOptions {
   int height = 768;
   // One view fills the picture; several become a contact sheet of tiles, row by row.
   std::vector<ViewAngle> views{ViewAngle{}};
+  // Framing: by default each view is fitted to the whole mesh; a fixed target and/or distance keep the
+  // framing steady across renders (an animation over a slider, a comparison of stages).
+  std::optional<glm::dvec3> target;
+  std::optional<double> distance;
   DisplaySettings display;
   bool is_transparent = false;  // background alpha 0 (the PNG keeps an alpha channel)
   int samples = 4;              // multisampling

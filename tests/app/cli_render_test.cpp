@@ -1,0 +1,121 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "app/cli_support.hpp"
+#include "render/image.hpp"
+#include "render/render_support.hpp"
+
+using namespace nome;
+
+namespace {
+
+std::string asset(const std::string& name) {
+  return std::string(NOME_SOURCE_DIR) + "/assets/" + name;
+}
+
+}  // namespace
+
+TEST_CASE("nome render writes a PNG of the requested size and reports the backend", "[app]") {
+  const std::string dir = test::scratch_dir("cli_render");
+  const test::CommandResult r =
+      test::run_nome("render " + asset("mobius_band.obj") + " -o " + dir + "/band.png --size 320x200 --verbose");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find("EGL") != std::string::npos);
+  CHECK(r.err.find("llvmpipe") != std::string::npos);
+  CHECK(r.err.find("wrote " + dir + "/band.png") != std::string::npos);
+  const render::Image image = render::read_png(dir + "/band.png");
+  CHECK(image.width == 320);
+  CHECK(image.height == 200);
+  const test::SideCounts sides = test::count_sides(image);
+  CHECK(sides.front > 1000);
+  CHECK(sides.back > 1000);
+}
+
+TEST_CASE("nome render --backend osmesa", "[app]") {
+  const std::string dir = test::scratch_dir("cli_render_osmesa");
+  const test::CommandResult r = test::run_nome("render " + asset("torus.obj") + " -o " + dir +
+                                               "/t.png --size 64x48 --backend osmesa --verbose");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find("OSMesa") != std::string::npos);
+  CHECK(render::read_png(dir + "/t.png").width == 64);
+}
+
+TEST_CASE("nome render --views 4 makes a contact sheet of four framed tiles", "[app]") {
+  const std::string dir = test::scratch_dir("cli_render_views");
+  REQUIRE(test::run_nome("render " + asset("torus.obj") + " -o " + dir + "/s.png --size 200x160 --views 4").status ==
+          0);
+  const render::Image sheet = render::read_png(dir + "/s.png");
+  // Each tile's centre column holds surface, and the cross between the tiles is background.
+  for (int tile = 0; tile < 4; ++tile) {
+    const int x0 = (tile % 2) * 100, y0 = (tile / 2) * 80;
+    int surface = 0;
+    for (int y = y0; y < y0 + 80; ++y) surface += sheet.pixel(x0 + 50, y)[0] > sheet.pixel(x0 + 50, y)[2] + 30;
+    CHECK(surface > 5);
+  }
+  for (int y = 0; y < 160; ++y) CHECK(sheet.pixel(100, y)[0] > 245);
+}
+
+TEST_CASE("nome render colours and background", "[app]") {
+  const std::string dir = test::scratch_dir("cli_render_colors");
+  REQUIRE(test::run_nome("render " + asset("cube.obj") + " -o " + dir +
+                         "/c.png --size 64x48 --background #102030 --color 0,1,0")
+              .status == 0);
+  const render::Image image = render::read_png(dir + "/c.png");
+  CHECK(int(image.pixel(0, 0)[0]) == 0x10);
+  CHECK(int(image.pixel(0, 0)[1]) == 0x20);
+  CHECK(int(image.pixel(0, 0)[2]) == 0x30);
+  const std::uint8_t* centre = image.pixel(32, 24);
+  CHECK(centre[1] > centre[0] + 40);
+}
+
+TEST_CASE("nome render refuses bad requests and writes nothing", "[app]") {
+  const std::string dir = test::scratch_dir("cli_render_bad");
+  const std::string out = " -o " + dir + "/x.png";
+  struct Bad {
+    std::string arguments;
+    int status;
+    const char* message;
+  };
+  const Bad cases[] = {
+      {"render " + asset("cube.obj"), 2, "needs -o OUT.png"},
+      {"render " + asset("cube.obj") + " -o " + dir + "/x.jpg", 2, "must end in .png"},
+      {"render " + asset("cube.obj") + out + " --size 10x", 2, "--size expects WIDTHxHEIGHT"},
+      {"render " + asset("cube.obj") + out + " --size 4x4", 2, "between 16 and 8192"},
+      {"render " + asset("cube.obj") + out + " --view 30", 2, "--view expects AZ,EL"},
+      {"render " + asset("cube.obj") + out + " --view 0,100", 2, "elevation must be between"},
+      {"render " + asset("cube.obj") + out + " --views 40", 2, "--views must be between 1 and 16"},
+      {"render " + asset("cube.obj") + out + " --background mauve", 2, "--background expects a colour"},
+      {"render " + asset("cube.obj") + out + " --backend vulkan", 2, "--backend expects egl or osmesa"},
+      {"render " + asset("cube.obj") + out + " --stage sculpted", 2, "--stage expects scene, merged"},
+      {"render " + asset("cube.obj") + out + " --fit --distance 3", 2, "cannot be combined"},
+      {"render " + asset("cube.obj") + out + " --distance -1", 2, "--distance must be positive"},
+      {"render " + asset("cube.obj") + out + " --target 1,2", 2, "--target expects X,Y,Z"},
+      {"render " + dir + "/missing.obj" + out, 1, "missing.obj"},
+  };
+  for (const Bad& bad : cases) {
+    INFO(bad.arguments);
+    const test::CommandResult r = test::run_nome(bad.arguments);
+    CHECK(r.status == bad.status);
+    CHECK(r.err.find(bad.message) != std::string::npos);
+    CHECK(std::filesystem::is_empty(dir));
+  }
+  CHECK(test::run_nome("render " + asset("cube.obj") + out + " --stage scene").status == 0);
+}
+
+TEST_CASE("nome render --target and --distance replace the fitted framing", "[app]") {
+  const std::string dir = test::scratch_dir("cli_render_camera");
+  auto surface_pixels = [&](const std::string& options) {
+    const test::CommandResult r =
+        test::run_nome("render " + asset("torus.obj") + " -o " + dir + "/t.png --size 96x72 " + options);
+    REQUIRE(r.status == 0);
+    return test::count_sides(render::read_png(dir + "/t.png")).front;
+  };
+  const int fitted = surface_pixels("--fit");
+  CHECK(fitted > 1000);
+  CHECK(surface_pixels("") == fitted);
+  CHECK(surface_pixels("--distance 40") < fitted / 4);
+  CHECK(surface_pixels("--target 30,0,0") == 0);  // looking far beside the torus
+}

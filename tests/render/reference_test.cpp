@@ -1,0 +1,71 @@
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "app/cli_support.hpp"
+#include "render/image.hpp"
+#include "render/image_diff.hpp"
+
+using namespace nome;
+
+namespace {
+
+// Renders at 256x192 through the real `nome render` and compares with tests/render/reference/NAME.png.
+// `make references` (NOME_UPDATE_REFERENCES=1) rewrites the references after an intended change.
+struct ReferenceCase {
+  const char* name;
+  const char* input;    // relative to the source tree
+  const char* options;  // extra `nome render` options
+};
+
+const ReferenceCase reference_cases[] = {
+    {"mobius_band", "assets/mobius_band.obj", ""},
+    {"mobius_band_wire_flat_highlights", "assets/mobius_band.obj", "--wire --flat --mobius-edges --borders"},
+    {"mobius_band_narrow_views", "assets/mobius_band_narrow.obj", "--views 4 --wire"},
+    {"klein_bottle", "assets/klein_bottle.obj", ""},
+    {"klein_bottle_wire", "assets/klein_bottle.obj", "--wire --view 120,10"},
+    {"projective_plane_flat", "assets/projective_plane.obj", "--flat --wire --mobius-edges"},
+    {"torus_mixed", "assets/torus_mixed.obj", "--wire --mobius-edges"},
+    {"cube_transparent_cull", "assets/cube.obj", "--transparent --backface-color cull --view -40,30"},
+};
+
+constexpr int channel_tolerance = 16;
+constexpr double differing_fraction_allowed = 0.005;
+
+void check_reference(const ReferenceCase& c) {
+  INFO("reference " << c.name << ": nome render " << c.input << " " << c.options);
+  const std::filesystem::path source(NOME_SOURCE_DIR);
+  const std::filesystem::path reference = source / "tests/render/reference" / (std::string(c.name) + ".png");
+  const std::string scratch = test::scratch_dir(std::string("reference_") + c.name);
+  const std::string rendered = scratch + "/" + c.name + ".png";
+  const test::CommandResult r = test::run_nome("render " + (source / c.input).string() + " " + c.options +
+                                               " --size 256x192 -o " + rendered);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const render::Image actual = render::read_png(rendered);
+  if (const char* update = std::getenv("NOME_UPDATE_REFERENCES"); update && *update == '1') {
+    render::write_png(reference, actual);
+    WARN("wrote " << reference.string());
+    return;
+  }
+  INFO("no reference yet? `make references` writes it");
+  REQUIRE(std::filesystem::exists(reference));
+  const render::Image expected = render::read_png(reference);
+  const render::ImageDifference d = render::compare_images(expected, actual, channel_tolerance);
+  if (d.same_size && d.differing_fraction <= differing_fraction_allowed) return;
+  const std::filesystem::path failures = std::filesystem::path(NOME_BINARY_DIR) / "render_failures";
+  std::filesystem::create_directories(failures);
+  render::write_png(failures / (std::string(c.name) + ".png"), actual);
+  if (d.same_size) render::write_png(failures / (std::string(c.name) + ".diff.png"), d.picture);
+  FAIL_CHECK(c.name << ": " << d.differing_pixels << " pixels (" << 100.0 * d.differing_fraction
+                    << "%) differ by more than " << channel_tolerance << " (largest " << d.largest_difference
+                    << "); the new image and the diff (red = different) are in " << failures.string()
+                    << "; if the change is intended, run `make references`");
+}
+
+}  // namespace
+
+TEST_CASE("reference images of the assets", "[render][reference]") {
+  for (const ReferenceCase& c : reference_cases) check_reference(c);
+}

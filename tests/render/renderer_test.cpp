@@ -1,0 +1,128 @@
+#include <catch2/catch.hpp>
+
+#include "render/framebuffer.hpp"
+#include "render/offscreen_context.hpp"
+#include "render/render_support.hpp"
+#include "render/renderer.hpp"
+#include "support/shapes.hpp"
+
+using namespace nome;
+
+namespace {
+
+render::SnapshotOptions looking_from(double azimuth, double elevation) {
+  render::SnapshotOptions options;
+  options.views = {{azimuth, elevation}};
+  return options;
+}
+
+bool is_dark(const std::uint8_t* p) {
+  return p[0] < 90 && p[1] < 90 && p[2] < 90;
+}
+
+int count_pixels(const render::Image& image, bool (*keep)(const std::uint8_t*)) {
+  int n = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) n += keep(image.pixel(x, y));
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("a one-sided surface shows its back colour; a closed orientable one does not", "[render]") {
+  // Whatever the view, a Möbius band shows both sides of its faces; a torus seen from outside only fronts.
+  for (auto [az, el] : {std::pair{30.0, 25.0}, {0.0, 0.0}, {120.0, -40.0}}) {
+    const test::SideCounts band = test::count_sides(
+        test::render_small(build_mesh(test::mobius_band(32, 4)), looking_from(az, el)));
+    CHECK(band.front > 1000);
+    CHECK(band.back > 1000);
+    const test::SideCounts torus =
+        test::count_sides(test::render_small(build_mesh(test::torus(24, 12)), looking_from(az, el)));
+    CHECK(torus.front > 5000);
+    // Only silhouette samples may catch a back-facing triangle exactly at the rim.
+    CHECK(torus.back < torus.front / 200);
+  }
+}
+
+TEST_CASE("back-face policies: own colour, same colour, culled", "[render]") {
+  const Mesh grid = build_mesh(test::grid(2, 2));  // faces look towards +Z
+  CHECK(test::count_sides(test::render_small(grid, looking_from(0, 0))).front > 10000);
+  render::SnapshotOptions behind = looking_from(180, 0);
+  CHECK(test::count_sides(test::render_small(grid, behind)).back > 10000);
+  behind.display.back_faces = render::BackFacePolicy::same;
+  const test::SideCounts same = test::count_sides(test::render_small(grid, behind));
+  CHECK(same.back == 0);
+  CHECK(same.front > 10000);
+  behind.display.back_faces = render::BackFacePolicy::cull;
+  CHECK(test::count_sides(test::render_small(grid, behind)).background == 256 * 192);
+}
+
+TEST_CASE("the wireframe draws the polygon's edges, not its triangulation's diagonal", "[render]") {
+  render::SnapshotOptions options = looking_from(0, 0);
+  options.display.show_wireframe = true;
+  options.display.shading = render::Shading::flat;
+  const render::Image image = test::render_small(build_mesh(test::grid(1, 1)), options);
+  // The fan's diagonal would cross the centre; the quad's four edges cross the middle row twice.
+  for (int y = 86; y < 106; ++y)
+    for (int x = 118; x < 138; ++x) REQUIRE_FALSE(is_dark(image.pixel(x, y)));
+  int runs = 0;
+  for (int x = 1; x < image.width; ++x) runs += is_dark(image.pixel(x, 96)) && !is_dark(image.pixel(x - 1, 96));
+  CHECK(runs == 2);
+  CHECK(count_pixels(image, is_dark) > 4 * 150);
+}
+
+TEST_CASE("a transparent background keeps the surface opaque", "[render]") {
+  render::SnapshotOptions options;
+  options.is_transparent = true;
+  const render::Image image = test::render_small(build_mesh(test::cube()), options);
+  CHECK(image.pixel(0, 0)[3] == 0);
+  CHECK(image.pixel(255, 191)[3] == 0);
+  CHECK(image.pixel(128, 96)[3] == 255);
+}
+
+TEST_CASE("selection tint, thick lines and cube markers for the viewer", "[render]") {
+  const render::OffscreenContext context;
+  const render::Renderer renderer;
+  const Mesh grid = build_mesh(test::grid(2, 1));
+  render::MeshBuffers buffers(render::build_display_data(grid));
+  const render::Framebuffer framebuffer(160, 120);
+  framebuffer.bind();
+  render::Camera camera;
+  camera.set_view(0, 0);
+  camera.fit(grid.positions(), 160.0 / 120.0);
+  const auto frame = render::Renderer::Frame::of(camera, {0, 0}, {160, 120});
+  const render::DisplaySettings settings;
+  auto draw = [&] {
+    renderer.begin(frame, settings.background);
+    renderer.draw_mesh(buffers, frame, settings);
+    return framebuffer.read(false);
+  };
+  const render::Image plain = draw();
+  const Index selected[] = {0};  // the left square
+  buffers.set_selected_faces(selected);
+  const render::Image tinted = draw();
+  int left = 0, right = 0;
+  for (int y = 0; y < 120; ++y)
+    for (int x = 0; x < 160; ++x) (x < 80 ? left : right) += plain.pixel(x, y)[1] != tinted.pixel(x, y)[1];
+  CHECK(left > 2000);
+  CHECK(right == 0);
+  CHECK_THROWS(buffers.set_selected_faces(std::vector<Index>{7}));
+
+  render::LineSet line;
+  const glm::vec3 points[] = {{0.0f, 0.5f, 0.0f}, {2.0f, 0.5f, 0.0f}};
+  line.set_polyline(points, false);
+  render::CubeSet cubes;
+  const render::CubeMarker marker{{1.0f, 0.5f, 0.0f}, 0.1f, {0.0f, 0.0f, 1.0f}};
+  cubes.set({&marker, 1});
+  renderer.begin(frame, settings.background);
+  renderer.draw_mesh(buffers, frame, settings);
+  renderer.draw_lines(line, frame, {0.0f, 1.0f, 0.0f, 1.0f}, 6.0f);
+  renderer.draw_cubes(cubes, frame);
+  const render::Image overlays = framebuffer.read(false);
+  int green_rows = 0;
+  for (int y = 0; y < 120; ++y) green_rows += overlays.pixel(20, y)[1] == 255 && overlays.pixel(20, y)[0] == 0;
+  CHECK(green_rows >= 5);
+  CHECK(green_rows <= 8);
+  const std::uint8_t* middle = overlays.pixel(80, 60);
+  CHECK(middle[2] > middle[0] + 60);  // the blue cube sits on top of the line
+}
