@@ -64,7 +64,8 @@ Stage parse_stage(const std::string& name) {
       {"merged", "merging"}, {"subdivided", "subdivision"}, {"offset", "offsetting"}};
   if (name == "scene") return Stage::scene;
   for (const auto& [stage, feature] : pending)
-    if (name == stage) throw UsageError("--stage " + name + ": " + feature + " is not built yet (available: scene)");
+    if (name == stage)
+      throw UsageError("--stage " + name + ": " + feature + " is not built yet (available: scene)");
   throw UsageError("--stage expects scene, merged, subdivided or offset, found '" + name + "'");
 }
 

@@ -37,7 +37,8 @@ render::SnapshotOptions snapshot_options(const Arguments& args) {
   render::ViewAngle view;
   if (const auto text = args.value("--view")) {
     const auto [az, el] = parse_pair("--view", *text, ',', "AZ,EL in degrees (e.g. 30,25)");
-    if (el < -90 || el > 90) throw UsageError("--view elevation must be between -90 and 90, found '" + *text + "'");
+    if (el < -90 || el > 90)
+      throw UsageError("--view elevation must be between -90 and 90, found '" + *text + "'");
     view = {az, el};
   }
   if (const auto text = args.value("--target")) {
@@ -50,7 +51,8 @@ render::SnapshotOptions snapshot_options(const Arguments& args) {
   }
   if (args.has("--distance")) {
     const double d = args.double_value("--distance", 0.0);
-    if (!(d > 0.0)) throw UsageError("--distance must be positive, found '" + *args.value("--distance") + "'");
+    if (!(d > 0.0))
+      throw UsageError("--distance must be positive, found '" + *args.value("--distance") + "'");
     options.distance = d;
   }
   if (args.has("--fit") && (options.target || options.distance))
@@ -105,9 +107,10 @@ int render_command(const std::vector<std::string>& args) {
                    specs);
   parsed.parse(args);
   if (parsed.has("--help")) {
-    std::cout << "Draws the result headless (no display, no GPU needed) with the viewer's renderer and writes "
-                 "a PNG.\nFront faces and back faces have their own colours: a one-sided surface shows both.\n\n"
-              << parsed.help();
+    std::cout
+        << "Draws the result headless (no display, no GPU needed) with the viewer's renderer and writes "
+           "a PNG.\nFront faces and back faces have their own colours: a one-sided surface shows both.\n\n"
+        << parsed.help();
     return 0;
   }
   const auto out = parsed.value("--output");
@@ -117,7 +120,8 @@ int render_command(const std::vector<std::string>& args) {
   const render::SnapshotOptions options = snapshot_options(parsed);
   render::Backend backend = render::Backend::automatic;
   if (const auto name = parsed.value("--backend")) {
-    if (*name != "egl" && *name != "osmesa") throw UsageError("--backend expects egl or osmesa, found '" + *name + "'");
+    if (*name != "egl" && *name != "osmesa")
+      throw UsageError("--backend expects egl or osmesa, found '" + *name + "'");
     backend = render::parse_backend(*name);
   }
   const Stage stage = parsed.has("--stage") ? parse_stage(*parsed.value("--stage")) : Stage::offset;
@@ -133,8 +137,7 @@ int render_command(const std::vector<std::string>& args) {
   const auto context_start = Clock::now();
   const render::OffscreenContext context(backend);
   const double context_ms = milliseconds(context_start);
-  if (verbose)
-    std::cerr << "nome: " << context.platform() << ": " << context.description() << "\n";
+  if (verbose) std::cerr << "nome: " << context.platform() << ": " << context.description() << "\n";
   const auto draw_start = Clock::now();
   const render::Image image = render::render_snapshot(mesh, options);
   const double draw_ms = milliseconds(draw_start);
@@ -147,8 +150,8 @@ int render_command(const std::vector<std::string>& args) {
                   context_ms, draw_ms, milliseconds(write_start));
     std::cerr << figures;
   }
-  std::cerr << "nome: wrote " << *out << " (" << image.width << "x" << image.height << ", " << mesh.num_faces()
-            << " faces, " << context.platform() << ")\n";
+  std::cerr << "nome: wrote " << *out << " (" << image.width << "x" << image.height << ", "
+            << mesh.num_faces() << " faces, " << context.platform() << ")\n";
   return 0;
 }
 

@@ -19,7 +19,9 @@ struct BoundingBox {
   }
   bool is_empty() const { return !(min.x <= max.x); }
   glm::dvec3 center() const { return 0.5 * (min + max); }
-  glm::dvec3 corner(int i) const { return {i & 1 ? max.x : min.x, i & 2 ? max.y : min.y, i & 4 ? max.z : min.z}; }
+  glm::dvec3 corner(int i) const {
+    return {i & 1 ? max.x : min.x, i & 2 ? max.y : min.y, i & 4 ? max.z : min.z};
+  }
 
   static BoundingBox of(std::span<const glm::dvec3> points) {
     BoundingBox box;

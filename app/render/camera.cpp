@@ -94,9 +94,8 @@ glm::mat4 Camera::projection_matrix(double aspect) const {
   return glm::mat4(glm::perspective(radians(fov_y_degrees), aspect, near_plane, far_plane));
 }
 
-Ray Camera::ray(const glm::dvec2& ndc, double aspect) const {
-  const double t = std::tan(radians(fov_y_degrees) / 2.0);
-  return {eye(), glm::normalize(orientation * glm::dvec3(ndc.x * t * aspect, ndc.y * t, -1.0))};
+ScreenProjection Camera::screen_projection(const glm::dvec2& viewport) const {
+  return {glm::dmat4(view_matrix()), glm::dmat4(projection_matrix(viewport.x / viewport.y)), viewport};
 }
 
 }  // namespace nome::render

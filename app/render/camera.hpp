@@ -7,14 +7,10 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "nome/query/screen_projection.hpp"
 #include "render/bounding_box.hpp"
 
 namespace nome::render {
-
-struct Ray {
-  glm::dvec3 origin;
-  glm::dvec3 direction;  // unit length
-};
 
 // An orbit camera shared by `nome render` and the viewer: the eye looks at `target` from `distance`
 // away along the camera's +z axis; `orientation` turns camera axes into world axes. The world is
@@ -42,8 +38,8 @@ class Camera {
   glm::dvec3 eye() const { return target + orientation * glm::dvec3(0.0, 0.0, distance); }
   glm::mat4 view_matrix() const;
   glm::mat4 projection_matrix(double aspect) const;
-  // The ray from the eye through a screen position (for picking).
-  Ray ray(const glm::dvec2& ndc, double aspect) const;
+  // The matrices and viewport (window pixels) the kernel's picking casts rays with.
+  ScreenProjection screen_projection(const glm::dvec2& viewport) const;
 
  private:
   void depth_range(double& near_plane, double& far_plane) const;

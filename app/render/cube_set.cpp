@@ -42,15 +42,19 @@ CubeSet::CubeSet() {
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
   glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                        reinterpret_cast<void*>(3 * sizeof(float)));
   glBindBuffer(GL_ARRAY_BUFFER, instances_);
   const auto stride = GLsizei(sizeof(CubeMarker));
   glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(CubeMarker, center)));
+  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<void*>(offsetof(CubeMarker, center)));
   glEnableVertexAttribArray(3);
-  glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(CubeMarker, half_size)));
+  glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<void*>(offsetof(CubeMarker, half_size)));
   glEnableVertexAttribArray(4);
-  glVertexAttribPointer(4, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(CubeMarker, color)));
+  glVertexAttribPointer(4, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<void*>(offsetof(CubeMarker, color)));
   for (GLuint a = 2; a <= 4; ++a) glVertexAttribDivisor(a, 1);
   glBindVertexArray(0);
 }

@@ -21,8 +21,8 @@ struct DisplaySettings {
   bool show_borders = false;
   bool use_face_colors = true;
 
-  glm::vec3 front_color{0.80f, 0.62f, 0.25f};     // warm gold
-  glm::vec3 back_color{0.25f, 0.45f, 0.80f};      // blue: the other side
+  glm::vec3 front_color{0.80f, 0.62f, 0.25f};  // warm gold
+  glm::vec3 back_color{0.25f, 0.45f, 0.80f};   // blue: the other side
   glm::vec3 selection_color{0.95f, 0.25f, 0.20f};
   glm::vec4 wire_color{0.08f, 0.08f, 0.10f, 1.0f};
   glm::vec4 mobius_color{0.85f, 0.10f, 0.55f, 1.0f};

@@ -11,7 +11,8 @@ namespace {
 void require_complete(const char* what) {
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw Error(std::string("Framebuffer: ") + what + " is incomplete (status " + std::to_string(status) + ")");
+    throw Error(std::string("Framebuffer: ") + what + " is incomplete (status " + std::to_string(status) +
+                ")");
 }
 
 }  // namespace

@@ -15,7 +15,8 @@ void write_png(const std::filesystem::path& path, const Image& image) {
     auto append = [](void* stream, void* data, int size) {
       static_cast<std::ostream*>(stream)->write(static_cast<const char*>(data), size);
     };
-    if (!stbi_write_png_to_func(append, &out, image.width, image.height, 4, image.rgba.data(), image.width * 4))
+    if (!stbi_write_png_to_func(append, &out, image.width, image.height, 4, image.rgba.data(),
+                                image.width * 4))
       throw IoError(path.string() + ": PNG encoding failed");
   });
 }

@@ -27,7 +27,8 @@ LineSet::~LineSet() {
 void LineSet::set(std::span<const glm::vec3> points, std::span<const std::uint32_t> segments) {
   if (segments.size() % 2 != 0) throw InvalidInputError("LineSet::set: an odd number of segment ends");
   for (std::uint32_t i : segments)
-    if (i >= points.size()) throw InvalidInputError("LineSet::set: segment end " + std::to_string(i) + " past the points");
+    if (i >= points.size())
+      throw InvalidInputError("LineSet::set: segment end " + std::to_string(i) + " past the points");
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, points_);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(points.size_bytes()), points.data(), GL_DYNAMIC_DRAW);

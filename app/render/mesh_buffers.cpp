@@ -10,7 +10,8 @@ namespace {
 template <typename T>
 void upload(GLenum target, GLuint buffer, const std::vector<T>& data) {
   glBindBuffer(target, buffer);
-  glBufferData(target, GLsizeiptr(data.size() * sizeof(T)), data.empty() ? nullptr : data.data(), GL_STATIC_DRAW);
+  glBufferData(target, GLsizeiptr(data.size() * sizeof(T)), data.empty() ? nullptr : data.data(),
+               GL_STATIC_DRAW);
 }
 
 void float_attribute(GLuint location, GLuint buffer, GLint size) {
@@ -78,8 +79,8 @@ MeshBuffers::~MeshBuffers() {
 
 void MeshBuffers::set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) {
   if (colors.size() != num_faces_)
-    throw InvalidInputError("MeshBuffers::set_face_colors: " + std::to_string(colors.size()) + " colours for " +
-                            std::to_string(num_faces_) + " faces");
+    throw InvalidInputError("MeshBuffers::set_face_colors: " + std::to_string(colors.size()) +
+                            " colours for " + std::to_string(num_faces_) + " faces");
   glBindBuffer(GL_TEXTURE_BUFFER, face_color_buffer_);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(colors.size() * 4), colors.data());
 }

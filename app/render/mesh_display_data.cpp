@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "nome/ops/normals.hpp"
-#include "nome/ops/triangulate.hpp"
+#include "nome/query/display_triangles.hpp"
 
 namespace nome::render {
 namespace {
@@ -33,7 +33,8 @@ MeshDisplayData build_display_data(const Mesh& mesh) {
     data.smooth_normals[c] = glm::vec3(smooth == Vec3(0.0) ? normals.faces[f] : smooth);
     data.corner_faces[c] = f;
   }
-  const Triangulation triangulation = triangulate(mesh);
+  // The same triangles the viewer picks on.
+  const DisplayTriangles triangulation = display_triangles(mesh);
   data.triangles.reserve(triangulation.corners.size() * 3);
   for (const auto& t : triangulation.corners) data.triangles.insert(data.triangles.end(), t.begin(), t.end());
 

@@ -5,14 +5,14 @@
 namespace nome::render {
 
 struct Renderer::Programs {
-  ShaderProgram mesh{"mesh",
-                     {{GL_VERTEX_SHADER, {"mesh.vert"}}, {GL_FRAGMENT_SHADER, {"lighting.glsl", "mesh.frag"}}}};
+  ShaderProgram mesh{
+      "mesh", {{GL_VERTEX_SHADER, {"mesh.vert"}}, {GL_FRAGMENT_SHADER, {"lighting.glsl", "mesh.frag"}}}};
   ShaderProgram lines{"lines",
                       {{GL_VERTEX_SHADER, {"lines.vert"}},
                        {GL_GEOMETRY_SHADER, {"lines.geom"}},
                        {GL_FRAGMENT_SHADER, {"lines.frag"}}}};
-  ShaderProgram cubes{"cubes",
-                      {{GL_VERTEX_SHADER, {"cubes.vert"}}, {GL_FRAGMENT_SHADER, {"lighting.glsl", "cubes.frag"}}}};
+  ShaderProgram cubes{
+      "cubes", {{GL_VERTEX_SHADER, {"cubes.vert"}}, {GL_FRAGMENT_SHADER, {"lighting.glsl", "cubes.frag"}}}};
 };
 
 Renderer::Frame Renderer::Frame::of(const Camera& camera, glm::ivec2 origin, glm::ivec2 size) {
@@ -82,9 +82,11 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
   if (settings.show_wireframe)
     draw_segments(mesh.edge_vao(), mesh.all_edges(), frame, settings.wire_color, settings.wire_width);
   if (settings.show_borders)
-    draw_segments(mesh.edge_vao(), mesh.border_edges(), frame, settings.border_color, settings.highlight_width);
+    draw_segments(mesh.edge_vao(), mesh.border_edges(), frame, settings.border_color,
+                  settings.highlight_width);
   if (settings.show_mobius_edges)
-    draw_segments(mesh.edge_vao(), mesh.mobius_edges(), frame, settings.mobius_color, settings.highlight_width);
+    draw_segments(mesh.edge_vao(), mesh.mobius_edges(), frame, settings.mobius_color,
+                  settings.highlight_width);
   glBindVertexArray(0);
 }
 
@@ -112,7 +114,8 @@ void Renderer::draw_segments(GLuint vao, SegmentRange range, const Frame& frame,
   if (is_translucent) glDisable(GL_BLEND);
 }
 
-void Renderer::draw_lines(const LineSet& lines, const Frame& frame, const glm::vec4& color, float width) const {
+void Renderer::draw_lines(const LineSet& lines, const Frame& frame, const glm::vec4& color,
+                          float width) const {
   draw_segments(lines.vao(), {0, std::uint32_t(lines.index_count() / 2)}, frame, color, width);
 }
 

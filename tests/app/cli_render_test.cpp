@@ -18,8 +18,8 @@ std::string asset(const std::string& name) {
 
 TEST_CASE("nome render writes a PNG of the requested size and reports the backend", "[app]") {
   const std::string dir = test::scratch_dir("cli_render");
-  const test::CommandResult r =
-      test::run_nome("render " + asset("mobius_band.obj") + " -o " + dir + "/band.png --size 320x200 --verbose");
+  const test::CommandResult r = test::run_nome("render " + asset("mobius_band.obj") + " -o " + dir +
+                                               "/band.png --size 320x200 --verbose");
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK(r.err.find("EGL") != std::string::npos);
@@ -45,14 +45,15 @@ TEST_CASE("nome render --backend osmesa", "[app]") {
 
 TEST_CASE("nome render --views 4 makes a contact sheet of four framed tiles", "[app]") {
   const std::string dir = test::scratch_dir("cli_render_views");
-  REQUIRE(test::run_nome("render " + asset("torus.obj") + " -o " + dir + "/s.png --size 200x160 --views 4").status ==
-          0);
+  REQUIRE(test::run_nome("render " + asset("torus.obj") + " -o " + dir + "/s.png --size 200x160 --views 4")
+              .status == 0);
   const render::Image sheet = render::read_png(dir + "/s.png");
   // Each tile's centre column holds surface, and the cross between the tiles is background.
   for (int tile = 0; tile < 4; ++tile) {
     const int x0 = (tile % 2) * 100, y0 = (tile / 2) * 80;
     int surface = 0;
-    for (int y = y0; y < y0 + 80; ++y) surface += sheet.pixel(x0 + 50, y)[0] > sheet.pixel(x0 + 50, y)[2] + 30;
+    for (int y = y0; y < y0 + 80; ++y)
+      surface += sheet.pixel(x0 + 50, y)[0] > sheet.pixel(x0 + 50, y)[2] + 30;
     CHECK(surface > 5);
   }
   for (int y = 0; y < 160; ++y) CHECK(sheet.pixel(100, y)[0] > 245);
@@ -61,7 +62,7 @@ TEST_CASE("nome render --views 4 makes a contact sheet of four framed tiles", "[
 TEST_CASE("nome render colours and background", "[app]") {
   const std::string dir = test::scratch_dir("cli_render_colors");
   REQUIRE(test::run_nome("render " + asset("cube.obj") + " -o " + dir +
-                         "/c.png --size 64x48 --background #102030 --color 0,1,0")
+                         "/c.png --size 64x48 --background '#102030' --color 0,1,0")
               .status == 0);
   const render::Image image = render::read_png(dir + "/c.png");
   CHECK(int(image.pixel(0, 0)[0]) == 0x10);

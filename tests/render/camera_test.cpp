@@ -7,13 +7,12 @@
 
 using namespace nome;
 using render::Camera;
-using render::Ray;
 
 namespace {
 
 glm::dvec3 project(const Camera& camera, const glm::dvec3& p, double aspect) {
-  const glm::dvec4 clip = glm::dmat4(camera.projection_matrix(aspect)) * glm::dmat4(camera.view_matrix()) *
-                          glm::dvec4(p, 1.0);
+  const glm::dvec4 clip =
+      glm::dmat4(camera.projection_matrix(aspect)) * glm::dmat4(camera.view_matrix()) * glm::dvec4(p, 1.0);
   return glm::dvec3(clip) / clip.w;
 }
 
@@ -59,17 +58,19 @@ TEST_CASE("fit frames every point with the margin to spare", "[render]") {
   }
 }
 
-TEST_CASE("a ray through a screen point projects back onto that point", "[render]") {
+TEST_CASE("the kernel's pick ray through the picture's centre meets the target", "[render]") {
   Camera camera;
   camera.set_view(30, 25);
   camera.fit(build_mesh(test::cube()).positions(), 1.5);
-  const Ray center = camera.ray({0, 0}, 1.5);
-  const double along = glm::dot(camera.target - center.origin, center.direction);
-  CHECK(near(center.origin + along * center.direction, camera.target, 1e-9));
-  const Ray off = camera.ray({0.5, -0.3}, 1.5);
-  const glm::dvec3 ndc = project(camera, off.origin + 0.9 * camera.distance * off.direction, 1.5);
-  CHECK(ndc.x == Approx(0.5));
-  CHECK(ndc.y == Approx(-0.3));
+  const ScreenProjection screen = camera.screen_projection({300, 200});
+  const nome::Ray ray = ray_through_pixel(screen, {150, 100});
+  const glm::dvec3 direction = glm::normalize(ray.direction);
+  const double along = glm::dot(camera.target - ray.origin, direction);
+  CHECK(near(ray.origin + along * direction, camera.target, 1e-6));
+  const auto pixel = project_to_pixel(screen, camera.target + camera.orientation * glm::dvec3(0.2, 0, 0));
+  REQUIRE(pixel);
+  CHECK(pixel->x > 150.0);  // screen right is camera right
+  CHECK(pixel->y == Approx(100.0));
 }
 
 TEST_CASE("arcball: a drag and its reverse cancel; pan keeps the grabbed point under the mouse", "[render]") {

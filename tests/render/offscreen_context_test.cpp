@@ -1,9 +1,9 @@
 #include <catch2/catch.hpp>
 
 #include "nome/error.hpp"
-#include "render/offscreen_context.hpp"
 #include "render/gl.hpp"
 #include "render/image_diff.hpp"
+#include "render/offscreen_context.hpp"
 #include "render/render_support.hpp"
 #include "support/shapes.hpp"
 

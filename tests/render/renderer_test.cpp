@@ -32,8 +32,8 @@ int count_pixels(const render::Image& image, bool (*keep)(const std::uint8_t*)) 
 TEST_CASE("a one-sided surface shows its back colour; a closed orientable one does not", "[render]") {
   // Whatever the view, a Möbius band shows both sides of its faces; a torus seen from outside only fronts.
   for (auto [az, el] : {std::pair{30.0, 25.0}, {0.0, 0.0}, {120.0, -40.0}}) {
-    const test::SideCounts band = test::count_sides(
-        test::render_small(build_mesh(test::mobius_band(32, 4)), looking_from(az, el)));
+    const test::SideCounts band =
+        test::count_sides(test::render_small(build_mesh(test::mobius_band(32, 4)), looking_from(az, el)));
     CHECK(band.front > 1000);
     CHECK(band.back > 1000);
     const test::SideCounts torus =
@@ -66,7 +66,8 @@ TEST_CASE("the wireframe draws the polygon's edges, not its triangulation's diag
   for (int y = 86; y < 106; ++y)
     for (int x = 118; x < 138; ++x) REQUIRE_FALSE(is_dark(image.pixel(x, y)));
   int runs = 0;
-  for (int x = 1; x < image.width; ++x) runs += is_dark(image.pixel(x, 96)) && !is_dark(image.pixel(x - 1, 96));
+  for (int x = 1; x < image.width; ++x)
+    runs += is_dark(image.pixel(x, 96)) && !is_dark(image.pixel(x - 1, 96));
   CHECK(runs == 2);
   CHECK(count_pixels(image, is_dark) > 4 * 150);
 }
@@ -120,7 +121,8 @@ TEST_CASE("selection tint, thick lines and cube markers for the viewer", "[rende
   renderer.draw_cubes(cubes, frame);
   const render::Image overlays = framebuffer.read(false);
   int green_rows = 0;
-  for (int y = 0; y < 120; ++y) green_rows += overlays.pixel(20, y)[1] == 255 && overlays.pixel(20, y)[0] == 0;
+  for (int y = 0; y < 120; ++y)
+    green_rows += overlays.pixel(20, y)[1] == 255 && overlays.pixel(20, y)[0] == 0;
   CHECK(green_rows >= 5);
   CHECK(green_rows <= 8);
   const std::uint8_t* middle = overlays.pixel(80, 60);

@@ -5,7 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "nome/ops/normals.hpp"
-#include "nome/ops/triangulate.hpp"
+#include "nome/query/display_triangles.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
@@ -21,7 +21,7 @@ Vec3 triangle_area_normal(const Mesh& mesh, const std::array<Index, 3>& t) {
 
 // Every triangle's corners belong to its face, and the triangles of a face add up to the face's own
 // Newell area vector (same orientation, no overlap).
-void check_covers_faces(const Mesh& mesh, const Triangulation& tri) {
+void check_covers_faces(const Mesh& mesh, const DisplayTriangles& tri) {
   std::vector<Vec3> sums(mesh.num_faces(), Vec3(0.0));
   std::vector<Index> counts(mesh.num_faces(), 0);
   for (size_t i = 0; i < tri.corners.size(); ++i) {
@@ -39,10 +39,10 @@ void check_covers_faces(const Mesh& mesh, const Triangulation& tri) {
 
 }  // namespace
 
-TEST_CASE("triangulation of procedural shapes keeps each face's orientation", "[kernel]") {
+TEST_CASE("display triangles of procedural shapes keeps each face's orientation", "[kernel]") {
   for (const PolygonSoup& soup : {test::cube(), test::torus(8, 5), test::mobius_band(16, 4), test::grid(3, 2)}) {
     const Mesh mesh = build_mesh(soup);
-    check_covers_faces(mesh, triangulate(mesh));
+    check_covers_faces(mesh, display_triangles(mesh));
   }
 }
 
@@ -55,7 +55,7 @@ TEST_CASE("a concave face is ear-clipped, never fanned across its notch", "[kern
   for (int rotation = 0; rotation < 6; ++rotation) {
     std::rotate(soup.face_vertices.begin(), soup.face_vertices.begin() + 1, soup.face_vertices.end());
     const Mesh mesh = build_mesh(soup);
-    const Triangulation tri = triangulate(mesh);
+    const DisplayTriangles tri = display_triangles(mesh);
     check_covers_faces(mesh, tri);
     for (const auto& t : tri.corners) {
       // All-positive areas: a triangle over the notch would be clockwise or overlap another.
