@@ -40,7 +40,8 @@ void check_covers_faces(const Mesh& mesh, const DisplayTriangles& tri) {
 }  // namespace
 
 TEST_CASE("display triangles of procedural shapes keeps each face's orientation", "[kernel]") {
-  for (const PolygonSoup& soup : {test::cube(), test::torus(8, 5), test::mobius_band(16, 4), test::grid(3, 2)}) {
+  for (const PolygonSoup& soup :
+       {test::cube(), test::torus(8, 5), test::mobius_band(16, 4), test::grid(3, 2)}) {
     const Mesh mesh = build_mesh(soup);
     check_covers_faces(mesh, display_triangles(mesh));
   }
