@@ -73,7 +73,7 @@ TEST_CASE("the kernel's pick ray through the picture's centre meets the target",
   CHECK(pixel->y == Approx(100.0));
 }
 
-TEST_CASE("arcball: a drag and its reverse cancel; pan keeps the grabbed point under the mouse", "[render]") {
+TEST_CASE("arcball drags cancel when reversed and pan keeps the grabbed point under the mouse", "[render]") {
   Camera camera;
   camera.set_view(30, 25);
   const glm::dquat start = camera.orientation;

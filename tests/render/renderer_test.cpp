@@ -29,7 +29,7 @@ int count_pixels(const render::Image& image, bool (*keep)(const std::uint8_t*)) 
 
 }  // namespace
 
-TEST_CASE("a one-sided surface shows its back colour; a closed orientable one does not", "[render]") {
+TEST_CASE("a one-sided surface shows its back colour and a closed orientable one does not", "[render]") {
   // Whatever the view, a Möbius band shows both sides of its faces; a torus seen from outside only fronts.
   for (auto [az, el] : {std::pair{30.0, 25.0}, {0.0, 0.0}, {120.0, -40.0}}) {
     const test::SideCounts band =
