@@ -49,6 +49,21 @@ std::vector<OptionSpec> input_options() {
 }
 
 Mesh load_input(const Arguments& args) {
+  return load_input(args, Stage::offset);
+}
+
+Stage parse_stage(const std::string& name) {
+  if (name == "scene") return Stage::scene;
+  if (name == "merged") return Stage::merged;
+  const std::pair<const char*, const char*> pending[] = {{"subdivided", "subdivision"},
+                                                         {"offset", "offsetting"}};
+  for (const auto& [stage, feature] : pending)
+    if (name == stage)
+      throw UsageError("--stage " + name + ": " + feature + " is not built yet (available: scene, merged)");
+  throw UsageError("--stage expects scene, merged, subdivided or offset, found '" + name + "'");
+}
+
+Mesh load_input(const Arguments& args, Stage last) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
   PolygonSoup soup;
   std::vector<PolygonSoup> parts;
@@ -56,23 +71,9 @@ Mesh load_input(const Arguments& args) {
     parts.push_back(read_polygons(file));
     append(soup, parts.back());
   }
-  return apply_merge_option(build_naming_the_file(std::move(soup), parts, args.positionals()), args);
-}
-
-Stage parse_stage(const std::string& name) {
-  const std::pair<const char*, const char*> pending[] = {
-      {"merged", "merging"}, {"subdivided", "subdivision"}, {"offset", "offsetting"}};
-  if (name == "scene") return Stage::scene;
-  for (const auto& [stage, feature] : pending)
-    if (name == stage)
-      throw UsageError("--stage " + name + ": " + feature + " is not built yet (available: scene)");
-  throw UsageError("--stage expects scene, merged, subdivided or offset, found '" + name + "'");
-}
-
-Mesh load_input(const Arguments& args, Stage last) {
-  // parse_stage admits only the scene stage until merging, subdivision and offsetting land.
-  if (last != Stage::scene && last != Stage::offset) throw UsageError("this stage is not built yet");
-  return load_input(args);
+  Mesh mesh = build_naming_the_file(std::move(soup), parts, args.positionals());
+  if (last == Stage::scene) return mesh;
+  return apply_merge_option(std::move(mesh), args);
 }
 
 }  // namespace nome::cli

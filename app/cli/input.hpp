@@ -19,7 +19,7 @@ Stage parse_stage(const std::string& name);
 
 // Reads the FILE arguments (several become parts of one mesh) and runs the pipeline the options ask for.
 Mesh load_input(const Arguments& args);
-// The same, stopping after `last`.
+// The same, stopping after `last` (the stages the options do not ask for pass the mesh through).
 Mesh load_input(const Arguments& args, Stage last);
 
 }  // namespace nome::cli

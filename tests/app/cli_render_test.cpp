@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <fstream>
 
 #include "app/cli_support.hpp"
 #include "render/image.hpp"
@@ -91,6 +92,7 @@ TEST_CASE("nome render refuses bad requests and writes nothing", "[app]") {
       {"render " + asset("cube.obj") + out + " --background mauve", 2, "--background expects a colour"},
       {"render " + asset("cube.obj") + out + " --backend vulkan", 2, "--backend expects egl or osmesa"},
       {"render " + asset("cube.obj") + out + " --stage sculpted", 2, "--stage expects scene, merged"},
+      {"render " + asset("cube.obj") + out + " --stage offset", 2, "offsetting is not built yet"},
       {"render " + asset("cube.obj") + out + " --fit --distance 3", 2, "cannot be combined"},
       {"render " + asset("cube.obj") + out + " --distance -1", 2, "--distance must be positive"},
       {"render " + asset("cube.obj") + out + " --target 1,2", 2, "--target expects X,Y,Z"},
@@ -119,4 +121,25 @@ TEST_CASE("nome render --target and --distance replace the fitted framing", "[ap
   CHECK(surface_pixels("") == fitted);
   CHECK(surface_pixels("--distance 40") < fitted / 4);
   CHECK(surface_pixels("--target 30,0,0") == 0);  // looking far beside the torus
+}
+
+TEST_CASE("nome render --stage scene shows the parts before --merge glues them", "[app]") {
+  const std::string dir = test::scratch_dir("cli_render_stage");
+  std::ofstream(dir + "/a.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  std::ofstream(dir + "/b.obj") << "v 1 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\nf 1 2 3 4\n";
+  // Border edges are green: the shared middle edge is a border only before the merge.
+  auto border_pixels_in_middle = [&](const std::string& stage) {
+    const test::CommandResult r =
+        test::run_nome("render " + dir + "/a.obj " + dir + "/b.obj -o " + dir +
+                       "/s.png --size 128x96 --view 0,0 --merge --borders --stage " + stage);
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const render::Image image = render::read_png(dir + "/s.png");
+    int green = 0;
+    for (int y = 20; y < 76; ++y)
+      for (int x = 60; x < 68; ++x) green += image.pixel(x, y)[1] > image.pixel(x, y)[0] + 60;
+    return green;
+  };
+  CHECK(border_pixels_in_middle("scene") > 50);
+  CHECK(border_pixels_in_middle("merged") == 0);
 }
