@@ -4,28 +4,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <random>
-#include <vector>
 
 #include "nome/ops/zipper.hpp"
 #include "support/greedy_zipper.hpp"
 
 using namespace nome;
-
-namespace {
-
-std::vector<Vec3> random_chain(std::mt19937& rng, Index points, double y) {
-  std::uniform_real_distribution<double> step(0.2, 1.5), wobble(-0.3, 0.3);
-  std::vector<Vec3> chain;
-  double x = 0.0;
-  for (Index k = 0; k < points; ++k) {
-    chain.emplace_back(x, y + wobble(rng), wobble(rng));
-    x += step(rng);
-  }
-  return chain;
-}
-
-}  // namespace
 
 int main() {
   std::mt19937 rng{42};
@@ -38,7 +21,7 @@ int main() {
     long exact_triangles = 0, greedy_triangles = 0;
     int cheaper = 0;
     for (int t = 0; t < trials; ++t) {
-      const auto a = random_chain(rng, size(rng), 0.0), b = random_chain(rng, size(rng), 1.0);
+      const auto a = test::random_chain(rng, size(rng), 0.0), b = test::random_chain(rng, size(rng), 1.0);
       const ZipperStrip exact = zipper_strip(a, b, options);
       const test::GreedyStrip greedy = test::greedy_zipper(a, b, options);
       exact_total += exact.cost;
@@ -55,7 +38,7 @@ int main() {
         penalty, trials, greedy_total / exact_total, worst_ratio, cheaper, double(exact_triangles) / trials,
         double(greedy_triangles) / trials);
   }
-  const auto a = random_chain(rng, 2000, 0.0), b = random_chain(rng, 2000, 1.0);
+  const auto a = test::random_chain(rng, 2000, 0.0), b = test::random_chain(rng, 2000, 1.0);
   const auto start = std::chrono::steady_clock::now();
   const ZipperStrip big = zipper_strip(a, b);
   std::printf("zipper: 2000 x 2000 points: %u faces in %.3f s\n", big.num_faces(),

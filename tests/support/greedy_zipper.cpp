@@ -25,4 +25,15 @@ GreedyStrip greedy_zipper(std::span<const Vec3> a, std::span<const Vec3> b, cons
   return strip;
 }
 
+std::vector<Vec3> random_chain(std::mt19937& rng, Index points, double y) {
+  std::uniform_real_distribution<double> step(0.2, 1.5), wobble(-0.3, 0.3);
+  std::vector<Vec3> chain;
+  double x = 0.0;
+  for (Index k = 0; k < points; ++k) {
+    chain.emplace_back(x, y + wobble(rng), wobble(rng));
+    x += step(rng);
+  }
+  return chain;
+}
+
 }  // namespace nome::test

@@ -13,17 +13,6 @@ using namespace nome;
 
 namespace {
 
-std::vector<Vec3> random_chain(std::mt19937& rng, Index points, double y) {
-  std::uniform_real_distribution<double> step(0.2, 1.5), wobble(-0.3, 0.3);
-  std::vector<Vec3> chain;
-  double x = 0.0;
-  for (Index k = 0; k < points; ++k) {
-    chain.emplace_back(x, y + wobble(rng), wobble(rng));
-    x += step(rng);
-  }
-  return chain;
-}
-
 // An open cylinder: `around` vertices per ring, `rings` rings from z = 0 to z = 1.
 PolygonSoup cylinder(Index around, Index rings) {
   PolygonSoup s;
@@ -85,7 +74,8 @@ TEST_CASE("a larger triangle penalty never gives more triangles", "[kernel]") {
   std::uniform_int_distribution<Index> size(2, 14);
   const double penalties[] = {0.5, 1.0, 1.3, 1.5, 2.0, 4.0};
   for (int trial = 0; trial < 200; ++trial) {
-    const std::vector<Vec3> a = random_chain(rng, size(rng), 0.0), b = random_chain(rng, size(rng), 1.0);
+    const std::vector<Vec3> a = test::random_chain(rng, size(rng), 0.0),
+                            b = test::random_chain(rng, size(rng), 1.0);
     Index previous = std::numeric_limits<Index>::max();
     for (double penalty : penalties) {
       ZipperOptions options;
@@ -102,7 +92,8 @@ TEST_CASE("the exact strip never costs more than the report's greedy strip", "[k
   std::uniform_int_distribution<Index> size(2, 20);
   int cheaper = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const std::vector<Vec3> a = random_chain(rng, size(rng), 0.0), b = random_chain(rng, size(rng), 1.0);
+    const std::vector<Vec3> a = test::random_chain(rng, size(rng), 0.0),
+                            b = test::random_chain(rng, size(rng), 1.0);
     const ZipperOptions options;
     const double exact = zipper_strip(a, b, options).cost;
     const double greedy = test::greedy_zipper(a, b, options).cost;
@@ -116,7 +107,8 @@ TEST_CASE("the strip never puts three faces on an edge and uses every chain edge
   std::mt19937 rng{42};
   std::uniform_int_distribution<Index> size(2, 12);
   for (int trial = 0; trial < 100; ++trial) {
-    const std::vector<Vec3> a = random_chain(rng, size(rng), 0.0), b = random_chain(rng, size(rng), 1.0);
+    const std::vector<Vec3> a = test::random_chain(rng, size(rng), 0.0),
+                            b = test::random_chain(rng, size(rng), 1.0);
     const ZipperStrip strip = zipper_strip(a, b);
     std::map<std::pair<Index, Index>, int> uses;
     for (Index f = 0; f < strip.num_faces(); ++f) {
