@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <span>
+#include <unordered_set>
 
 #include "nome/error.hpp"
 
@@ -257,14 +258,13 @@ std::vector<UnresolvedEdit> Document::unresolved() const {
 }
 
 GluedFaces Document::scene_mesh() const {
+  const std::unordered_set<std::string> deleted(deleted_.begin(), deleted_.end());
   PolygonSoup soup;
   soup.positions = scene_.positions;
   soup.vertex_names = scene_.vertex_names;
   soup.sharp_edges = scene_.sharp_edges;
   for (Index f = 0; f < scene_.num_faces(); ++f) {
-    if (f < scene_.face_names.size() &&
-        std::find(deleted_.begin(), deleted_.end(), scene_.face_names[f]) != deleted_.end())
-      continue;
+    if (f < scene_.face_names.size() && deleted.count(scene_.face_names[f])) continue;
     soup.add_face(std::span(scene_.face_vertices)
                       .subspan(scene_.face_offsets[f], scene_.face_offsets[f + 1] - scene_.face_offsets[f]));
     if (!scene_.face_names.empty()) soup.face_names.push_back(scene_.face_names[f]);
