@@ -2,6 +2,7 @@
 
 #include <numeric>
 
+#include "nome/edit/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
 #include "support/shapes.hpp"
@@ -214,4 +215,32 @@ TEST_CASE("names, colours and sharp marks survive the merge", "[kernel]") {
   Index sharp = 0;
   for (const Edge& e : m.edges()) sharp += e.is_sharp ? 1 : 0;
   CHECK(sharp == 1);
+}
+
+TEST_CASE("merging random exploded patches agrees with joining their faces by vertex id", "[kernel]") {
+  // Two independent routes to the same surface: glue_faces joins faces across shared vertex ids,
+  // merge_boundaries finds the same edges by position. Random face subsets make pinched vertices,
+  // slits and holes, which both must leave apart.
+  std::mt19937 rng{42};
+  const PolygonSoup shapes[] = {test::torus(10, 6), test::mobius_band(14, 3), test::grid(7, 6)};
+  for (int trial = 0; trial < 30; ++trial) {
+    const PolygonSoup& shape = shapes[trial % 3];
+    std::bernoulli_distribution keep(0.7);
+    PolygonSoup subset;
+    subset.positions = shape.positions;
+    for (Index f = 0; f < shape.num_faces(); ++f)
+      if (keep(rng))
+        subset.add_face(
+            std::span(shape.face_vertices)
+                .subspan(shape.face_offsets[f], shape.face_offsets[f + 1] - shape.face_offsets[f]));
+    const PolygonSoup oriented = test::reverse_random_faces(subset, 0.3, rng);
+    std::vector<Index> own_part(oriented.num_faces());
+    std::iota(own_part.begin(), own_part.end(), 0);
+    const MergeResult merged = merge_meshes(build_parts(test::split_faces(oriented, own_part)));
+    const TopologyReport want = topology_report(glue_faces(oriented).mesh);
+    const TopologyReport got = topology_report(merged.mesh);
+    check_same_topology(got, want);
+    CHECK(got.mobius_edges == want.mobius_edges);
+    CHECK(merged.skipped.empty());
+  }
 }
