@@ -86,12 +86,12 @@ references: test-build
 gallery: release
 	@rm -rf docs/gallery && mkdir -p docs/gallery
 	@{ echo "# Gallery"; echo; \
-	   echo "Every file in assets/, drawn by \`make gallery\` (\`nome render FILE --size $(GALLERY_SIZE)\`):"; \
+	   echo "Every file in assets/, drawn by \`make gallery\` (\`nome render FILE --wire --size $(GALLERY_SIZE)\`):"; \
 	   echo "gold is the front of a face, blue its back, so a one-sided surface shows both colours."; \
 	   echo; } > docs/gallery.md
 	@for f in $$(git ls-files assets | sort); do \
 	  name=$$(basename $$f | sed 's/\./_/g'); \
-	  $(RELEASE)/app/nome render $$f -o docs/gallery/$$name.png --size $(GALLERY_SIZE) || exit 1; \
+	  $(RELEASE)/app/nome render $$f -o docs/gallery/$$name.png --wire --size $(GALLERY_SIZE) || exit 1; \
 	  { echo "## $$(basename $$f)"; echo; echo '```'; $(RELEASE)/app/nome info $$f | head -2; echo '```'; \
 	    echo; echo "![$$(basename $$f)](gallery/$$name.png)"; echo; } >> docs/gallery.md; \
 	done

@@ -30,4 +30,7 @@ void main() {
   if (!gl_FrontFacing && different_back_color) base = back_color;
   if ((texelFetch(face_flags, int(face_id)).r & 1u) != 0u) base = mix(base, selection_color, 0.65);
   fragment = vec4(shade(base, n, view_position), opacity);
+  // Back faces lose depth ties: along a silhouette the front and back triangles meet at equal depth,
+  // and a back-colour fringe there would suggest a one-sided surface where there is none.
+  gl_FragDepth = gl_FragCoord.z + (gl_FrontFacing ? 0.0 : 2.0 * fwidth(gl_FragCoord.z) + 1e-6);
 }

@@ -3,6 +3,11 @@
 #include <cstddef>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
+#include "nome/error.hpp"
+#include "render/bounding_box.hpp"
+
 namespace nome::render {
 namespace {
 
@@ -30,6 +35,31 @@ std::vector<float> unit_cube() {
 }
 
 }  // namespace
+
+std::vector<CubeMarker> vertex_markers(const Mesh& mesh, std::span<const Index> vertices,
+                                       const glm::vec3& color) {
+  constexpr double fraction_of_edge = 0.12;
+  std::vector<CubeMarker> markers;
+  markers.reserve(vertices.size());
+  for (Index v : vertices) {
+    if (v >= mesh.num_vertices())
+      throw InvalidInputError("vertex_markers: vertex " + std::to_string(v) + " of " +
+                              std::to_string(mesh.num_vertices()));
+    double length = 0.0;
+    const auto edges = mesh.vertex_edges(v);
+    for (Index e : edges)
+      length += glm::length(mesh.position(mesh.edge(e).other_vertex(v)) - mesh.position(v));
+    // An isolated vertex has no edges: fall back to a fraction of the mesh's size.
+    if (edges.empty()) {
+      BoundingBox box = BoundingBox::of(mesh.positions());
+      length = box.is_empty() ? 1.0 : std::max(glm::length(box.max - box.min) * 0.05, 1e-9);
+    } else {
+      length /= double(edges.size());
+    }
+    markers.push_back({glm::vec3(mesh.position(v)), float(fraction_of_edge * length), color});
+  }
+  return markers;
+}
 
 CubeSet::CubeSet() {
   glGenVertexArrays(1, &vao_);

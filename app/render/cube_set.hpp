@@ -1,9 +1,11 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "nome/mesh/mesh.hpp"
 #include "render/gl.hpp"
 
 namespace nome::render {
@@ -14,6 +16,11 @@ struct CubeMarker {
   float half_size;
   glm::vec3 color;
 };
+
+// Markers for mesh vertices, each cube sized by the vertex's local edge length (a fraction of the mean
+// length of its edges), so it stays visible and never swallows its neighbours.
+std::vector<CubeMarker> vertex_markers(const Mesh& mesh, std::span<const Index> vertices,
+                                       const glm::vec3& color);
 
 // Cube markers on the GPU, drawn instanced by Renderer::draw_cubes. Needs a current context.
 class CubeSet {

@@ -128,3 +128,19 @@ TEST_CASE("selection tint, thick lines and cube markers for the viewer", "[rende
   const std::uint8_t* middle = overlays.pixel(80, 60);
   CHECK(middle[2] > middle[0] + 60);  // the blue cube sits on top of the line
 }
+
+TEST_CASE("vertex markers are sized by the local edge length", "[render]") {
+  const Mesh small = build_mesh(test::grid(2, 2));
+  PolygonSoup big_soup = test::grid(2, 2);
+  for (Vec3& p : big_soup.positions) p *= 10.0;
+  const Mesh big = build_mesh(big_soup);
+  const Index corner_and_centre[] = {0, 4};
+  const auto a = render::vertex_markers(small, corner_and_centre, {1, 0, 0});
+  const auto b = render::vertex_markers(big, corner_and_centre, {1, 0, 0});
+  REQUIRE(a.size() == 2);
+  CHECK(a[1].center == glm::vec3(1, 1, 0));
+  CHECK(a[0].half_size > 0.05f);
+  CHECK(a[0].half_size < 0.5f);
+  CHECK(b[0].half_size == Approx(10 * a[0].half_size));
+  CHECK_THROWS(render::vertex_markers(small, std::vector<Index>{99}, {1, 0, 0}));
+}
