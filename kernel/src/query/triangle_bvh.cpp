@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <thread>
 #include <utility>
 
 namespace nome {
@@ -69,6 +70,129 @@ inline bool ray_hits_box(const Vec3& lower, const Vec3& upper, const Vec3& origi
 constexpr Index max_sah_depth = 64;
 constexpr int traversal_stack_size = 128;
 
+// One node to build: its triangles items[begin, end), bounds, and centroid range (from the parent's
+// bins, so that every level costs one binning pass and one partition over its triangles).
+struct BuildTask {
+  Index node, begin, end, depth;
+  Box bounds, centroid_bounds;
+};
+
+struct BinScratch {
+  explicit BinScratch(Index bins)
+      : bins(std::max<Index>(2, bins)), boxes(this->bins), left(this->bins), right(this->bins), counts(this->bins) {}
+  Index bins;
+  std::vector<Box> boxes, left, right;
+  std::vector<Index> counts;
+};
+
+// Splits a task into two children (binned SAH, Wald 2007, along the axis of largest centroid extent;
+// median split when SAH finds nothing or the tree is already deep); false when it is a leaf.
+bool split_task(std::vector<BuildItem>& items, const BuildTask& task, const BvhOptions& options,
+                BinScratch& scratch, BuildTask children[2]) {
+  const Index count = task.end - task.begin;
+  if (count <= options.max_leaf_size) return false;
+  const glm::vec3 extent = task.centroid_bounds.upper - task.centroid_bounds.lower;
+  int axis = 0;
+  if (extent.y > extent[axis]) axis = 1;
+  if (extent.z > extent[axis]) axis = 2;
+  Index mid = task.begin + count / 2;
+  Box child_bounds[2], child_centroids[2];
+  bool is_split = false;
+  const Index bins = scratch.bins;
+  if (extent[axis] > 0.0f && task.depth < max_sah_depth) {
+    const float scale = float(bins) / extent[axis];
+    const float origin = task.centroid_bounds.lower[axis];
+    auto bin_of = [&](const BuildItem& it) {
+      const float x = (it.centroid()[axis] - origin) * scale;
+      return x >= 0.0f ? std::min<Index>(bins - 1, Index(std::min(x, float(bins)))) : Index{0};
+    };
+    std::fill(scratch.boxes.begin(), scratch.boxes.end(), Box{});
+    std::fill(scratch.counts.begin(), scratch.counts.end(), 0);
+    for (Index i = task.begin; i < task.end; ++i) {
+      const Index b = bin_of(items[i]);
+      scratch.boxes[b].grow(items[i].box);
+      ++scratch.counts[b];
+    }
+    Box right, left;
+    for (Index b = bins - 1; b > 0; --b) {
+      right.grow(scratch.boxes[b]);
+      scratch.right[b] = right;
+    }
+    Index left_count = 0, best_split = 0;
+    float best_cost = std::numeric_limits<float>::infinity();
+    for (Index b = 0; b + 1 < bins; ++b) {
+      left.grow(scratch.boxes[b]);
+      scratch.left[b] = left;
+      left_count += scratch.counts[b];
+      const float cost =
+          left.half_area() * float(left_count) + scratch.right[b + 1].half_area() * float(count - left_count);
+      if (left_count > 0 && left_count < count && cost < best_cost) {
+        best_cost = cost;
+        best_split = b + 1;
+      }
+    }
+    if (best_split > 0) {
+      const auto split = std::partition(items.begin() + task.begin, items.begin() + task.end,
+                                        [&](const BuildItem& it) { return bin_of(it) < best_split; });
+      mid = Index(split - items.begin());
+      child_bounds[0] = scratch.left[best_split - 1];
+      child_bounds[1] = scratch.right[best_split];
+      // The children's centroid ranges: the parent's, cut at the split plane. A centroid rounded
+      // across the plane only lands in an end bin of the child: binning stays a heuristic, while node
+      // boxes are exact.
+      const float plane = origin + float(best_split) / scale;
+      child_centroids[0] = child_centroids[1] = task.centroid_bounds;
+      child_centroids[0].upper[axis] = std::min(plane, task.centroid_bounds.upper[axis]);
+      child_centroids[1].lower[axis] = std::max(plane, task.centroid_bounds.lower[axis]);
+      is_split = true;
+    }
+  }
+  if (!is_split) {
+    std::nth_element(items.begin() + task.begin, items.begin() + mid, items.begin() + task.end,
+                     [&](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
+    for (Index i = task.begin; i < task.end; ++i) {
+      const int side = i < mid ? 0 : 1;
+      child_bounds[side].grow(items[i].box);
+      child_centroids[side].grow(items[i].centroid());
+    }
+  }
+  children[0] = {no_index, task.begin, mid, task.depth + 1, child_bounds[0], child_centroids[0]};
+  children[1] = {no_index, mid, task.end, task.depth + 1, child_bounds[1], child_centroids[1]};
+  return true;
+}
+
+// Builds the subtree of `root` into `nodes`, root first; a node's children are adjacent.
+void build_subtree(std::vector<BuildItem>& items, BuildTask root, const BvhOptions& options,
+                   std::vector<BvhNode>& nodes) {
+  BinScratch scratch(options.sah_bins);
+  nodes.reserve(2 * ((root.end - root.begin) / std::max<Index>(1, options.max_leaf_size)) + 1);
+  nodes.push_back(BvhNode{});
+  root.node = 0;
+  std::vector<BuildTask> stack{root};
+  BuildTask children[2];
+  while (!stack.empty()) {
+    const BuildTask task = stack.back();
+    stack.pop_back();
+    BvhNode& node = nodes[task.node];
+    node.lower = Vec3(task.bounds.lower);
+    node.upper = Vec3(task.bounds.upper);
+    if (!split_task(items, task, options, scratch, children)) {
+      node.first = task.begin;
+      node.count = task.end - task.begin;
+      continue;
+    }
+    const Index left_child = static_cast<Index>(nodes.size());
+    node.first = left_child;
+    node.count = 0;
+    nodes.push_back(BvhNode{});
+    nodes.push_back(BvhNode{});
+    children[0].node = left_child;
+    children[1].node = left_child + 1;
+    stack.push_back(children[1]);
+    stack.push_back(children[0]);
+  }
+}
+
 bool hit_before(const RayHit& a, const RayHit& b) {
   if (a.depth != b.depth) return a.depth < b.depth;
   if (a.face != b.face) return a.face < b.face;
@@ -115,108 +239,33 @@ TriangleBvh::TriangleBvh(const Mesh& mesh, const BvhOptions& options)
     root_centroids.grow(items[t].centroid());
   }
   if (n == 0) return;
-  nodes_.reserve(2 * (n / std::max<Index>(1, options.max_leaf_size)) + 1);
-  nodes_.push_back(Node{});
-
-  // Each task carries its bounds and centroid range (from the parent's bins), so every level costs
-  // one binning pass and one partition over its triangles.
-  struct Task {
-    Index node, begin, end, depth;
-    Box bounds, centroid_bounds;
-  };
-  std::vector<Task> stack{{0, 0, n, 0, root_bounds, root_centroids}};
-  const Index bins = std::max<Index>(2, options.sah_bins);
-  std::vector<Box> bin_boxes(bins), left_boxes(bins), right_boxes(bins);
-  std::vector<Index> bin_counts(bins);
-  const auto item = [&](Index i) -> BuildItem& { return items[i]; };
-  while (!stack.empty()) {
-    const Task task = stack.back();
-    stack.pop_back();
-    Node& node = nodes_[task.node];
-    node.lower = Vec3(task.bounds.lower);
-    node.upper = Vec3(task.bounds.upper);
-    const Index count = task.end - task.begin;
-    if (count <= options.max_leaf_size) {
-      node.first = task.begin;
-      node.count = count;
-      continue;
-    }
-
-    // Binned SAH (Wald 2007) along the axis of largest centroid extent.
-    const glm::vec3 extent = task.centroid_bounds.upper - task.centroid_bounds.lower;
-    int axis = 0;
-    if (extent.y > extent[axis]) axis = 1;
-    if (extent.z > extent[axis]) axis = 2;
-    Index mid = task.begin + count / 2;
-    Box child_bounds[2], child_centroids[2];
-    bool is_split = false;
-    // Deep chains (skewed SAH splits) fall back to median splits, bounding the traversal stack.
-    if (extent[axis] > 0.0f && task.depth < max_sah_depth) {
-      const float scale = float(bins) / extent[axis];
-      const float origin = task.centroid_bounds.lower[axis];
-      auto bin_of = [&](const BuildItem& it) {
-        const float x = (it.centroid()[axis] - origin) * scale;
-        return x >= 0.0f ? std::min<Index>(bins - 1, Index(std::min(x, float(bins)))) : Index{0};
-      };
-      std::fill(bin_boxes.begin(), bin_boxes.end(), Box{});
-      std::fill(bin_counts.begin(), bin_counts.end(), 0);
-      for (Index i = task.begin; i < task.end; ++i) {
-        const BuildItem& it = item(i);
-        const Index b = bin_of(it);
-        bin_boxes[b].grow(it.box);
-        ++bin_counts[b];
-      }
-      Box right, left;
-      for (Index b = bins - 1; b > 0; --b) {
-        right.grow(bin_boxes[b]);
-        right_boxes[b] = right;
-      }
-      Index left_count = 0, best_split = 0;
-      float best_cost = std::numeric_limits<float>::infinity();
-      for (Index b = 0; b + 1 < bins; ++b) {
-        left.grow(bin_boxes[b]);
-        left_boxes[b] = left;
-        left_count += bin_counts[b];
-        const float cost =
-            left.half_area() * float(left_count) + right_boxes[b + 1].half_area() * float(count - left_count);
-        if (left_count > 0 && left_count < count && cost < best_cost) {
-          best_cost = cost;
-          best_split = b + 1;
-        }
-      }
-      if (best_split > 0) {
-        const auto split = std::partition(items.begin() + task.begin, items.begin() + task.end,
-                                          [&](const BuildItem& it) { return bin_of(it) < best_split; });
-        mid = Index(split - items.begin());
-        child_bounds[0] = left_boxes[best_split - 1];
-        child_bounds[1] = right_boxes[best_split];
-        // The children's centroid ranges: the parent's, cut at the split plane. A centroid rounded
-        // across the plane only lands in an end bin of the child: binning stays a heuristic, while
-        // node boxes are exact.
-        const float plane = origin + float(best_split) / scale;
-        child_centroids[0] = child_centroids[1] = task.centroid_bounds;
-        child_centroids[0].upper[axis] = std::min(plane, task.centroid_bounds.upper[axis]);
-        child_centroids[1].lower[axis] = std::max(plane, task.centroid_bounds.lower[axis]);
-        is_split = true;
-      }
-    }
-    if (!is_split) {
-      std::nth_element(
-          items.begin() + task.begin, items.begin() + mid, items.begin() + task.end,
-          [&](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
-      for (Index i = task.begin; i < task.end; ++i) {
-        const int side = i < mid ? 0 : 1;
-        child_bounds[side].grow(item(i).box);
-        child_centroids[side].grow(item(i).centroid());
-      }
-    }
-    const Index left_child = static_cast<Index>(nodes_.size());
-    nodes_[task.node].first = left_child;
-    nodes_[task.node].count = 0;
-    nodes_.push_back(Node{});
-    nodes_.push_back(Node{});
-    stack.push_back({left_child + 1, mid, task.end, task.depth + 1, child_bounds[1], child_centroids[1]});
-    stack.push_back({left_child, task.begin, mid, task.depth + 1, child_bounds[0], child_centroids[0]});
+  const BuildTask root{0, 0, n, 0, root_bounds, root_centroids};
+  BinScratch scratch(options.sah_bins);
+  BuildTask children[2];
+  // The two halves of a large mesh are built on two threads (the machine we target has two cores).
+  if (n >= options.parallel_build_threshold && split_task(items, root, options, scratch, children)) {
+    std::vector<BvhNode> left, right;
+    std::thread worker([&] { build_subtree(items, children[1], options, right); });
+    build_subtree(items, children[0], options, left);
+    worker.join();
+    // Root, the two subtree roots, then the rest of each subtree; inner nodes' child ids shift.
+    nodes_.reserve(1 + left.size() + right.size());
+    BvhNode top;
+    top.lower = Vec3(root.bounds.lower);
+    top.upper = Vec3(root.bounds.upper);
+    top.first = 1;
+    nodes_.push_back(top);
+    const Index left_shift = 2, right_shift = 2 + Index(left.size()) - 1;
+    auto shifted = [](BvhNode node, Index shift) {
+      if (node.count == 0) node.first += shift;
+      return node;
+    };
+    nodes_.push_back(shifted(left[0], left_shift));
+    nodes_.push_back(shifted(right[0], right_shift));
+    for (std::size_t i = 1; i < left.size(); ++i) nodes_.push_back(shifted(left[i], left_shift));
+    for (std::size_t i = 1; i < right.size(); ++i) nodes_.push_back(shifted(right[i], right_shift));
+  } else {
+    build_subtree(items, root, options, nodes_);
   }
   order_.resize(n);
   for (Index i = 0; i < n; ++i) order_[i] = items[i].triangle;
@@ -275,14 +324,14 @@ void TriangleBvh::traverse(const ShearedRay& sheared, double& t_max, Visit&& vis
   if (!ray_hits_box(nodes_[0].lower, nodes_[0].upper, ray.origin, inverse, ray.t_min, t_max, entry)) return;
   stack[top++] = 0;
   while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
+    const BvhNode& node = nodes_[stack[--top]];
     if (node.count > 0) {
       for (Index i = node.first; i < node.first + node.count; ++i) visit(order_[i], t_max);
       continue;
     }
     double entry_left = 0.0, entry_right = 0.0;
-    const Node& left = nodes_[node.first];
-    const Node& right = nodes_[node.first + 1];
+    const BvhNode& left = nodes_[node.first];
+    const BvhNode& right = nodes_[node.first + 1];
     const bool hit_left =
         ray_hits_box(left.lower, left.upper, ray.origin, inverse, ray.t_min, t_max, entry_left);
     const bool hit_right =

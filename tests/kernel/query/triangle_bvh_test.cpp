@@ -133,22 +133,25 @@ TEST_CASE("the BVH agrees with brute force on random rays through random surface
   for (const Case& c : cases) {
     INFO(c.name);
     const Mesh mesh = build_mesh(c.soup);
-    const TriangleBvh bvh(mesh);
-    std::uniform_int_distribution<Index> pick_vertex(0, mesh.num_vertices() - 1);
-    for (int i = 0; i < 300; ++i) {
-      Ray ray;
-      ray.origin = 4.0 * Vec3(unit(rng), unit(rng), unit(rng));
-      // Half the rays aim at a vertex (shared by several faces), half at a random point. A ray at a
-      // silhouette or border vertex may pass just beside the surface, so only agreement is required.
-      const Vec3 target = i % 2 ? mesh.position(pick_vertex(rng)) : Vec3(unit(rng), unit(rng), unit(rng));
-      ray.direction = target - ray.origin;
-      const auto hits = bvh.cast_all(ray);
-      require_same_hits(hits, brute_force(bvh, ray));
-      const auto nearest = bvh.cast_nearest(ray);
-      REQUIRE(nearest.has_value() == !hits.empty());
-      if (nearest) {
-        CHECK(nearest->face == hits.front().face);
-        CHECK(nearest->depth == hits.front().depth);
+    // The two-thread build (normally for large meshes only) must give a tree just as correct.
+    for (const Index threshold : {Index{0}, Index{1} << 30}) {
+      const TriangleBvh bvh(mesh, {.parallel_build_threshold = threshold});
+      std::uniform_int_distribution<Index> pick_vertex(0, mesh.num_vertices() - 1);
+      for (int i = 0; i < 200; ++i) {
+        Ray ray;
+        ray.origin = 4.0 * Vec3(unit(rng), unit(rng), unit(rng));
+        // Half the rays aim at a vertex (shared by several faces), half at a random point. A ray at a
+        // silhouette or border vertex may pass just beside the surface, so only agreement is required.
+        const Vec3 target = i % 2 ? mesh.position(pick_vertex(rng)) : Vec3(unit(rng), unit(rng), unit(rng));
+        ray.direction = target - ray.origin;
+        const auto hits = bvh.cast_all(ray);
+        require_same_hits(hits, brute_force(bvh, ray));
+        const auto nearest = bvh.cast_nearest(ray);
+        REQUIRE(nearest.has_value() == !hits.empty());
+        if (nearest) {
+          CHECK(nearest->face == hits.front().face);
+          CHECK(nearest->depth == hits.front().depth);
+        }
       }
     }
   }

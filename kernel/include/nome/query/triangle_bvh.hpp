@@ -26,9 +26,18 @@ struct RayHit {
   double depth = 0.0;                          // ray parameter t
 };
 
+// A BVH node: a box, and either a leaf's triangle range or the first of its two adjacent children.
+struct BvhNode {
+  Vec3 lower{0.0}, upper{0.0};
+  Index first = 0;  // leaf: first entry in the triangle order; inner: index of the left child (right = left + 1)
+  Index count = 0;  // leaf: number of triangles; inner: 0
+};
+
 struct BvhOptions {
   Index max_leaf_size = 4;
   Index sah_bins = 16;
+  // From this many triangles on, the two halves of the tree are built on two threads.
+  Index parallel_build_threshold = Index{1} << 16;
 };
 
 // Hits nearest first (equal depths ordered by face, then triangle), one per face and depth: a ray through
@@ -60,19 +69,13 @@ class TriangleBvh {
   bool intersect(const ShearedRay& ray, Index t, TriangleHit& hit) const;
 
  private:
-  struct Node {
-    Vec3 lower{0.0}, upper{0.0};
-    Index first = 0;  // leaf: first entry in order_; inner: index of the left child (right = left + 1)
-    Index count = 0;  // leaf: number of triangles; inner: 0
-  };
-
   template <typename Visit>
   void traverse(const ShearedRay& ray, double& t_max, Visit&& visit) const;
 
   DisplayTriangles triangles_;
   std::vector<Vec3> positions_;
-  std::vector<Index> order_;  // triangle ids, leaves own contiguous ranges
-  std::vector<Node> nodes_;
+  std::vector<Index> order_;  // triangle ids; leaves own contiguous ranges
+  std::vector<BvhNode> nodes_;
   // Polygon structure for classifying hits on edges and corners.
   std::vector<Index> corner_vertices_;
   std::vector<Index> corner_edges_;
