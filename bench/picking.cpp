@@ -67,8 +67,8 @@ int main() {
     build_cpu.push_back(process_cpu_ms() - cpu_start);
   }
   std::printf("picking: %u triangles, %u BVH nodes\n", bvh.num_triangles(), bvh.num_nodes());
-  std::printf("  BVH build          median %8.1f ms wall, %6.1f ms CPU on 2 threads   (target < 300 ms)\n", median(builds),
-              median(build_cpu));
+  std::printf("  BVH build          median %8.1f ms wall, %6.1f ms CPU on 2 threads   (target < 300 ms)\n",
+              median(builds), median(build_cpu));
 
   nome::ScreenProjection camera;
   camera.view = glm::lookAt(glm::dvec3(2.0, 1.5, 2.5), glm::dvec3(0.0), glm::dvec3(0.0, 0.0, 1.0));

@@ -10,6 +10,8 @@ namespace nome::cli {
 int info_command(const std::vector<std::string>& args);
 int export_command(const std::vector<std::string>& args);
 int render_command(const std::vector<std::string>& args);
+// `nome [FILE] [--script S.txt]`: the viewer window.
+int view_command(const std::vector<std::string>& args);
 
 // Dispatches `nome COMMAND ...`; catches every error so no input can crash the program.
 int run(int argc, char** argv);

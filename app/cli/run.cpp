@@ -1,3 +1,4 @@
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -23,36 +24,53 @@ const Command commands[] = {
 
 void print_help(std::ostream& out) {
   out << "Nome: a modeller for 2-manifold surfaces, single-sided ones included.\n\n"
-         "usage: nome COMMAND [options]      (nome COMMAND --help explains every option)\n\ncommands:\n";
+         "usage: nome [FILE] [--script S.txt]   the viewer window (nome x.obj --help: its options)\n"
+         "       nome COMMAND [options]         (nome COMMAND --help explains every option)\n\ncommands:\n";
   for (const Command& c : commands)
     out << "  " << c.name << std::string(10 - std::string(c.name).size(), ' ') << c.summary << "\n";
+}
+
+// `nome FILE ...` and `nome --script ...` open the viewer: a first word that is no command but names a
+// file (or an option of the viewer) belongs to it.
+bool is_viewer_call(const std::vector<std::string>& args) {
+  const std::string& first = args[0];
+  for (const Command& c : commands)
+    if (first == c.name) return false;
+  if (first == "--script" || first == "--size") return true;
+  return first.find('.') != std::string::npos || first.find('/') != std::string::npos;
+}
+
+int run_guarded(const std::string& name, int (*command)(const std::vector<std::string>&),
+                const std::vector<std::string>& args) {
+  try {
+    return command(args);
+  } catch (const UsageError& e) {
+    const std::string program = name.empty() ? "nome" : "nome " + name;
+    std::cerr << program << ": " << e.what() << "\n(see '" << program << " --help')\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "nome: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "nome: " << e.what() << "\n";
+    return 1;
+  }
 }
 
 }  // namespace
 
 int run(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() && std::getenv("DISPLAY")) return run_guarded("", view_command, args);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     print_help(args.empty() ? std::cerr : std::cout);
     return args.empty() ? 2 : 0;
   }
+  if (is_viewer_call(args)) return run_guarded("", view_command, args);
   const std::string name = args[0];
   args.erase(args.begin());
-  for (const Command& c : commands) {
-    if (name != c.name) continue;
-    try {
-      return c.run(args);
-    } catch (const UsageError& e) {
-      std::cerr << "nome " << name << ": " << e.what() << "\n(see 'nome " << name << " --help')\n";
-      return 2;
-    } catch (const std::bad_alloc&) {
-      std::cerr << "nome: out of memory\n";
-      return 1;
-    } catch (const std::exception& e) {
-      std::cerr << "nome: " << e.what() << "\n";
-      return 1;
-    }
-  }
+  for (const Command& c : commands)
+    if (name == c.name) return run_guarded(name, c.run, args);
   std::cerr << "nome: unknown command '" << name << "'\n";
   print_help(std::cerr);
   return 2;

@@ -18,11 +18,15 @@ std::string scratch_dir(const std::string& name) {
 }
 
 CommandResult run_nome(const std::string& arguments) {
+  return run_nome_prefixed("", arguments);
+}
+
+CommandResult run_nome_prefixed(const std::string& prefix, const std::string& arguments) {
   static int counter = 0;
   const std::string base = scratch_dir("run_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
   const std::string out = base + "/out", err = base + "/err";
-  const std::string command =
-      std::string(NOME_EXECUTABLE) + " " + arguments + " >" + out + " 2>" + err + " </dev/null";
+  const std::string command = prefix + " " + std::string(NOME_EXECUTABLE) + " " + arguments + " >" + out +
+                              " 2>" + err + " </dev/null";
   const int raw = std::system(command.c_str());
   CommandResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);

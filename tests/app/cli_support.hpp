@@ -12,6 +12,8 @@ struct CommandResult {
 
 // Runs the built `nome` binary with the given arguments (a shell word list) and captures its output.
 CommandResult run_nome(const std::string& arguments);
+// The same, with a command word list put before the executable (`xvfb-run -a`, `env X=1`).
+CommandResult run_nome_prefixed(const std::string& prefix, const std::string& arguments);
 
 // A fresh scratch folder for one test's files.
 std::string scratch_dir(const std::string& name);

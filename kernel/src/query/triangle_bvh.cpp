@@ -79,7 +79,11 @@ struct BuildTask {
 
 struct BinScratch {
   explicit BinScratch(Index bins)
-      : bins(std::max<Index>(2, bins)), boxes(this->bins), left(this->bins), right(this->bins), counts(this->bins) {}
+      : bins(std::max<Index>(2, bins)),
+        boxes(this->bins),
+        left(this->bins),
+        right(this->bins),
+        counts(this->bins) {}
   Index bins;
   std::vector<Box> boxes, left, right;
   std::vector<Index> counts;
@@ -148,8 +152,9 @@ bool split_task(std::vector<BuildItem>& items, const BuildTask& task, const BvhO
     }
   }
   if (!is_split) {
-    std::nth_element(items.begin() + task.begin, items.begin() + mid, items.begin() + task.end,
-                     [&](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
+    std::nth_element(
+        items.begin() + task.begin, items.begin() + mid, items.begin() + task.end,
+        [&](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
     for (Index i = task.begin; i < task.end; ++i) {
       const int side = i < mid ? 0 : 1;
       child_bounds[side].grow(items[i].box);
@@ -216,14 +221,14 @@ std::vector<RayHit> sorted_unique_hits(std::vector<RayHit> hits) {
 }
 
 TriangleBvh::TriangleBvh(const Mesh& mesh, const BvhOptions& options)
-    : triangles_(display_triangles(mesh)),
+    : triangles_(triangulate(mesh)),
       positions_(mesh.positions()),
       corner_vertices_(mesh.corner_vertices()),
       corner_edges_(mesh.corner_edges()) {
   corner_next_.resize(mesh.num_corners());
   for (Index c = 0; c < mesh.num_corners(); ++c) corner_next_[c] = mesh.next_corner(c);
 
-  const Index n = triangles_.size();
+  const Index n = num_triangles();
   std::vector<BuildItem> items(n);
   Box root_bounds, root_centroids;
   for (Index t = 0; t < n; ++t) {

@@ -190,15 +190,3 @@ TEST_CASE("an empty mesh has nothing to hit", "[kernel]") {
   CHECK(bvh.cast_all(vertical_ray(0, 0)).empty());
   CHECK_FALSE(bvh.cast_nearest(vertical_ray(0, 0)));
 }
-
-TEST_CASE("display triangles fan each face and know their face", "[kernel]") {
-  PolygonSoup soup;
-  for (int i = 0; i < 5; ++i) soup.add_vertex(Vec3(std::cos(i * 1.2566), std::sin(i * 1.2566), 0.0));
-  soup.add_vertex(Vec3(2, 0, 0));
-  soup.add_face({0, 1, 2, 3, 4});
-  soup.add_face({1, 0, 5});
-  const DisplayTriangles tris = display_triangles(build_mesh(soup));
-  REQUIRE(tris.size() == 4);
-  CHECK(tris.faces == std::vector<Index>{0, 0, 0, 1});
-  CHECK(tris.corners[2] == std::array<Index, 3>{0, 3, 4});
-}

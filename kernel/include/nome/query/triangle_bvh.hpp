@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
-#include "nome/query/display_triangles.hpp"
+#include "nome/ops/triangulate.hpp"
 #include "nome/query/ray.hpp"
 
 namespace nome {
@@ -20,7 +20,7 @@ struct RayHit {
   ElementKind kind = ElementKind::face;
   Index element = no_index;  // the face, edge or vertex id named by kind
   Index face = no_index;
-  Index triangle = no_index;                   // index into DisplayTriangles
+  Index triangle = no_index;                   // index into the Triangulation
   std::array<double, 3> barycentric{0, 0, 0};  // weights of the triangle's three corners
   Vec3 point{0.0};                             // world position of the hit
   double depth = 0.0;                          // ray parameter t
@@ -29,7 +29,8 @@ struct RayHit {
 // A BVH node: a box, and either a leaf's triangle range or the first of its two adjacent children.
 struct BvhNode {
   Vec3 lower{0.0}, upper{0.0};
-  Index first = 0;  // leaf: first entry in the triangle order; inner: index of the left child (right = left + 1)
+  Index first =
+      0;  // leaf: first entry in the triangle order; inner: index of the left child (right = left + 1)
   Index count = 0;  // leaf: number of triangles; inner: 0
 };
 
@@ -44,7 +45,8 @@ struct BvhOptions {
 // a fan diagonal or a face's first corner crosses several triangles of one face at one point.
 std::vector<RayHit> sorted_unique_hits(std::vector<RayHit> hits);
 
-// A bounding volume hierarchy over a mesh's display triangles (binned SAH build), for CPU picking.
+// A bounding volume hierarchy over the triangles a mesh is drawn with (nome::triangulate, shared with the
+// renderer, so a pick lands on the triangle the user sees), binned SAH build, for CPU picking.
 // It copies the positions it needs, so it stays valid while the mesh it came from changes or dies;
 // rebuild it when the displayed geometry changes.
 class TriangleBvh {
@@ -58,11 +60,11 @@ class TriangleBvh {
   // The nearest hit, if any.
   std::optional<RayHit> cast_nearest(const Ray& ray) const;
 
-  Index num_triangles() const { return triangles_.size(); }
+  Index num_triangles() const { return static_cast<Index>(triangles_.faces.size()); }
   Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
-  const DisplayTriangles& triangles() const { return triangles_; }
+  const Triangulation& triangles() const { return triangles_; }
 
-  // The classified hit of the ray on display triangle t at the given triangle hit (shared with the
+  // The classified hit of the ray on triangle t at the given triangle hit (shared with the
   // brute-force reference in the tests).
   RayHit make_hit(const Ray& ray, Index t, const TriangleHit& hit) const;
   // Tests one triangle (for brute force comparisons).
@@ -72,7 +74,7 @@ class TriangleBvh {
   template <typename Visit>
   void traverse(const ShearedRay& ray, double& t_max, Visit&& visit) const;
 
-  DisplayTriangles triangles_;
+  Triangulation triangles_;
   std::vector<Vec3> positions_;
   std::vector<Index> order_;  // triangle ids; leaves own contiguous ranges
   std::vector<BvhNode> nodes_;

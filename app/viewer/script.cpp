@@ -1,0 +1,160 @@
+#include "viewer/script.hpp"
+
+#include <charconv>
+#include <fstream>
+#include <sstream>
+
+#include "nome/error.hpp"
+
+namespace nome::viewer {
+namespace {
+
+struct Word {
+  std::string text;
+  int column;
+};
+
+std::vector<Word> split(const std::string& line) {
+  std::vector<Word> words;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    if (line[i] == '#') break;
+    if (line[i] == ' ' || line[i] == '\t' || line[i] == '\r') {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    words.push_back({line.substr(start, i - start), int(start) + 1});
+  }
+  return words;
+}
+
+bool parse_number(const std::string& s, double& out) {
+  const char* end = s.data() + s.size();
+  const auto result = std::from_chars(s.data(), end, out);
+  return result.ec == std::errc() && result.ptr == end;
+}
+
+struct Syntax {
+  const char* word;
+  ScriptCommand::Kind kind;
+  int words;    // leading word arguments
+  int numbers;  // numeric arguments after them
+  const char* expected;
+};
+
+const Syntax syntaxes[] = {
+    {"set", ScriptCommand::Kind::set, 1, 1, "set BANK_PARAM VALUE"},
+    {"mode", ScriptCommand::Kind::mode, 1, 0, "mode vertex|face|border|border-partial"},
+    {"click", ScriptCommand::Kind::click, 0, 2, "click X Y (window pixels)"},
+    {"key", ScriptCommand::Kind::key, 1, 0, "key LABEL (W, Ctrl+Z, F1, ...)"},
+    {"action", ScriptCommand::Kind::action, 1, 0,
+     "action add-polygon|accept|clear|delete|zip|merge|undo|redo"},
+    {"subdiv", ScriptCommand::Kind::subdiv, 0, 1, "subdiv LEVEL"},
+    {"offset", ScriptCommand::Kind::offset, 0, 1, "offset DISTANCE"},
+    {"view", ScriptCommand::Kind::view, 0, 2, "view AZIMUTH ELEVATION (degrees)"},
+    {"screenshot", ScriptCommand::Kind::screenshot, 1, 0, "screenshot PATH.png"},
+    {"save", ScriptCommand::Kind::save, 1, 0, "save PATH.nome"},
+    {"export", ScriptCommand::Kind::export_file, 1, 0, "export PATH.stl|PATH.obj"},
+    {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
+};
+
+const char* const modes[] = {"vertex", "face", "border", "border-partial"};
+const char* const actions[] = {"add-polygon", "accept", "clear", "delete", "zip", "merge", "undo", "redo"};
+
+template <typename List>
+bool is_one_of(const std::string& word, const List& list) {
+  for (const char* item : list)
+    if (word == item) return true;
+  return false;
+}
+
+}  // namespace
+
+const char* script_synopsis() {
+  return "script commands, one a line (# comments):\n"
+         "  set BANK_PARAM VALUE      move a slider\n"
+         "  mode vertex|face|border|border-partial\n"
+         "  click X Y                 left click at window pixel (X, Y), origin top-left\n"
+         "  key LABEL                 press a key of the help overlay (W, S, X, Ctrl+Z, ...)\n"
+         "  action add-polygon|accept|clear|delete|zip|merge|undo|redo\n"
+         "  subdiv LEVEL              subdivision level 0-6\n"
+         "  offset DISTANCE           offset distance (0 turns offsetting off)\n"
+         "  view AZ EL                look from azimuth AZ and elevation EL (degrees), framed\n"
+         "  screenshot PATH.png       save the window as a PNG\n"
+         "  save PATH.nome            save the scene, slider values and edits\n"
+         "  export PATH.stl|.obj      write the stage on screen\n"
+         "  quit\n";
+}
+
+std::vector<ScriptCommand> parse_script(const std::string& text, const std::string& file) {
+  std::vector<ScriptCommand> commands;
+  std::string errors;
+  std::istringstream in(text);
+  std::string line;
+  int line_number = 0;
+  auto fail = [&](int column, const std::string& message) {
+    errors += file + ":" + std::to_string(line_number) + ":" + std::to_string(column) + ": " + message + "\n";
+  };
+  while (std::getline(in, line)) {
+    ++line_number;
+    const std::vector<Word> words = split(line);
+    if (words.empty()) continue;
+    const Syntax* syntax = nullptr;
+    for (const Syntax& s : syntaxes)
+      if (words[0].text == s.word) syntax = &s;
+    if (!syntax) {
+      fail(words[0].column, "expected a command (set, mode, click, key, action, subdiv, offset, view, "
+                            "screenshot, save, export, quit), found '" + words[0].text + "'");
+      continue;
+    }
+    const std::size_t wanted = 1 + syntax->words + syntax->numbers;
+    if (words.size() != wanted) {
+      const int column = words.size() > wanted ? words[wanted].column : int(line.size()) + 1;
+      fail(column, std::string("expected '") + syntax->expected + "'");
+      continue;
+    }
+    ScriptCommand command;
+    command.kind = syntax->kind;
+    command.line = line_number;
+    bool is_valid = true;
+    for (int i = 0; i < syntax->words; ++i) command.words.push_back(words[1 + i].text);
+    for (int i = 0; i < syntax->numbers; ++i) {
+      const Word& w = words[1 + syntax->words + i];
+      double value = 0.0;
+      if (!parse_number(w.text, value)) {
+        fail(w.column, std::string("expected a number in '") + syntax->expected + "', found '" + w.text + "'");
+        is_valid = false;
+        break;
+      }
+      command.numbers.push_back(value);
+    }
+    if (!is_valid) continue;
+    if (command.kind == ScriptCommand::Kind::mode && !is_one_of(command.words[0], modes)) {
+      fail(words[1].column, "expected vertex, face, border or border-partial, found '" + command.words[0] + "'");
+      continue;
+    }
+    if (command.kind == ScriptCommand::Kind::action && !is_one_of(command.words[0], actions)) {
+      fail(words[1].column, "expected add-polygon, accept, clear, delete, zip, merge, undo or redo, found '" +
+                                command.words[0] + "'");
+      continue;
+    }
+    commands.push_back(std::move(command));
+  }
+  if (!errors.empty()) {
+    errors.pop_back();
+    throw InvalidInputError(errors);
+  }
+  return commands;
+}
+
+std::vector<ScriptCommand> read_script(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path.string() + ": cannot read the script");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_script(text.str(), path.string());
+}
+
+}  // namespace nome::viewer

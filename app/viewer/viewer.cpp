@@ -1,0 +1,118 @@
+#include "viewer/viewer.hpp"
+
+#include <dlfcn.h>
+#include <link.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string_view>
+
+#include "render/gl.hpp"
+
+#define GLFW_INCLUDE_NONE  // GL comes from glad (render/gl.hpp)
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include "viewer/window.hpp"
+
+namespace nome::viewer {
+namespace {
+
+Window* drop_target = nullptr;
+
+void on_drop(GLFWwindow*, int count, const char** paths) {
+  // Several files dropped at once: the last one wins (one document per window).
+  if (drop_target && count > 0) drop_target->open(paths[count - 1]);
+}
+
+// glfwTerminate() unloads Mesa's *_dri.so; the sanitizer's leak check then cannot name the driver's
+// frames and reports its caches as leaks (GL_NOTES.md). Keeping the driver loaded to the end avoids that.
+int keep_driver_loaded(dl_phdr_info* info, size_t, void*) {
+  const std::string_view name = info->dlpi_name ? info->dlpi_name : "";
+  if (name.ends_with("_dri.so")) dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+  return 0;
+}
+
+void on_glfw_error(int code, const char* description) {
+  std::cerr << "nome: GLFW error " << code << ": " << description << "\n";
+}
+
+}  // namespace
+
+int run_viewer(const ViewerOptions& options) {
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((!display || !*display) && (!wayland || !*wayland)) {
+    std::cerr << "nome: no display to open the viewer on (DISPLAY is not set).\n"
+                 "  To draw a picture without a display: nome render FILE -o picture.png\n"
+                 "  To run the viewer on a virtual display: xvfb-run -a nome FILE\n";
+    return 1;
+  }
+  glfwSetErrorCallback(on_glfw_error);
+  if (!glfwInit()) {
+    std::cerr << "nome: cannot start GLFW on this display; try `nome render FILE -o picture.png`\n";
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "Nome", nullptr, nullptr);
+  if (!window) {
+    std::cerr << "nome: cannot open a GL 3.3 core window; try `nome render FILE -o picture.png`\n";
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  dl_iterate_phdr(keep_driver_loaded, nullptr);
+  glfwSwapInterval(1);
+  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress))) {
+    std::cerr << "nome: cannot load OpenGL 3.3 core functions\n";
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return 1;
+  }
+  // Our callbacks go in before ImGui's so that ImGui chains them (GL_NOTES.md).
+  glfwSetDropCallback(window, on_drop);
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's folder
+  ImGui::StyleColorsLight();
+  ImGui::GetStyle().WindowRounding = 4.0f;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330");
+
+  int status = 0;
+  {
+    Window viewer(window, options);
+    drop_target = &viewer;
+    bool is_running = true;
+    while (is_running) {
+      glfwPollEvents();
+      if (glfwWindowShouldClose(window)) {
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        viewer.request_quit();
+      }
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      is_running = viewer.frame();
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      viewer.after_draw();
+      glfwSwapBuffers(window);
+    }
+    status = viewer.exit_status();
+    drop_target = nullptr;
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return status;
+}
+
+}  // namespace nome::viewer

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+namespace nome::viewer {
+
+struct ViewerOptions {
+  std::optional<std::filesystem::path> file;
+  std::optional<std::filesystem::path> script;  // replayed one command per frame, then the window stays
+  int width = 1280;
+  int height = 800;
+};
+
+// Opens the window and runs until the user (or the script) quits. Returns the exit status: 0, or 1 when
+// the window could not open or a script command failed.
+int run_viewer(const ViewerOptions& options);
+
+}  // namespace nome::viewer

@@ -1,0 +1,476 @@
+#include "viewer/window.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/gl.hpp"
+
+#define GLFW_INCLUDE_NONE  // GL comes from glad (render/gl.hpp)
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "nome/error.hpp"
+#include "nome/io/obj.hpp"
+#include "nome/io/stl.hpp"
+#include "nome/query/pick.hpp"
+#include "render/image.hpp"
+#include "render/mesh_display_data.hpp"
+
+namespace nome::viewer {
+namespace {
+
+constexpr double default_azimuth = 30.0;
+constexpr double default_elevation = 25.0;
+constexpr double pick_pixels = 8.0;
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// The half-size of the cube marking a selected vertex: the report sizes it by the edges at the vertex.
+float marker_size(const Mesh& mesh, Index v) {
+  double sum = 0.0;
+  Index count = 0;
+  for (Index e : mesh.vertex_edges(v)) {
+    const Edge& edge = mesh.edge(e);
+    sum += glm::length(mesh.position(edge.vertices[0]) - mesh.position(edge.vertices[1]));
+    ++count;
+  }
+  return count ? float(0.04 * sum / count) : 0.01f;
+}
+
+}  // namespace
+
+Window::Window(GLFWwindow* window, const ViewerOptions& options)
+    : window_(window),
+      options_(options),
+      renderer_(std::make_unique<render::Renderer>()),
+      cubes_(std::make_unique<render::CubeSet>()),
+      border_lines_(std::make_unique<render::LineSet>()),
+      recent_(RecentFiles::default_store()) {
+  register_keys();
+  camera_.set_view(default_azimuth, default_elevation);
+  log_.set_echo(options.script.has_value());
+  if (options.script) {
+    try {
+      script_ = read_script(*options.script);
+    } catch (const Error& e) {
+      log_.error(e.what());
+      exit_status_ = 1;
+      should_close_ = true;
+    }
+  }
+  if (options.file) open(*options.file);
+  if (options.file && !session_) exit_status_ = 1;
+  log_.info("Press ? or F1 for the keys; left drag turns, right drag pans, the wheel zooms.");
+}
+
+Window::~Window() = default;
+
+void Window::register_keys() {
+  keys_.add(GLFW_KEY_SLASH, KeyModifier::shift, "show or hide this help", [this] { show_help_ = !show_help_; });
+  keys_.add(GLFW_KEY_F1, 0, "show or hide this help", [this] { show_help_ = !show_help_; });
+  keys_.add(GLFW_KEY_O, KeyModifier::control, "open a file", [this] {
+    browser_purpose_ = BrowserPurpose::open;
+    browser_.open("Open", session_ ? session_->path().parent_path() : std::filesystem::path{},
+                  {".nome", ".anom", ".sif", ".slf", ".obj", ".stl"}, "Open");
+  });
+  for (int i = 0; i < 4; ++i)
+    keys_.add(GLFW_KEY_1 + i, KeyModifier::control, "open recent file " + std::to_string(i + 1), [this, i] {
+      if (std::size_t(i) < recent_.files().size()) open(recent_.files()[i]);
+    });
+  keys_.add(GLFW_KEY_E, KeyModifier::control, "export the stage on screen (.stl, .obj)", [this] {
+    if (!session_) return;
+    browser_purpose_ = BrowserPurpose::export_mesh;
+    browser_.open("Export", session_->path().parent_path(), {".stl", ".obj"}, "Save",
+                  session_->path().stem().string() + ".stl");
+  });
+  keys_.add(GLFW_KEY_Q, KeyModifier::control, "quit", [this] { request_quit(); });
+  keys_.add(GLFW_KEY_I, 0, "zoom in", [this] { camera_.zoom(1.0 / 1.25); });
+  keys_.add(GLFW_KEY_O, 0, "zoom out", [this] { camera_.zoom(1.25); });
+  keys_.add(GLFW_KEY_W, 0, "wire mode / polygon mode", [this] {
+    display_.show_faces = !display_.show_faces;
+    display_.show_wireframe = !display_.show_faces || display_.show_wireframe;
+  });
+  keys_.add(GLFW_KEY_S, 0, "smooth / flat shading", [this] {
+    display_.shading = display_.shading == render::Shading::smooth ? render::Shading::flat : render::Shading::smooth;
+  });
+  keys_.add(GLFW_KEY_X, 0, "back-face culling on / off", [this] {
+    display_.back_faces = display_.back_faces == render::BackFacePolicy::cull ? render::BackFacePolicy::different
+                                                                               : render::BackFacePolicy::cull;
+  });
+  keys_.add(GLFW_KEY_F, 0, "frame everything", [this] { frame_all(); });
+  keys_.add(GLFW_KEY_H, KeyModifier::control, "reset the view", [this] { reset_view(); });
+  keys_.add(GLFW_KEY_KP_1, 0, "view from the front", [this] { set_view(0.0, 0.0); });
+  keys_.add(GLFW_KEY_KP_3, 0, "view from the right", [this] { set_view(90.0, 0.0); });
+  keys_.add(GLFW_KEY_KP_7, 0, "view from the top", [this] { set_view(0.0, 90.0); });
+  keys_.add(GLFW_KEY_P, 0, "save a screenshot PNG", [this] { pending_screenshot_ = next_screenshot_path(); });
+  keys_.add(GLFW_KEY_L, 0, "show or hide the log panel", [this] { show_log_ = !show_log_; });
+  keys_.add(GLFW_KEY_ESCAPE, 0, "clear the selection", [this] {
+    selection_.clear();
+    refresh_selection();
+  });
+}
+
+// ---------------------------------------------------------------------------------------------- files
+
+void Window::open(const std::filesystem::path& path) {
+  try {
+    Session session = Session::open(path);
+    session_.emplace(std::move(session));
+    std::error_code ec;
+    file_time_ = std::filesystem::last_write_time(path, ec);
+    recent_.add(path);
+    selection_.clear();
+    has_geometry_ = false;
+    refresh_geometry();
+    reset_view();
+    const Mesh& mesh = session_->display_mesh();
+    log_.info("opened " + path.string() + " (" + std::to_string(mesh.num_vertices()) + " vertices, " +
+              std::to_string(mesh.num_faces()) + " faces)");
+    glfwSetWindowTitle(window_, ("Nome - " + path.filename().string()).c_str());
+  } catch (const std::exception& e) {
+    log_.error(e.what());
+  }
+}
+
+void Window::poll_file_changes() {
+  if (!session_) return;
+  const double now = glfwGetTime();
+  if (now - last_file_check_ < 0.5) return;
+  last_file_check_ = now;
+  std::error_code ec;
+  const auto time = std::filesystem::last_write_time(session_->path(), ec);
+  if (ec || time == file_time_) return;
+  file_time_ = time;
+  try {
+    session_->reload();
+    refresh_geometry();
+    log_.info("reloaded " + session_->path().filename().string());
+  } catch (const std::exception& e) {
+    // The last good geometry stays on screen.
+    log_.error(e.what());
+  }
+}
+
+void Window::export_mesh(const std::filesystem::path& path) {
+  if (!session_) throw InvalidInputError("export: no file is open");
+  const std::string ext = lower_extension(path);
+  if (ext == ".obj")
+    write_obj(path, session_->display_mesh());
+  else if (ext == ".stl")
+    write_stl(path, session_->display_mesh());
+  else
+    throw InvalidInputError("export: the file must end in .stl or .obj, found '" + path.string() + "'");
+  log_.info("exported " + path.string());
+}
+
+std::filesystem::path Window::next_screenshot_path() const {
+  const std::filesystem::path folder = std::filesystem::current_path();
+  for (int i = 1;; ++i) {
+    const auto candidate = folder / ("nome-screenshot-" + std::to_string(i) + ".png");
+    if (!std::filesystem::exists(candidate)) return candidate;
+  }
+}
+
+void Window::save_screenshot(const std::filesystem::path& path) {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  render::Image image(width, height);
+  std::vector<std::uint8_t> rows(image.rgba.size());
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  // GL reads bottom row first; PNG stores the top row first.
+  const std::size_t stride = std::size_t(width) * 4;
+  for (int y = 0; y < height; ++y)
+    std::copy_n(rows.data() + std::size_t(height - 1 - y) * stride, stride, image.rgba.data() + y * stride);
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;
+  render::write_png(path, image);
+  log_.info("screenshot " + path.string());
+}
+
+// --------------------------------------------------------------------------------------------- camera
+
+glm::dvec2 Window::window_size() const {
+  int width = 0, height = 0;
+  glfwGetWindowSize(window_, &width, &height);
+  return {std::max(width, 1), std::max(height, 1)};
+}
+
+double Window::aspect() const {
+  const glm::dvec2 size = window_size();
+  return size.x / size.y;
+}
+
+ScreenProjection Window::projection() const {
+  ScreenProjection p;
+  p.view = glm::dmat4(camera_.view_matrix());
+  p.projection = glm::dmat4(camera_.projection_matrix(aspect()));
+  p.viewport = window_size();
+  return p;
+}
+
+void Window::frame_all() {
+  if (!session_) return;
+  camera_.fit(session_->display_mesh().positions(), aspect());
+}
+
+void Window::reset_view() {
+  set_view(default_azimuth, default_elevation);
+}
+
+void Window::set_view(double azimuth, double elevation) {
+  camera_.set_view(azimuth, elevation);
+  frame_all();
+}
+
+// ------------------------------------------------------------------------------------ geometry, picks
+
+void Window::refresh_geometry() {
+  if (!session_) return;
+  const bool is_new_topology = !has_geometry_ || session_->topology_version() != shown_topology_;
+  if (has_geometry_ && session_->geometry_version() == shown_geometry_) return;
+  const Mesh& mesh = session_->display_mesh();
+  buffers_ = std::make_unique<render::MeshBuffers>(render::build_display_data(mesh));
+  bvh_ = TriangleBvh(mesh);
+  borders_.emplace(mesh);
+  if (is_new_topology && !selection_.is_empty()) {
+    selection_.clear();
+    log_.info("selection cleared: the displayed mesh changed its connectivity");
+  }
+  shown_geometry_ = session_->geometry_version();
+  shown_topology_ = session_->topology_version();
+  has_geometry_ = true;
+  refresh_selection();
+}
+
+void Window::refresh_selection() {
+  if (!session_ || !buffers_) return;
+  const Mesh& mesh = session_->display_mesh();
+  buffers_->set_selected_faces(selection_.faces());
+  std::vector<render::CubeMarker> markers;
+  const glm::vec3 color = display_.selection_color;
+  for (Index v : selection_.vertices()) markers.push_back({glm::vec3(mesh.position(v)), marker_size(mesh, v), color});
+  for (Index v : selection_.pending_ends())
+    markers.push_back({glm::vec3(mesh.position(v)), marker_size(mesh, v), glm::vec3(0.1f, 0.7f, 0.3f)});
+  // The first vertex of each whole border is the zipper's matching point: marked as a cube.
+  for (const auto& border : selection_.borders())
+    if (border.is_loop && !border.vertices.empty())
+      markers.push_back(
+          {glm::vec3(mesh.position(border.vertices[0])), marker_size(mesh, border.vertices[0]), color});
+  cubes_->set(markers);
+  std::vector<glm::vec3> points;
+  std::vector<std::uint32_t> segments;
+  for (const auto& border : selection_.borders()) {
+    const std::uint32_t first = std::uint32_t(points.size());
+    for (Index v : border.vertices) points.push_back(glm::vec3(mesh.position(v)));
+    const std::uint32_t n = std::uint32_t(border.vertices.size());
+    for (std::uint32_t i = 0; i + 1 < n; ++i) segments.insert(segments.end(), {first + i, first + i + 1});
+    if (border.is_loop && n > 2) segments.insert(segments.end(), {first + n - 1, first});
+  }
+  border_lines_->set(points, segments);
+}
+
+void Window::click(glm::dvec2 pixel) {
+  if (!session_) return;
+  const Mesh& mesh = session_->display_mesh();
+  const ScreenProjection p = projection();
+  std::string hint;
+  auto is_in = [](const std::vector<Index>& items, Index i) {
+    return std::find(items.begin(), items.end(), i) != items.end();
+  };
+  switch (selection_.mode()) {
+    case SelectionMode::face:
+      if (const auto face = pick_face(bvh_, p, pixel)) {
+        selection_.click_face(*face);
+        hint = "face " + mesh.face_label(*face) + (is_in(selection_.faces(), *face) ? " selected" : " deselected");
+      }
+      break;
+    case SelectionMode::vertex:
+      if (const auto v = pick_vertex(mesh, bvh_, p, pixel, pick_pixels)) {
+        selection_.click_vertex(*v);
+        hint = "vertex " + mesh.vertex_label(*v) + (is_in(selection_.vertices(), *v) ? " selected" : " deselected");
+      }
+      break;
+    case SelectionMode::border:
+    case SelectionMode::border_partial:
+      if (const auto v = pick_vertex(mesh, bvh_, p, pixel, pick_pixels))
+        hint = selection_.click_border_vertex(*borders_, *v);
+      break;
+  }
+  if (!hint.empty()) log_.info(hint);
+  refresh_selection();
+}
+
+void Window::double_click(glm::dvec2 pixel) {
+  // The orbit centre moves to the picked point; the eye stays where it is.
+  const auto hit = bvh_.cast_nearest(ray_through_pixel(projection(), pixel));
+  if (!hit) return;
+  const glm::dvec3 eye = camera_.eye();
+  camera_.target = hit->point;
+  camera_.distance = std::max(glm::length(eye - hit->point), 1e-9);
+  const glm::dvec3 back = glm::normalize(eye - hit->point);
+  // Keep the up direction as close as possible to the current one while looking at the new centre.
+  const glm::dvec3 up_now = camera_.orientation * glm::dvec3(0.0, 1.0, 0.0);
+  glm::dvec3 right = glm::cross(up_now, back);
+  if (glm::dot(right, right) < 1e-18) return;
+  right = glm::normalize(right);
+  camera_.orientation = glm::normalize(glm::quat_cast(glm::dmat3(right, glm::cross(back, right), back)));
+}
+
+// ---------------------------------------------------------------------------------------------- input
+
+void Window::handle_mouse() {
+  const ImGuiIO& io = ImGui::GetIO();
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window_, &x, &y);
+  const glm::dvec2 position(x, y);
+  const glm::dvec2 size = window_size();
+  auto to_ndc = [&](glm::dvec2 p) { return glm::dvec2(2.0 * p.x / size.x - 1.0, 1.0 - 2.0 * p.y / size.y); };
+
+  if (pressed_button_ < 0 && !io.WantCaptureMouse) {
+    for (int button = 0; button < 3; ++button) {
+      if (!ImGui::IsMouseClicked(button)) continue;
+      pressed_button_ = button;
+      press_position_ = last_position_ = position;
+      is_dragging_ = false;
+      if (button == 0 && ImGui::IsMouseDoubleClicked(0)) double_click(position);
+      break;
+    }
+    if (io.MouseWheel != 0.0f) camera_.zoom(std::pow(0.88, double(io.MouseWheel)));
+  }
+  if (pressed_button_ < 0) return;
+  if (glm::length(position - press_position_) >= click_pixels) is_dragging_ = true;
+  if (is_dragging_ && position != last_position_) {
+    if (pressed_button_ == 0)
+      camera_.arcball(to_ndc(last_position_), to_ndc(position), aspect());
+    else
+      camera_.pan(to_ndc(last_position_), to_ndc(position), aspect());
+  }
+  last_position_ = position;
+  if (ImGui::IsMouseDown(pressed_button_)) return;
+  if (!is_dragging_) {
+    if (pressed_button_ == 0) click(press_position_);
+    if (pressed_button_ == 1) {
+      selection_.clear();
+      refresh_selection();
+    }
+  }
+  pressed_button_ = -1;
+}
+
+void Window::handle_keys() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureKeyboard) return;
+  const int modifiers = (io.KeyShift ? KeyModifier::shift : 0) | (io.KeyCtrl ? KeyModifier::control : 0);
+  for (const KeyBinding& binding : keys_.bindings()) {
+    if (binding.modifiers != modifiers || !ImGui::IsKeyPressed(binding.key, false)) continue;
+    binding.action();
+    break;
+  }
+}
+
+// --------------------------------------------------------------------------------------------- script
+
+void Window::run_script_step() {
+  // The first frames lay out the panels; a screenshot taken then would show them half-built.
+  if (script_next_ >= script_.size() || frames_drawn_ < 3 || pending_screenshot_) return;
+  const ScriptCommand& command = script_[script_next_++];
+  try {
+    if (!run_command(command)) {
+      exit_status_ = 1;
+      log_.error(options_.script->string() + ":" + std::to_string(command.line) + ": the command failed");
+    }
+  } catch (const std::exception& e) {
+    exit_status_ = 1;
+    log_.error(options_.script->string() + ":" + std::to_string(command.line) + ": " + e.what());
+  }
+}
+
+bool Window::run_command(const ScriptCommand& c) {
+  using Kind = ScriptCommand::Kind;
+  switch (c.kind) {
+    case Kind::mode:
+      if (c.words[0] == "vertex") selection_.set_mode(SelectionMode::vertex);
+      if (c.words[0] == "face") selection_.set_mode(SelectionMode::face);
+      if (c.words[0] == "border") selection_.set_mode(SelectionMode::border);
+      if (c.words[0] == "border-partial") selection_.set_mode(SelectionMode::border_partial);
+      return true;
+    case Kind::click:
+      click({c.numbers[0], c.numbers[1]});
+      return true;
+    case Kind::key:
+      if (keys_.press(c.words[0])) return true;
+      throw InvalidInputError("no key '" + c.words[0] + "' (press ? in the viewer for the list)");
+    case Kind::view:
+      set_view(c.numbers[0], c.numbers[1]);
+      return true;
+    case Kind::screenshot:
+      pending_screenshot_ = c.words[0];
+      return true;
+    case Kind::export_file:
+      export_mesh(c.words[0]);
+      return true;
+    case Kind::quit:
+      should_close_ = true;
+      return true;
+    case Kind::set:
+    case Kind::action:
+    case Kind::subdiv:
+    case Kind::offset:
+    case Kind::save:
+      throw InvalidInputError("'" + c.words.front() + "' needs a scene file (.nome) open");
+  }
+  return false;
+}
+
+// --------------------------------------------------------------------------------------------- frame
+
+bool Window::frame() {
+  poll_file_changes();
+  handle_mouse();
+  handle_keys();
+  run_script_step();
+  refresh_geometry();
+  draw_scene();
+  draw_panels();
+  ImGui::Render();
+  ++frames_drawn_;
+  return !should_close_;
+}
+
+void Window::after_draw() {
+  if (!pending_screenshot_) return;
+  try {
+    save_screenshot(*pending_screenshot_);
+  } catch (const std::exception& e) {
+    log_.error(e.what());
+    if (!script_.empty()) exit_status_ = 1;
+  }
+  pending_screenshot_.reset();
+}
+
+void Window::request_quit() {
+  if (session_ && session_->is_modified())
+    is_quit_requested_ = true;
+  else
+    should_close_ = true;
+}
+
+void Window::draw_scene() {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  const render::Renderer::Frame frame =
+      render::Renderer::Frame::of(camera_, {0, 0}, {std::max(width, 1), std::max(height, 1)});
+  renderer_->begin(frame, display_.background);
+  if (!buffers_) return;
+  renderer_->draw_mesh(*buffers_, frame, display_);
+  renderer_->draw_cubes(*cubes_, frame);
+  renderer_->draw_lines(*border_lines_, frame, glm::vec4(display_.selection_color, 1.0f),
+                        display_.highlight_width * 1.5f);
+}
+
+}  // namespace nome::viewer

@@ -1,0 +1,137 @@
+#pragma once
+
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "nome/mesh/topology_report.hpp"
+#include "nome/query/border_lookup.hpp"
+#include "nome/query/screen_projection.hpp"
+#include "nome/query/triangle_bvh.hpp"
+#include "render/camera.hpp"
+#include "render/cube_set.hpp"
+#include "render/display_settings.hpp"
+#include "render/line_set.hpp"
+#include "render/mesh_buffers.hpp"
+#include "render/renderer.hpp"
+#include "viewer/file_browser.hpp"
+#include "viewer/key_registry.hpp"
+#include "viewer/message_log.hpp"
+#include "viewer/recent_files.hpp"
+#include "viewer/script.hpp"
+#include "viewer/selection.hpp"
+#include "viewer/session.hpp"
+#include "viewer/viewer.hpp"
+
+struct GLFWwindow;
+
+namespace nome::viewer {
+
+// One viewer window (DESIGN.md "App"): camera, renderer, selection and panels over one Session.
+// Immediate mode: every frame reads the input, draws the scene with the shared renderer, then the
+// ImGui panels that read and write the session.
+class Window {
+ public:
+  // Needs a current GL 3.3 core context with glad loaded and ImGui initialised for `window`.
+  Window(GLFWwindow* window, const ViewerOptions& options);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  // One frame: input, script step, scene, panels. False once the window should close.
+  bool frame();
+  // After the panels are drawn into the back buffer, before it is shown: takes a pending screenshot.
+  void after_draw();
+  // The window manager's close button: asks about unsaved changes first.
+  void request_quit();
+  int exit_status() const { return exit_status_; }
+
+  // Opens a file (drag and drop, File > Open, Open Recent); on error logs it and keeps the current one.
+  void open(const std::filesystem::path& path);
+
+ private:
+  // setup
+  void register_keys();
+  // input
+  void handle_mouse();
+  void handle_keys();
+  void click(glm::dvec2 pixel);
+  void double_click(glm::dvec2 pixel);
+  // script
+  void run_script_step();
+  bool run_command(const ScriptCommand& command);
+  // geometry on screen
+  void refresh_geometry();
+  void refresh_selection();
+  ScreenProjection projection() const;
+  glm::dvec2 window_size() const;
+  double aspect() const;
+  void frame_all();
+  void reset_view();
+  void set_view(double azimuth, double elevation);
+  // outputs
+  void save_screenshot(const std::filesystem::path& path);
+  void export_mesh(const std::filesystem::path& path);
+  std::filesystem::path next_screenshot_path() const;
+  // panels
+  void draw_scene();
+  void draw_panels();
+  void draw_menu();
+  void draw_control_panel();
+  void draw_topology_panel();
+  void draw_log_panel();
+  void draw_status_bar();
+  void draw_help_overlay();
+  void draw_quit_prompt();
+  void poll_file_changes();
+
+  GLFWwindow* window_;
+  ViewerOptions options_;
+  std::optional<Session> session_;
+  std::filesystem::file_time_type file_time_{};
+  double last_file_check_ = 0.0;
+
+  std::unique_ptr<render::Renderer> renderer_;
+  std::unique_ptr<render::MeshBuffers> buffers_;
+  std::unique_ptr<render::CubeSet> cubes_;
+  std::unique_ptr<render::LineSet> border_lines_;
+  render::Camera camera_;
+  render::DisplaySettings display_;
+  std::uint64_t shown_geometry_ = 0, shown_topology_ = 0;
+  bool has_geometry_ = false;
+
+  std::optional<TopologyReport> topology_;  // of the displayed mesh, at topology_version_
+  std::uint64_t topology_version_ = 0;
+  TriangleBvh bvh_;
+  std::optional<BorderLookup> borders_;
+  Selection selection_;
+  MessageLog log_;
+  KeyRegistry keys_;
+  RecentFiles recent_;
+  FileBrowser browser_;
+  enum class BrowserPurpose { open, export_mesh } browser_purpose_ = BrowserPurpose::open;
+
+  // Mouse: a press-release that moves less than click_pixels is a click, otherwise a drag.
+  static constexpr double click_pixels = 4.0;
+  int pressed_button_ = -1;
+  glm::dvec2 press_position_{0.0}, last_position_{0.0};
+  bool is_dragging_ = false;
+
+  bool show_help_ = false;
+  bool show_log_ = true;
+  bool is_quit_requested_ = false;
+  bool should_close_ = false;
+  std::optional<std::filesystem::path> pending_screenshot_;
+
+  std::vector<ScriptCommand> script_;
+  std::size_t script_next_ = 0;
+  int frames_drawn_ = 0;
+  int exit_status_ = 0;
+};
+
+}  // namespace nome::viewer

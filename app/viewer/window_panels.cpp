@@ -1,0 +1,282 @@
+#include <algorithm>
+
+#define GLFW_INCLUDE_NONE  // GL comes from glad (render/gl.hpp)
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "nome/mesh/topology_report.hpp"
+#include "viewer/window.hpp"
+
+// The ImGui side of the window: menu, panels, status bar, help overlay and prompts.
+namespace nome::viewer {
+namespace {
+
+const ImVec4 error_color(0.85f, 0.15f, 0.15f, 1.0f);
+const ImVec4 warning_color(0.80f, 0.55f, 0.05f, 1.0f);
+
+float status_bar_height() {
+  return ImGui::GetFrameHeight() + 4.0f;
+}
+
+}  // namespace
+
+void Window::draw_panels() {
+  draw_menu();
+  draw_control_panel();
+  draw_topology_panel();
+  if (show_log_) draw_log_panel();
+  draw_status_bar();
+  if (show_help_) draw_help_overlay();
+  draw_quit_prompt();
+  if (const auto chosen = browser_.draw()) {
+    if (browser_purpose_ == BrowserPurpose::open) {
+      open(*chosen);
+    } else {
+      try {
+        export_mesh(*chosen);
+      } catch (const std::exception& e) {
+        log_.error(e.what());
+      }
+    }
+  }
+}
+
+void Window::draw_menu() {
+  if (!ImGui::BeginMainMenuBar()) return;
+  if (ImGui::BeginMenu("File")) {
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) keys_.press("Ctrl+O");
+    if (ImGui::BeginMenu("Open Recent", !recent_.files().empty())) {
+      for (std::size_t i = 0; i < recent_.files().size(); ++i) {
+        const std::string shortcut = i < 4 ? "Ctrl+" + std::to_string(i + 1) : "";
+        if (ImGui::MenuItem(recent_.files()[i].string().c_str(), shortcut.c_str())) {
+          open(recent_.files()[i]);
+          break;
+        }
+      }
+      ImGui::EndMenu();
+    }
+    if (ImGui::MenuItem("Export STL / OBJ...", "Ctrl+E", false, session_.has_value())) keys_.press("Ctrl+E");
+    if (ImGui::MenuItem("Screenshot", "P")) keys_.press("P");
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit();
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("View")) {
+    bool is_wire = display_.show_wireframe;
+    if (ImGui::MenuItem("Faces", "W", &display_.show_faces) && !display_.show_faces)
+      display_.show_wireframe = true;
+    if (ImGui::MenuItem("Wireframe overlay", nullptr, &is_wire)) display_.show_wireframe = is_wire;
+    bool is_flat = display_.shading == render::Shading::flat;
+    if (ImGui::MenuItem("Flat shading", "S", &is_flat))
+      display_.shading = is_flat ? render::Shading::flat : render::Shading::smooth;
+    bool is_culled = display_.back_faces == render::BackFacePolicy::cull;
+    if (ImGui::MenuItem("Back-face culling", "X", &is_culled))
+      display_.back_faces = is_culled ? render::BackFacePolicy::cull : render::BackFacePolicy::different;
+    bool is_back_colored = display_.back_faces == render::BackFacePolicy::different;
+    if (ImGui::MenuItem("Back faces in their own colour", nullptr, &is_back_colored))
+      display_.back_faces = is_back_colored ? render::BackFacePolicy::different : render::BackFacePolicy::same;
+    ImGui::MenuItem("Möbius edges", nullptr, &display_.show_mobius_edges);
+    ImGui::MenuItem("Borders", nullptr, &display_.show_borders);
+    ImGui::MenuItem("Instance colours", nullptr, &display_.use_face_colors);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Frame all", "F")) frame_all();
+    if (ImGui::MenuItem("Reset view", "Ctrl+H")) reset_view();
+    if (ImGui::MenuItem("Front", "Keypad1")) set_view(0.0, 0.0);
+    if (ImGui::MenuItem("Right", "Keypad3")) set_view(90.0, 0.0);
+    if (ImGui::MenuItem("Top", "Keypad7")) set_view(0.0, 90.0);
+    ImGui::Separator();
+    ImGui::MenuItem("Log panel", "L", &show_log_);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Help")) {
+    if (ImGui::MenuItem("Keys and mouse", "F1")) show_help_ = !show_help_;
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+}
+
+void Window::draw_control_panel() {
+  ImGui::SetNextWindowPos(ImVec2(8, 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(280, 0), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Controls")) {
+    ImGui::End();
+    return;
+  }
+  if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) {
+    int mode = int(selection_.mode());
+    const char* labels[] = {"vertex", "face", "border (whole)", "border (partial)"};
+    for (int i = 0; i < 4; ++i) {
+      if (ImGui::RadioButton(labels[i], &mode, i)) selection_.set_mode(SelectionMode(i));
+      if (i % 2 == 0) ImGui::SameLine(130);
+    }
+    ImGui::Text("%zu vertices, %zu faces, %zu borders", selection_.vertices().size(), selection_.faces().size(),
+                selection_.borders().size());
+    if (ImGui::Button("Clear selection")) {
+      selection_.clear();
+      refresh_selection();
+    }
+  }
+  if (ImGui::CollapsingHeader("Colours")) {
+    ImGui::ColorEdit3("default", &display_.front_color.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::ColorEdit3("back faces", &display_.back_color.x, ImGuiColorEditFlags_NoInputs);
+    if (ImGui::ColorEdit3("selected", &display_.selection_color.x, ImGuiColorEditFlags_NoInputs))
+      refresh_selection();
+    ImGui::ColorEdit3("background", &display_.background.x, ImGuiColorEditFlags_NoInputs);
+  }
+  ImGui::End();
+}
+
+void Window::draw_topology_panel() {
+  if (!session_) return;
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(size.x - 328, 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(320, 0), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Topology")) {
+    ImGui::End();
+    return;
+  }
+  if (!topology_ || topology_version_ != session_->geometry_version()) {
+    topology_ = topology_report(session_->display_mesh());
+    topology_version_ = session_->geometry_version();
+  }
+  const TopologyReport& report = *topology_;
+  ImGui::Text("V %u  E %u  F %u  chi %lld", report.vertices, report.edges, report.faces, report.chi);
+  ImGui::Text("%s, %u borders, %u Möbius edges", report.orientable ? "orientable" : "non-orientable",
+              report.borders, report.mobius_edges);
+  if (ImGui::BeginTable("components", 8, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    for (const char* title : {"#", "V", "E", "F", "chi", "or.", "b", "g"}) ImGui::TableSetupColumn(title);
+    ImGui::TableHeadersRow();
+    for (std::size_t i = 0; i < report.components.size() && i < 64; ++i) {
+      const ComponentTopology& c = report.components[i];
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::Text("%zu", i);
+      ImGui::TableNextColumn();
+      ImGui::Text("%u", c.vertices);
+      ImGui::TableNextColumn();
+      ImGui::Text("%u", c.edges);
+      ImGui::TableNextColumn();
+      ImGui::Text("%u", c.faces);
+      ImGui::TableNextColumn();
+      ImGui::Text("%lld", c.chi);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(c.orientable ? "yes" : "no");
+      ImGui::TableNextColumn();
+      ImGui::Text("%u", c.borders);
+      ImGui::TableNextColumn();
+      ImGui::Text("%lld", c.genus);
+    }
+    ImGui::EndTable();
+  }
+  if (report.components.size() > 64) ImGui::Text("... %zu components in all", report.components.size());
+  ImGui::End();
+}
+
+void Window::draw_log_panel() {
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  const float height = 130.0f;
+  ImGui::SetNextWindowPos(ImVec2(8, size.y - status_bar_height() - height - 6), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(std::min(size.x - 16, 760.0f), height), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Log", &show_log_)) {
+    ImGui::End();
+    return;
+  }
+  for (const Message& m : log_.messages()) {
+    const bool is_colored = m.level != MessageLevel::info;
+    if (is_colored) ImGui::PushStyleColor(ImGuiCol_Text, m.level == MessageLevel::error ? error_color : warning_color);
+    const char* prefix = m.level == MessageLevel::error ? "error: " : m.level == MessageLevel::warning ? "warning: " : "";
+    if (m.count > 1)
+      ImGui::TextWrapped("%s%s (x%zu)", prefix, m.text.c_str(), m.count);
+    else
+      ImGui::TextWrapped("%s%s", prefix, m.text.c_str());
+    if (is_colored) ImGui::PopStyleColor();
+  }
+  if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);
+  ImGui::End();
+}
+
+void Window::draw_status_bar() {
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(0, size.y - status_bar_height()));
+  ImGui::SetNextWindowSize(ImVec2(size.x, status_bar_height()));
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+  ImGui::Begin("##status", nullptr, flags);
+  if (session_) {
+    const Mesh& mesh = session_->display_mesh();
+    ImGui::Text("%s%s | %u V, %u F | %s mode", session_->path().filename().string().c_str(),
+                session_->is_modified() ? " *" : "", mesh.num_vertices(), mesh.num_faces(),
+                to_string(selection_.mode()));
+  } else {
+    ImGui::TextUnformatted("no file: File > Open (Ctrl+O) or drop a file on the window");
+  }
+  if (const Message* latest = log_.latest()) {
+    ImGui::SameLine();
+    ImGui::TextUnformatted("|");
+    ImGui::SameLine();
+    if (latest->level == MessageLevel::error)
+      ImGui::TextColored(error_color, "%s", latest->text.c_str());
+    else if (latest->level == MessageLevel::warning)
+      ImGui::TextColored(warning_color, "%s", latest->text.c_str());
+    else
+      ImGui::TextUnformatted(latest->text.c_str());
+  }
+  ImGui::End();
+}
+
+void Window::draw_help_overlay() {
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  if (!ImGui::Begin("Keys and mouse (? or F1 closes)", &show_help_,
+                    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+    ImGui::End();
+    return;
+  }
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    const char* mouse[][2] = {{"left drag", "turn (arcball)"},
+                              {"right / middle drag", "pan"},
+                              {"wheel", "zoom"},
+                              {"left click", "select in the current mode (again: deselect)"},
+                              {"right click", "clear the selection"},
+                              {"double click", "orbit around the point clicked"}};
+    for (const auto& row : mouse) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row[0]);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row[1]);
+    }
+    for (const KeyBinding& b : keys_.bindings()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(b.label.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(b.description.c_str());
+    }
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+void Window::draw_quit_prompt() {
+  if (is_quit_requested_) {
+    ImGui::OpenPopup("Quit without saving?");
+    is_quit_requested_ = false;
+  }
+  if (!ImGui::BeginPopupModal("Quit without saving?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::TextUnformatted("The scene has unsaved changes.");
+  if (ImGui::Button("Quit without saving")) {
+    should_close_ = true;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) {
+    glfwSetWindowShouldClose(window_, GLFW_FALSE);
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+}  // namespace nome::viewer

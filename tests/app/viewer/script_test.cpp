@@ -1,0 +1,46 @@
+#include <catch2/catch.hpp>
+
+#include "nome/error.hpp"
+#include "viewer/script.hpp"
+
+using nome::viewer::parse_script;
+using Kind = nome::viewer::ScriptCommand::Kind;
+
+TEST_CASE("a script is parsed one command a line, comments and blank lines skipped", "[app]") {
+  const auto commands = parse_script(
+      "# funnel cube\n"
+      "set fp_n 6\n"
+      "\n"
+      "mode border-partial\n"
+      "click 640.5 400   # the rim\n"
+      "key Ctrl+Z\n"
+      "action add-polygon\n"
+      "view 30 -25\n"
+      "screenshot out.png\n"
+      "quit\n",
+      "s.txt");
+  REQUIRE(commands.size() == 8);
+  CHECK(commands[0].kind == Kind::set);
+  CHECK(commands[0].words[0] == "fp_n");
+  CHECK(commands[0].numbers[0] == 6.0);
+  CHECK(commands[1].words[0] == "border-partial");
+  CHECK(commands[2].numbers == std::vector<double>{640.5, 400.0});
+  CHECK(commands[2].line == 5);
+  CHECK(commands[3].words[0] == "Ctrl+Z");
+  CHECK(commands[5].numbers == std::vector<double>{30.0, -25.0});
+  CHECK(commands[7].kind == Kind::quit);
+}
+
+TEST_CASE("every bad line of a script is reported with its line and column", "[app]") {
+  try {
+    parse_script("click 10\nmode edge\nfrobnicate\nset a b\naction fly\n", "s.txt");
+    FAIL("the script should have been refused");
+  } catch (const nome::InvalidInputError& e) {
+    const std::string message = e.what();
+    CHECK_THAT(message, Catch::Contains("s.txt:1:9: expected 'click X Y"));
+    CHECK_THAT(message, Catch::Contains("s.txt:2:6: expected vertex, face, border or border-partial, found 'edge'"));
+    CHECK_THAT(message, Catch::Contains("s.txt:3:1: expected a command"));
+    CHECK_THAT(message, Catch::Contains("s.txt:4:7: expected a number"));
+    CHECK_THAT(message, Catch::Contains("s.txt:5:8: expected add-polygon"));
+  }
+}

@@ -1,0 +1,46 @@
+#include "app/viewer_support.hpp"
+
+#include <glm/geometric.hpp>
+
+#include "nome/query/pick.hpp"
+#include "render/camera.hpp"
+
+namespace nome::test {
+
+CommandResult run_viewer(const std::string& arguments) {
+  return run_nome_prefixed("xvfb-run -a -s \"-screen 0 1280x800x24\"", arguments);
+}
+
+ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation) {
+  render::Camera camera;
+  const double aspect = double(viewer_width) / double(viewer_height);
+  camera.set_view(azimuth, elevation);
+  camera.fit(mesh.positions(), aspect);
+  ScreenProjection p;
+  p.view = glm::dmat4(camera.view_matrix());
+  p.projection = glm::dmat4(camera.projection_matrix(aspect));
+  p.viewport = {viewer_width, viewer_height};
+  return p;
+}
+
+std::optional<glm::dvec2> click_position(const Mesh& mesh, const ScreenProjection& projection, Index v) {
+  const TriangleBvh bvh(mesh);
+  const auto pixel = project_to_pixel(projection, mesh.position(v));
+  if (!pixel) return std::nullopt;
+  // A little towards the middle of a face at v, so that the ray lands on the surface.
+  for (Index c : mesh.vertex_corners(v)) {
+    Vec3 centre(0.0);
+    const Index f = mesh.corner_face(c);
+    for (Index u : mesh.face_vertices(f)) centre += mesh.position(u);
+    centre /= double(mesh.face_degree(f));
+    const auto inside = project_to_pixel(projection, centre);
+    if (!inside) continue;
+    const glm::dvec2 towards = glm::dvec2(*inside) - glm::dvec2(*pixel);
+    if (glm::length(towards) < 1e-9) continue;
+    const glm::dvec2 click = glm::round(glm::dvec2(*pixel) + 3.0 * glm::normalize(towards));
+    if (pick_vertex(mesh, bvh, projection, click, 8.0) == v) return click;
+  }
+  return std::nullopt;
+}
+
+}  // namespace nome::test
