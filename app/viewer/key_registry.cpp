@@ -19,15 +19,24 @@ std::string key_name(int key) {
   if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) return std::string(1, char('0' + key - GLFW_KEY_0));
   if (key >= GLFW_KEY_F1 && key <= GLFW_KEY_F12) return "F" + std::to_string(key - GLFW_KEY_F1 + 1);
   switch (key) {
-    case GLFW_KEY_SLASH: return "/";
-    case GLFW_KEY_ESCAPE: return "Esc";
-    case GLFW_KEY_DELETE: return "Delete";
-    case GLFW_KEY_ENTER: return "Enter";
-    case GLFW_KEY_SPACE: return "Space";
-    case GLFW_KEY_KP_1: return "Keypad1";
-    case GLFW_KEY_KP_3: return "Keypad3";
-    case GLFW_KEY_KP_7: return "Keypad7";
-    default: return "Key" + std::to_string(key);
+    case GLFW_KEY_SLASH:
+      return "/";
+    case GLFW_KEY_ESCAPE:
+      return "Esc";
+    case GLFW_KEY_DELETE:
+      return "Delete";
+    case GLFW_KEY_ENTER:
+      return "Enter";
+    case GLFW_KEY_SPACE:
+      return "Space";
+    case GLFW_KEY_KP_1:
+      return "Keypad1";
+    case GLFW_KEY_KP_3:
+      return "Keypad3";
+    case GLFW_KEY_KP_7:
+      return "Keypad7";
+    default:
+      return "Key" + std::to_string(key);
   }
 }
 

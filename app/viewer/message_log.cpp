@@ -7,7 +7,9 @@ namespace nome::viewer {
 
 void MessageLog::add(MessageLevel level, std::string text) {
   if (is_echoed_) {
-    const char* prefix = level == MessageLevel::error ? "error: " : level == MessageLevel::warning ? "warning: " : "";
+    const char* prefix = level == MessageLevel::error     ? "error: "
+                         : level == MessageLevel::warning ? "warning: "
+                                                          : "";
     std::cerr << "nome: " << prefix << text << "\n";
   }
   if (level == MessageLevel::warning) {

@@ -105,8 +105,10 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     for (const Syntax& s : syntaxes)
       if (words[0].text == s.word) syntax = &s;
     if (!syntax) {
-      fail(words[0].column, "expected a command (set, mode, click, key, action, subdiv, offset, view, "
-                            "screenshot, save, export, quit), found '" + words[0].text + "'");
+      fail(words[0].column,
+           "expected a command (set, mode, click, key, action, subdiv, offset, view, "
+           "screenshot, save, export, quit), found '" +
+               words[0].text + "'");
       continue;
     }
     const std::size_t wanted = 1 + syntax->words + syntax->numbers;
@@ -124,7 +126,8 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
       const Word& w = words[1 + syntax->words + i];
       double value = 0.0;
       if (!parse_number(w.text, value)) {
-        fail(w.column, std::string("expected a number in '") + syntax->expected + "', found '" + w.text + "'");
+        fail(w.column,
+             std::string("expected a number in '") + syntax->expected + "', found '" + w.text + "'");
         is_valid = false;
         break;
       }
@@ -132,7 +135,8 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     }
     if (!is_valid) continue;
     if (command.kind == ScriptCommand::Kind::mode && !is_one_of(command.words[0], modes)) {
-      fail(words[1].column, "expected vertex, face, border or border-partial, found '" + command.words[0] + "'");
+      fail(words[1].column,
+           "expected vertex, face, border or border-partial, found '" + command.words[0] + "'");
       continue;
     }
     if (command.kind == ScriptCommand::Kind::action && !is_one_of(command.words[0], actions)) {

@@ -8,7 +8,20 @@ namespace nome::viewer {
 
 // One line of a viewer script (`nome FILE --script S.txt`): the command word and its arguments.
 struct ScriptCommand {
-  enum class Kind { set, mode, click, key, action, subdiv, offset, view, screenshot, save, export_file, quit };
+  enum class Kind {
+    set,
+    mode,
+    click,
+    key,
+    action,
+    subdiv,
+    offset,
+    view,
+    screenshot,
+    save,
+    export_file,
+    quit
+  };
   Kind kind = Kind::quit;
   std::vector<std::string> words;  // the arguments after the command word
   std::vector<double> numbers;     // the numeric arguments (set: value; click: x y; view: az el; ...)

@@ -20,10 +20,14 @@ bool toggle(std::vector<T>& items, const T& item) {
 
 const char* to_string(SelectionMode mode) {
   switch (mode) {
-    case SelectionMode::vertex: return "vertex";
-    case SelectionMode::face: return "face";
-    case SelectionMode::border: return "border";
-    case SelectionMode::border_partial: return "border-partial";
+    case SelectionMode::vertex:
+      return "vertex";
+    case SelectionMode::face:
+      return "face";
+    case SelectionMode::border:
+      return "border";
+    case SelectionMode::border_partial:
+      return "border-partial";
   }
   return "vertex";
 }
@@ -76,7 +80,8 @@ std::string Selection::click_partial(const BorderLookup& lookup, Index v) {
   if (pending_.size() == 1) return "partial border: pick the other end";
   if (pending_.size() == 2) {
     // Neighbouring ends leave no choice of side (report 7.3.2).
-    if (!lookup.are_adjacent(pending_[0], pending_[1])) return "partial border: pick a vertex on the side to keep";
+    if (!lookup.are_adjacent(pending_[0], pending_[1]))
+      return "partial border: pick a vertex on the side to keep";
     borders_.push_back({{pending_[0], pending_[1]}, false});
     pending_.clear();
     return {};

@@ -28,7 +28,9 @@ class Selection {
   std::string click_border_vertex(const BorderLookup& borders, Index v);
 
   void clear();
-  bool is_empty() const { return vertices_.empty() && faces_.empty() && borders_.empty() && pending_.empty(); }
+  bool is_empty() const {
+    return vertices_.empty() && faces_.empty() && borders_.empty() && pending_.empty();
+  }
 
   const std::vector<Index>& vertices() const { return vertices_; }
   const std::vector<Index>& faces() const { return faces_; }

@@ -70,7 +70,8 @@ Window::Window(GLFWwindow* window, const ViewerOptions& options)
 Window::~Window() = default;
 
 void Window::register_keys() {
-  keys_.add(GLFW_KEY_SLASH, KeyModifier::shift, "show or hide this help", [this] { show_help_ = !show_help_; });
+  keys_.add(GLFW_KEY_SLASH, KeyModifier::shift, "show or hide this help",
+            [this] { show_help_ = !show_help_; });
   keys_.add(GLFW_KEY_F1, 0, "show or hide this help", [this] { show_help_ = !show_help_; });
   keys_.add(GLFW_KEY_O, KeyModifier::control, "open a file", [this] {
     browser_purpose_ = BrowserPurpose::open;
@@ -95,11 +96,13 @@ void Window::register_keys() {
     display_.show_wireframe = !display_.show_faces || display_.show_wireframe;
   });
   keys_.add(GLFW_KEY_S, 0, "smooth / flat shading", [this] {
-    display_.shading = display_.shading == render::Shading::smooth ? render::Shading::flat : render::Shading::smooth;
+    display_.shading =
+        display_.shading == render::Shading::smooth ? render::Shading::flat : render::Shading::smooth;
   });
   keys_.add(GLFW_KEY_X, 0, "back-face culling on / off", [this] {
-    display_.back_faces = display_.back_faces == render::BackFacePolicy::cull ? render::BackFacePolicy::different
-                                                                               : render::BackFacePolicy::cull;
+    display_.back_faces = display_.back_faces == render::BackFacePolicy::cull
+                              ? render::BackFacePolicy::different
+                              : render::BackFacePolicy::cull;
   });
   keys_.add(GLFW_KEY_F, 0, "frame everything", [this] { frame_all(); });
   keys_.add(GLFW_KEY_H, KeyModifier::control, "reset the view", [this] { reset_view(); });
@@ -253,7 +256,8 @@ void Window::refresh_selection() {
   buffers_->set_selected_faces(selection_.faces());
   std::vector<render::CubeMarker> markers;
   const glm::vec3 color = display_.selection_color;
-  for (Index v : selection_.vertices()) markers.push_back({glm::vec3(mesh.position(v)), marker_size(mesh, v), color});
+  for (Index v : selection_.vertices())
+    markers.push_back({glm::vec3(mesh.position(v)), marker_size(mesh, v), color});
   for (Index v : selection_.pending_ends())
     markers.push_back({glm::vec3(mesh.position(v)), marker_size(mesh, v), glm::vec3(0.1f, 0.7f, 0.3f)});
   // The first vertex of each whole border is the zipper's matching point: marked as a cube.
@@ -286,19 +290,29 @@ void Window::click(glm::dvec2 pixel) {
     case SelectionMode::face:
       if (const auto face = pick_face(bvh_, p, pixel)) {
         selection_.click_face(*face);
-        hint = "face " + mesh.face_label(*face) + (is_in(selection_.faces(), *face) ? " selected" : " deselected");
+        hint = "face " + mesh.face_label(*face) +
+               (is_in(selection_.faces(), *face) ? " selected" : " deselected");
       }
       break;
     case SelectionMode::vertex:
       if (const auto v = pick_vertex(mesh, bvh_, p, pixel, pick_pixels)) {
         selection_.click_vertex(*v);
-        hint = "vertex " + mesh.vertex_label(*v) + (is_in(selection_.vertices(), *v) ? " selected" : " deselected");
+        hint = "vertex " + mesh.vertex_label(*v) +
+               (is_in(selection_.vertices(), *v) ? " selected" : " deselected");
       }
       break;
     case SelectionMode::border:
     case SelectionMode::border_partial:
-      if (const auto v = pick_vertex(mesh, bvh_, p, pixel, pick_pixels))
+      if (const auto v = pick_vertex(mesh, bvh_, p, pixel, pick_pixels)) {
+        const std::size_t before = selection_.borders().size();
         hint = selection_.click_border_vertex(*borders_, *v);
+        if (hint.empty() && selection_.borders().size() > before) {
+          const auto& border = selection_.borders().back();
+          hint = std::string(border.is_loop ? "border" : "partial border") + " of " +
+                 std::to_string(border.vertices.size()) + " vertices selected, from " +
+                 mesh.vertex_label(border.vertices.front());
+        }
+      }
       break;
   }
   if (!hint.empty()) log_.info(hint);

@@ -74,7 +74,8 @@ void Window::draw_menu() {
       display_.back_faces = is_culled ? render::BackFacePolicy::cull : render::BackFacePolicy::different;
     bool is_back_colored = display_.back_faces == render::BackFacePolicy::different;
     if (ImGui::MenuItem("Back faces in their own colour", nullptr, &is_back_colored))
-      display_.back_faces = is_back_colored ? render::BackFacePolicy::different : render::BackFacePolicy::same;
+      display_.back_faces =
+          is_back_colored ? render::BackFacePolicy::different : render::BackFacePolicy::same;
     ImGui::MenuItem("Möbius edges", nullptr, &display_.show_mobius_edges);
     ImGui::MenuItem("Borders", nullptr, &display_.show_borders);
     ImGui::MenuItem("Instance colours", nullptr, &display_.use_face_colors);
@@ -109,8 +110,8 @@ void Window::draw_control_panel() {
       if (ImGui::RadioButton(labels[i], &mode, i)) selection_.set_mode(SelectionMode(i));
       if (i % 2 == 0) ImGui::SameLine(130);
     }
-    ImGui::Text("%zu vertices, %zu faces, %zu borders", selection_.vertices().size(), selection_.faces().size(),
-                selection_.borders().size());
+    ImGui::Text("%zu vertices, %zu faces, %zu borders", selection_.vertices().size(),
+                selection_.faces().size(), selection_.borders().size());
     if (ImGui::Button("Clear selection")) {
       selection_.clear();
       refresh_selection();
@@ -183,8 +184,11 @@ void Window::draw_log_panel() {
   }
   for (const Message& m : log_.messages()) {
     const bool is_colored = m.level != MessageLevel::info;
-    if (is_colored) ImGui::PushStyleColor(ImGuiCol_Text, m.level == MessageLevel::error ? error_color : warning_color);
-    const char* prefix = m.level == MessageLevel::error ? "error: " : m.level == MessageLevel::warning ? "warning: " : "";
+    if (is_colored)
+      ImGui::PushStyleColor(ImGuiCol_Text, m.level == MessageLevel::error ? error_color : warning_color);
+    const char* prefix = m.level == MessageLevel::error     ? "error: "
+                         : m.level == MessageLevel::warning ? "warning: "
+                                                            : "";
     if (m.count > 1)
       ImGui::TextWrapped("%s%s (x%zu)", prefix, m.text.c_str(), m.count);
     else

@@ -6,6 +6,7 @@
 
 #include "app/viewer_support.hpp"
 #include "nome/io/read_polygons.hpp"
+#include "nome/query/border_lookup.hpp"
 #include "render/image.hpp"
 
 using namespace nome;
@@ -31,7 +32,8 @@ int count_pixels(const render::Image& image, int r, int g, int b, int tolerance)
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const auto* p = image.pixel(x, y);
-      n += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance && std::abs(p[2] - b) <= tolerance;
+      n += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
+           std::abs(p[2] - b) <= tolerance;
     }
   return n;
 }
@@ -104,4 +106,33 @@ TEST_CASE("a bad script is refused before the window does anything", "[app]") {
   const auto r = run_viewer(assets + "cube.obj --script " + script);
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("script.txt:1:9: expected 'click X Y"));
+}
+
+TEST_CASE("border modes select a whole loop from one click and a segment from three", "[app]") {
+  const std::string dir = nome::test::scratch_dir("viewer_border");
+  const Mesh mesh = build_mesh(read_polygons(assets + "mobius_band.obj"));
+  const auto projection = nome::test::viewer_projection(mesh, 20.0, 35.0);
+  const BorderLookup borders(mesh);
+  // Clickable border vertices, in loop order.
+  std::vector<std::pair<Index, glm::dvec2>> clickable;
+  for (Index v : mesh.loop_vertices(0))
+    if (const auto p = nome::test::click_position(mesh, projection, v)) clickable.emplace_back(v, *p);
+  REQUIRE(clickable.size() >= 8);
+  const auto [a, pa] = clickable[0];
+  const auto [b, pb] = clickable[clickable.size() / 2];
+  const auto [s, ps] = clickable[clickable.size() / 4];
+  const auto expected = borders.segment(a, b, s);
+  REQUIRE(expected);
+  const std::string script =
+      write_script(dir, "view 20 35\nmode border\n" + click_line(pa) + "mode border-partial\n" +
+                            click_line(pa) + click_line(pa) + click_line(pb) + click_line(ps) +
+                            "screenshot " + dir + "/border.png\nquit\n");
+  const auto r = run_viewer(assets + "mobius_band.obj --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("border of " + std::to_string(mesh.loop_vertices(0).size()) +
+                                    " vertices selected, from " + mesh.vertex_label(a)));
+  CHECK_THAT(r.err, Catch::Contains("border deselected"));
+  CHECK_THAT(r.err, Catch::Contains("partial border of " + std::to_string(expected->size()) +
+                                    " vertices selected, from " + mesh.vertex_label(a)));
 }
