@@ -127,12 +127,15 @@ void Window::open(const std::filesystem::path& path) {
     file_time_ = std::filesystem::last_write_time(path, ec);
     recent_.add(path);
     selection_.clear();
-    has_geometry_ = false;
-    refresh_geometry();
+    shown_.reset();
+    has_request_ = false;
+    update_stage();
+    // The first picture of a file waits for its geometry, so that it can be framed.
+    while (job_.is_busy() && !shown_) update_stage();
     reset_view();
-    const Mesh& mesh = session_->display_mesh();
-    log_.info("opened " + path.string() + " (" + std::to_string(mesh.num_vertices()) + " vertices, " +
-              std::to_string(mesh.num_faces()) + " faces)");
+    const PolygonSoup& soup = session_->scene_soup();
+    log_.info("opened " + path.string() + " (" + std::to_string(soup.num_vertices()) + " vertices, " +
+              std::to_string(soup.num_faces()) + " faces)");
     glfwSetWindowTitle(window_, ("Nome - " + path.filename().string()).c_str());
   } catch (const std::exception& e) {
     log_.error(e.what());
@@ -150,7 +153,6 @@ void Window::poll_file_changes() {
   file_time_ = time;
   try {
     session_->reload();
-    refresh_geometry();
     log_.info("reloaded " + session_->path().filename().string());
   } catch (const std::exception& e) {
     // The last good geometry stays on screen.
@@ -159,12 +161,12 @@ void Window::poll_file_changes() {
 }
 
 void Window::export_mesh(const std::filesystem::path& path) {
-  if (!session_) throw InvalidInputError("export: no file is open");
+  if (!shown_mesh()) throw InvalidInputError("export: nothing is shown");
   const std::string ext = lower_extension(path);
   if (ext == ".obj")
-    write_obj(path, session_->display_mesh());
+    write_obj(path, *shown_mesh());
   else if (ext == ".stl")
-    write_stl(path, session_->display_mesh());
+    write_stl(path, *shown_mesh());
   else
     throw InvalidInputError("export: the file must end in .stl or .obj, found '" + path.string() + "'");
   log_.info("exported " + path.string());
@@ -217,8 +219,8 @@ ScreenProjection Window::projection() const {
 }
 
 void Window::frame_all() {
-  if (!session_) return;
-  camera_.fit(session_->display_mesh().positions(), aspect());
+  if (!shown_mesh()) return;
+  camera_.fit(shown_mesh()->positions(), aspect());
 }
 
 void Window::reset_view() {
@@ -232,27 +234,47 @@ void Window::set_view(double azimuth, double elevation) {
 
 // ------------------------------------------------------------------------------------ geometry, picks
 
-void Window::refresh_geometry() {
+void Window::update_stage() {
   if (!session_) return;
-  const bool is_new_topology = !has_geometry_ || session_->topology_version() != shown_topology_;
-  if (has_geometry_ && session_->geometry_version() == shown_geometry_) return;
-  const Mesh& mesh = session_->display_mesh();
-  buffers_ = std::make_unique<render::MeshBuffers>(render::build_display_data(mesh));
-  bvh_ = TriangleBvh(mesh);
-  borders_.emplace(mesh);
-  if (is_new_topology && !selection_.is_empty()) {
+  if (!has_request_ || session_->version() != requested_version_ || settings_ != requested_settings_) {
+    // A newer request supersedes the one in flight; the scene's polygons are copied for the job.
+    requested_version_ = session_->version();
+    requested_settings_ = settings_;
+    has_request_ = true;
+    job_.submit([this, soup = session_->scene_soup(), settings = settings_](std::stop_token stop) {
+      return pipeline_.run(soup, settings, stop);
+    });
+  }
+  // Short work shows in the frame that asked for it; longer work leaves the last picture up meanwhile.
+  try {
+    if (auto result = job_.take(std::chrono::milliseconds(30)); result && *result)
+      show_result(std::move(**result));
+  } catch (const std::exception& e) {
+    // The last good geometry stays on screen.
+    log_.error(e.what());
+  }
+}
+
+void Window::show_result(StageResult result) {
+  const Mesh* old = shown_mesh();
+  const Mesh& mesh = *result.mesh;
+  const bool is_same_topology = old && old->num_vertices() == mesh.num_vertices() &&
+                                old->face_offsets() == mesh.face_offsets() &&
+                                old->corner_vertices() == mesh.corner_vertices();
+  if (!is_same_topology && !selection_.is_empty()) {
     selection_.clear();
     log_.info("selection cleared: the displayed mesh changed its connectivity");
   }
-  shown_geometry_ = session_->geometry_version();
-  shown_topology_ = session_->topology_version();
-  has_geometry_ = true;
+  for (const std::string& w : result.warnings) log_.warning(w);
+  buffers_ = std::make_unique<render::MeshBuffers>(result.display);
+  topology_.reset();
+  shown_ = std::move(result);
   refresh_selection();
 }
 
 void Window::refresh_selection() {
-  if (!session_ || !buffers_) return;
-  const Mesh& mesh = session_->display_mesh();
+  if (!shown_mesh() || !buffers_) return;
+  const Mesh& mesh = *shown_mesh();
   buffers_->set_selected_faces(selection_.faces());
   std::vector<render::CubeMarker> markers;
   const glm::vec3 color = display_.selection_color;
@@ -279,8 +301,9 @@ void Window::refresh_selection() {
 }
 
 void Window::click(glm::dvec2 pixel) {
-  if (!session_) return;
-  const Mesh& mesh = session_->display_mesh();
+  if (!shown_mesh()) return;
+  const Mesh& mesh = *shown_mesh();
+  const TriangleBvh& bvh = *shown_->bvh;
   const ScreenProjection p = projection();
   std::string hint;
   auto is_in = [](const std::vector<Index>& items, Index i) {
@@ -288,14 +311,14 @@ void Window::click(glm::dvec2 pixel) {
   };
   switch (selection_.mode()) {
     case SelectionMode::face:
-      if (const auto face = pick_face(bvh_, p, pixel)) {
+      if (const auto face = pick_face(bvh, p, pixel)) {
         selection_.click_face(*face);
         hint = "face " + mesh.face_label(*face) +
                (is_in(selection_.faces(), *face) ? " selected" : " deselected");
       }
       break;
     case SelectionMode::vertex:
-      if (const auto v = pick_vertex(mesh, bvh_, p, pixel, pick_pixels)) {
+      if (const auto v = pick_vertex(mesh, bvh, p, pixel, pick_pixels)) {
         selection_.click_vertex(*v);
         hint = "vertex " + mesh.vertex_label(*v) +
                (is_in(selection_.vertices(), *v) ? " selected" : " deselected");
@@ -303,9 +326,9 @@ void Window::click(glm::dvec2 pixel) {
       break;
     case SelectionMode::border:
     case SelectionMode::border_partial:
-      if (const auto v = pick_vertex(mesh, bvh_, p, pixel, pick_pixels)) {
+      if (const auto v = pick_vertex(mesh, bvh, p, pixel, pick_pixels)) {
         const std::size_t before = selection_.borders().size();
-        hint = selection_.click_border_vertex(*borders_, *v);
+        hint = selection_.click_border_vertex(*shown_->borders, *v);
         if (hint.empty() && selection_.borders().size() > before) {
           const auto& border = selection_.borders().back();
           hint = std::string(border.is_loop ? "border" : "partial border") + " of " +
@@ -321,7 +344,8 @@ void Window::click(glm::dvec2 pixel) {
 
 void Window::double_click(glm::dvec2 pixel) {
   // The orbit centre moves to the picked point; the eye stays where it is.
-  const auto hit = bvh_.cast_nearest(ray_through_pixel(projection(), pixel));
+  if (!shown_) return;
+  const auto hit = shown_->bvh->cast_nearest(ray_through_pixel(projection(), pixel));
   if (!hit) return;
   const glm::dvec3 eye = camera_.eye();
   camera_.target = hit->point;
@@ -391,7 +415,8 @@ void Window::handle_keys() {
 
 void Window::run_script_step() {
   // The first frames lay out the panels; a screenshot taken then would show them half-built.
-  if (script_next_ >= script_.size() || frames_drawn_ < 3 || pending_screenshot_) return;
+  // Each command sees the result of the one before: the stage being computed is awaited.
+  if (script_next_ >= script_.size() || frames_drawn_ < 3 || pending_screenshot_ || job_.is_busy()) return;
   const ScriptCommand& command = script_[script_next_++];
   try {
     if (!run_command(command)) {
@@ -447,8 +472,8 @@ bool Window::frame() {
   poll_file_changes();
   handle_mouse();
   handle_keys();
+  update_stage();
   run_script_step();
-  refresh_geometry();
   draw_scene();
   draw_panels();
   ImGui::Render();

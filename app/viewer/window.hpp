@@ -19,6 +19,7 @@
 #include "render/line_set.hpp"
 #include "render/mesh_buffers.hpp"
 #include "render/renderer.hpp"
+#include "viewer/background_job.hpp"
 #include "viewer/file_browser.hpp"
 #include "viewer/key_registry.hpp"
 #include "viewer/message_log.hpp"
@@ -26,6 +27,7 @@
 #include "viewer/script.hpp"
 #include "viewer/selection.hpp"
 #include "viewer/session.hpp"
+#include "viewer/stage_pipeline.hpp"
 #include "viewer/viewer.hpp"
 
 struct GLFWwindow;
@@ -66,7 +68,9 @@ class Window {
   void run_script_step();
   bool run_command(const ScriptCommand& command);
   // geometry on screen
-  void refresh_geometry();
+  void update_stage();
+  void show_result(StageResult result);
+  const Mesh* shown_mesh() const { return shown_ ? shown_->mesh.get() : nullptr; }
   void refresh_selection();
   ScreenProjection projection() const;
   glm::dvec2 window_size() const;
@@ -88,6 +92,7 @@ class Window {
   void draw_status_bar();
   void draw_help_overlay();
   void draw_quit_prompt();
+  void draw_progress();
   void poll_file_changes();
 
   GLFWwindow* window_;
@@ -102,13 +107,17 @@ class Window {
   std::unique_ptr<render::LineSet> border_lines_;
   render::Camera camera_;
   render::DisplaySettings display_;
-  std::uint64_t shown_geometry_ = 0, shown_topology_ = 0;
-  bool has_geometry_ = false;
 
-  std::optional<TopologyReport> topology_;  // of the displayed mesh, at topology_version_
-  std::uint64_t topology_version_ = 0;
-  TriangleBvh bvh_;
-  std::optional<BorderLookup> borders_;
+  // The displayed stage: computed by jobs off the UI thread, shown when the latest one finishes.
+  StageSettings settings_;
+  StagePipeline pipeline_;
+  BackgroundJob<std::optional<StageResult>> job_;
+  std::uint64_t requested_version_ = 0;
+  StageSettings requested_settings_;
+  bool has_request_ = false;
+  std::optional<StageResult> shown_;
+
+  std::optional<TopologyReport> topology_;  // of the displayed mesh
   Selection selection_;
   MessageLog log_;
   KeyRegistry keys_;

@@ -28,6 +28,7 @@ void Window::draw_panels() {
   draw_status_bar();
   if (show_help_) draw_help_overlay();
   draw_quit_prompt();
+  draw_progress();
   if (const auto chosen = browser_.draw()) {
     if (browser_purpose_ == BrowserPurpose::open) {
       open(*chosen);
@@ -128,7 +129,7 @@ void Window::draw_control_panel() {
 }
 
 void Window::draw_topology_panel() {
-  if (!session_) return;
+  if (!shown_mesh()) return;
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(size.x - 328, 30), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(320, 0), ImGuiCond_FirstUseEver);
@@ -136,10 +137,7 @@ void Window::draw_topology_panel() {
     ImGui::End();
     return;
   }
-  if (!topology_ || topology_version_ != session_->geometry_version()) {
-    topology_ = topology_report(session_->display_mesh());
-    topology_version_ = session_->geometry_version();
-  }
+  if (!topology_) topology_ = topology_report(*shown_mesh());
   const TopologyReport& report = *topology_;
   ImGui::Text("V %u  E %u  F %u  chi %lld", report.vertices, report.edges, report.faces, report.chi);
   ImGui::Text("%s, %u borders, %u Möbius edges", report.orientable ? "orientable" : "non-orientable",
@@ -207,8 +205,8 @@ void Window::draw_status_bar() {
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::Begin("##status", nullptr, flags);
-  if (session_) {
-    const Mesh& mesh = session_->display_mesh();
+  if (session_ && shown_mesh()) {
+    const Mesh& mesh = *shown_mesh();
     ImGui::Text("%s%s | %u V, %u F | %s mode", session_->path().filename().string().c_str(),
                 session_->is_modified() ? " *" : "", mesh.num_vertices(), mesh.num_faces(),
                 to_string(selection_.mode()));
@@ -261,6 +259,21 @@ void Window::draw_help_overlay() {
     }
     ImGui::EndTable();
   }
+  ImGui::End();
+}
+
+void Window::draw_progress() {
+  if (!job_.is_busy() || job_.seconds_running() < 0.03) return;
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, 40.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  ImGui::Begin("##progress", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav);
+  const char* spinner = "|/-\\";
+  ImGui::Text("%c computing the %s ... %.1f s", spinner[int(job_.seconds_running() * 8.0) % 4], "stage",
+              job_.seconds_running());
   ImGui::End();
 }
 

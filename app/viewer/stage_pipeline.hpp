@@ -1,0 +1,45 @@
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "nome/mesh/mesh.hpp"
+#include "nome/query/border_lookup.hpp"
+#include "nome/query/triangle_bvh.hpp"
+#include "render/mesh_display_data.hpp"
+
+namespace nome::viewer {
+
+// The control panel's pipeline settings: which stage the window shows and how it is made.
+struct StageSettings {
+  bool operator==(const StageSettings&) const = default;
+};
+
+// Everything a frame needs of a new displayed mesh, computed off the UI thread: the mesh, its GPU-ready
+// arrays and the picking structures. Only the upload to GL is left to the UI thread.
+struct StageResult {
+  std::shared_ptr<const Mesh> mesh;
+  render::MeshDisplayData display;
+  std::shared_ptr<const TriangleBvh> bvh;
+  std::shared_ptr<const BorderLookup> borders;
+  std::vector<std::string> warnings;
+  double seconds = 0.0;
+};
+
+// Turns the scene's polygons into the displayed stage. Safe to call from background jobs: runs are
+// serialised (the kernel stages keep caches between runs), and a run whose stop was requested before it
+// began, or between two stages, gives up and returns none.
+class StagePipeline {
+ public:
+  // Throws the kernel's errors (TopologyError naming the elements, BudgetError).
+  std::optional<StageResult> run(const PolygonSoup& scene, const StageSettings& settings, std::stop_token stop);
+
+ private:
+  std::mutex mutex_;
+};
+
+}  // namespace nome::viewer
