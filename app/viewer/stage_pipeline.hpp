@@ -14,8 +14,16 @@
 
 namespace nome::viewer {
 
+// The stage the window shows (report 7.2's operations; DESIGN.md's data flow).
+enum class Stage { scene, merged };
+
+const char* to_string(Stage stage);
+
 // The control panel's pipeline settings: which stage the window shows and how it is made.
 struct StageSettings {
+  Stage stage = Stage::scene;
+  double merge_tolerance = 0.0;  // 0: relative to the size of the scene (MergeOptions)
+
   bool operator==(const StageSettings&) const = default;
 };
 
@@ -27,6 +35,7 @@ struct StageResult {
   std::shared_ptr<const TriangleBvh> bvh;
   std::shared_ptr<const BorderLookup> borders;
   std::vector<std::string> warnings;
+  std::vector<std::string> notes;  // what the stages did, for the log
   double seconds = 0.0;
 };
 
@@ -36,7 +45,8 @@ struct StageResult {
 class StagePipeline {
  public:
   // Throws the kernel's errors (TopologyError naming the elements, BudgetError).
-  std::optional<StageResult> run(const PolygonSoup& scene, const StageSettings& settings, std::stop_token stop);
+  std::optional<StageResult> run(const PolygonSoup& scene, const StageSettings& settings,
+                                 std::stop_token stop);
 
  private:
   std::mutex mutex_;

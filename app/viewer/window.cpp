@@ -266,6 +266,7 @@ void Window::show_result(StageResult result) {
     log_.info("selection cleared: the displayed mesh changed its connectivity");
   }
   for (const std::string& w : result.warnings) log_.warning(w);
+  for (const std::string& note : result.notes) log_.info(note);
   buffers_ = std::make_unique<render::MeshBuffers>(result.display);
   topology_.reset();
   shown_ = std::move(result);
@@ -456,8 +457,13 @@ bool Window::run_command(const ScriptCommand& c) {
     case Kind::quit:
       should_close_ = true;
       return true;
-    case Kind::set:
     case Kind::action:
+      if (c.words[0] == "merge") {
+        settings_.stage = Stage::merged;
+        return true;
+      }
+      throw InvalidInputError("action " + c.words[0] + " needs a scene file (.nome) open");
+    case Kind::set:
     case Kind::subdiv:
     case Kind::offset:
     case Kind::save:

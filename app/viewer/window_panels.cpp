@@ -118,6 +118,18 @@ void Window::draw_control_panel() {
       refresh_selection();
     }
   }
+  if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen)) {
+    int stage = int(settings_.stage);
+    const char* stages[] = {to_string(Stage::scene), to_string(Stage::merged)};
+    if (ImGui::Combo("show", &stage, stages, IM_ARRAYSIZE(stages))) settings_.stage = Stage(stage);
+    if (ImGui::Button("Merge")) settings_.stage = Stage::merged;
+    ImGui::SameLine();
+    float tolerance = float(settings_.merge_tolerance);
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::InputFloat("tolerance", &tolerance, 0.0f, 0.0f, "%.5f", ImGuiInputTextFlags_EnterReturnsTrue))
+      settings_.merge_tolerance = std::max(0.0f, tolerance);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: a thousandth of the scene's size");
+  }
   if (ImGui::CollapsingHeader("Colours")) {
     ImGui::ColorEdit3("default", &display_.front_color.x, ImGuiColorEditFlags_NoInputs);
     ImGui::ColorEdit3("back faces", &display_.back_color.x, ImGuiColorEditFlags_NoInputs);

@@ -136,3 +136,21 @@ TEST_CASE("border modes select a whole loop from one click and a segment from th
   CHECK_THAT(r.err, Catch::Contains("partial border of " + std::to_string(expected->size()) +
                                     " vertices selected, from " + mesh.vertex_label(a)));
 }
+
+TEST_CASE("the merge action shows the merged stage, which export writes", "[app]") {
+  const std::string dir = nome::test::scratch_dir("viewer_merge");
+  // Two unit squares side by side, each with its own copy of the shared edge.
+  std::ofstream(dir + "/pieces.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                        "v 1 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\n"
+                                        "f 1 2 3 4\nf 5 6 7 8\n";
+  const std::string script =
+      write_script(dir, "export " + dir + "/before.obj\naction merge\nexport " + dir + "/after.obj\nquit\n");
+  const auto r = run_viewer(dir + "/pieces.obj --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(build_mesh(read_polygons(dir + "/before.obj")).num_vertices() == 8);
+  const Mesh merged = build_mesh(read_polygons(dir + "/after.obj"));
+  CHECK(merged.num_vertices() == 6);
+  CHECK(merged.num_components() == 1);
+  CHECK_THAT(r.err, Catch::Contains("merged 1 edge pairs"));
+}
