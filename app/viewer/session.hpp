@@ -2,32 +2,62 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 
+#include "nome/edit/document.hpp"
 #include "nome/mesh/polygon_soup.hpp"
+#include "nome/ops/zipper.hpp"
 
 namespace nome::viewer {
 
-// The file open in a window (DESIGN.md "App": the document side): what it says, as the scene's polygons,
-// and whether it has unsaved changes. The stages after the scene are the StagePipeline's.
+// Which faces of scene_soup() are what: the scene's first, then the consolidated, then the temporary.
+struct FaceParts {
+  Index scene = 0;
+  Index consolidated = 0;
+  Index temporary = 0;
+};
+
+// The file open in a window (DESIGN.md "App": the document side): its geometry and the editing Document
+// over it (temporary and consolidated faces, deletions, undo), and whether there are unsaved changes.
+// Edits name vertices and faces as the displayed mesh does (hierarchical names; `v12`, `f3` for flat files).
 class Session {
  public:
-  // Reads a file (.obj, .stl). Throws nome::Error with `file:line:col: message` when it cannot.
+  // Reads flat geometry (.obj .stl .sif). Throws nome::Error with `file:line:col: message` when it cannot.
   static Session open(const std::filesystem::path& path);
 
   const std::filesystem::path& path() const { return path_; }
-  // The scene's polygons: every top-level instance as one part of one soup.
+  // What the scene stage shows: the scene without its deleted faces, then the consolidated and the
+  // temporary faces (face_parts() says which).
   const PolygonSoup& scene_soup() const { return soup_; }
+  const FaceParts& face_parts() const { return parts_; }
   // Changes whenever scene_soup() does.
   std::uint64_t version() const { return version_; }
-  // Unsaved changes (edits or slider moves since the last save or load).
+  // Unsaved changes (edits since the last save or load).
   bool is_modified() const { return is_modified_; }
+  const Document& document() const { return document_; }
 
-  // Reads the file again; on an error the session keeps what it had and rethrows.
+  // Edits of report 7.3.3, on vertices and faces of `displayed` (the scene or merged stage). Each returns
+  // what happened; a refused edit changes nothing.
+  EditOutcome add_polygon(const Mesh& displayed, std::span<const Index> vertices);
+  EditOutcome accept_temporary();
+  EditOutcome clear_temporary();
+  EditOutcome delete_faces(const Mesh& displayed, std::span<const Index> faces);
+  EditOutcome zipper(const Mesh& displayed, const BorderSelection& a, const BorderSelection& b,
+                     const ZipperOptions& options);
+  bool undo();
+  bool redo();
+
+  // Reads the file again, keeping the edits; on an error the session keeps what it had and rethrows.
   void reload();
 
  private:
+  EditOutcome changed(EditOutcome outcome);
+  void update_soup();
+
   std::filesystem::path path_;
+  Document document_;
   PolygonSoup soup_;
+  FaceParts parts_;
   std::uint64_t version_ = 0;
   bool is_modified_ = false;
 };

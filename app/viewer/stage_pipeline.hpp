@@ -11,6 +11,7 @@
 #include "nome/query/border_lookup.hpp"
 #include "nome/query/triangle_bvh.hpp"
 #include "render/mesh_display_data.hpp"
+#include "viewer/session.hpp"
 
 namespace nome::viewer {
 
@@ -36,6 +37,7 @@ struct StageResult {
   std::shared_ptr<const BorderLookup> borders;
   std::vector<std::string> warnings;
   std::vector<std::string> notes;  // what the stages did, for the log
+  FaceParts parts;                 // of the scene soup it was made from (faces keep their order)
   double seconds = 0.0;
 };
 

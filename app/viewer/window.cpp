@@ -41,6 +41,20 @@ float marker_size(const Mesh& mesh, Index v) {
   return count ? float(0.04 * sum / count) : 0.01f;
 }
 
+// A selected border as the zipper reads it: whole loops from their first vertex, segments end to end
+// in the direction they were picked.
+BorderSelection zipper_border(const BorderLookup& borders, const Selection::Border& border) {
+  BorderSelection out;
+  out.start = border.vertices.front();
+  out.end = border.is_loop ? out.start : border.vertices.back();
+  if (!border.is_loop && border.vertices.size() > 1) {
+    const auto loop = borders.loop_vertices(borders.loop_of(out.start));
+    const auto at = std::find(loop.begin(), loop.end(), out.start) - loop.begin();
+    out.backwards = loop[(at + 1) % loop.size()] != border.vertices[1];
+  }
+  return out;
+}
+
 }  // namespace
 
 Window::Window(GLFWwindow* window, const ViewerOptions& options)
@@ -111,6 +125,13 @@ void Window::register_keys() {
   keys_.add(GLFW_KEY_KP_7, 0, "view from the top", [this] { set_view(0.0, 90.0); });
   keys_.add(GLFW_KEY_P, 0, "save a screenshot PNG", [this] { pending_screenshot_ = next_screenshot_path(); });
   keys_.add(GLFW_KEY_L, 0, "show or hide the log panel", [this] { show_log_ = !show_log_; });
+  keys_.add(GLFW_KEY_Z, KeyModifier::control, "undo", [this] { run_action("undo"); });
+  keys_.add(GLFW_KEY_Y, KeyModifier::control, "redo", [this] { run_action("redo"); });
+  keys_.add(GLFW_KEY_ENTER, 0, "add a polygon through the selected vertices",
+            [this] { run_action("add-polygon"); });
+  keys_.add(GLFW_KEY_A, KeyModifier::control, "accept the temporary faces (consolidate)",
+            [this] { run_action("accept"); });
+  keys_.add(GLFW_KEY_DELETE, 0, "delete the selected faces", [this] { run_action("delete"); });
   keys_.add(GLFW_KEY_ESCAPE, 0, "clear the selection", [this] {
     selection_.clear();
     refresh_selection();
@@ -241,8 +262,11 @@ void Window::update_stage() {
     requested_version_ = session_->version();
     requested_settings_ = settings_;
     has_request_ = true;
-    job_.submit([this, soup = session_->scene_soup(), settings = settings_](std::stop_token stop) {
-      return pipeline_.run(soup, settings, stop);
+    job_.submit([this, soup = session_->scene_soup(), parts = session_->face_parts(),
+                 settings = settings_](std::stop_token stop) {
+      auto result = pipeline_.run(soup, settings, stop);
+      if (result) result->parts = parts;
+      return result;
     });
   }
   // Short work shows in the frame that asked for it; longer work leaves the last picture up meanwhile.
@@ -270,7 +294,82 @@ void Window::show_result(StageResult result) {
   buffers_ = std::make_unique<render::MeshBuffers>(result.display);
   topology_.reset();
   shown_ = std::move(result);
+  apply_face_colors();
   refresh_selection();
+}
+
+void Window::apply_face_colors() {
+  if (!shown_ || !buffers_) return;
+  // Faces keep their order through the scene and merged stages: the edited ones take their colours.
+  auto colors = shown_->display.face_colors;
+  const FaceParts& parts = shown_->parts;
+  const bool is_edit_stage = settings_.stage == Stage::scene || settings_.stage == Stage::merged;
+  if (is_edit_stage && colors.size() == std::size_t(parts.scene) + parts.consolidated + parts.temporary) {
+    auto paint = [&](Index first, Index count, glm::vec3 c) {
+      for (Index f = first; f < first + count; ++f)
+        colors[f] = {std::uint8_t(c.r * 255.0f + 0.5f), std::uint8_t(c.g * 255.0f + 0.5f),
+                     std::uint8_t(c.b * 255.0f + 0.5f), 255};
+    };
+    paint(parts.scene, parts.consolidated, consolidated_color_);
+    paint(parts.scene + parts.consolidated, parts.temporary, temporary_color_);
+  }
+  buffers_->set_face_colors(colors);
+}
+
+bool Window::can_edit() const {
+  return session_ && shown_ && (settings_.stage == Stage::scene || settings_.stage == Stage::merged);
+}
+
+bool Window::run_action(const std::string& action) {
+  if (action == "merge") {
+    settings_.stage = Stage::merged;
+    return true;
+  }
+  if (!session_) {
+    log_.error(action + ": no file is open");
+    return false;
+  }
+  EditOutcome outcome{false, {}};
+  if (action == "undo") {
+    outcome = {session_->undo(), "nothing to undo"};
+    if (outcome.applied) outcome.message = "undone";
+  } else if (action == "redo") {
+    outcome = {session_->redo(), "nothing to redo"};
+    if (outcome.applied) outcome.message = "redone";
+  } else if (action == "accept") {
+    outcome = session_->accept_temporary();
+  } else if (action == "clear") {
+    outcome = session_->clear_temporary();
+  } else if (!can_edit()) {
+    log_.error(action + ": edits work on the scene or merged stage");
+    return false;
+  } else if (action == "add-polygon") {
+    outcome = session_->add_polygon(*shown_mesh(), selection_.vertices());
+  } else if (action == "delete") {
+    outcome = session_->delete_faces(*shown_mesh(), selection_.faces());
+  } else if (action == "zip") {
+    const auto& borders = selection_.borders();
+    if (borders.size() != 2) {
+      log_.error("zip: select two borders first (border modes), found " + std::to_string(borders.size()));
+      return false;
+    }
+    outcome = session_->zipper(*shown_mesh(), zipper_border(*shown_->borders, borders[0]),
+                               zipper_border(*shown_->borders, borders[1]), zipper_options_);
+  } else {
+    log_.error("unknown action '" + action + "'");
+    return false;
+  }
+  if (!outcome.applied) {
+    log_.error(action + ": " + outcome.message);
+    return false;
+  }
+  log_.info(action + ": " + (outcome.message.empty() ? std::string("done") : outcome.message));
+  // The picked elements went into the edit (or went away with it).
+  if (action == "add-polygon" || action == "delete" || action == "zip") {
+    selection_.clear();
+    refresh_selection();
+  }
+  return true;
 }
 
 void Window::refresh_selection() {
@@ -458,11 +557,7 @@ bool Window::run_command(const ScriptCommand& c) {
       should_close_ = true;
       return true;
     case Kind::action:
-      if (c.words[0] == "merge") {
-        settings_.stage = Stage::merged;
-        return true;
-      }
-      throw InvalidInputError("action " + c.words[0] + " needs a scene file (.nome) open");
+      return run_action(c.words[0]);
     case Kind::set:
     case Kind::subdiv:
     case Kind::offset:

@@ -64,6 +64,12 @@ class Window {
   void handle_keys();
   void click(glm::dvec2 pixel);
   void double_click(glm::dvec2 pixel);
+  // editing (report 7.3.3)
+  bool can_edit() const;
+  // "add-polygon", "accept", "clear", "delete", "zip", "merge", "undo", "redo": from buttons, keys and
+  // scripts. Returns false when the action was refused (the log says why).
+  bool run_action(const std::string& action);
+  void apply_face_colors();
   // script
   void run_script_step();
   bool run_command(const ScriptCommand& command);
@@ -116,6 +122,9 @@ class Window {
   StageSettings requested_settings_;
   bool has_request_ = false;
   std::optional<StageResult> shown_;
+  ZipperOptions zipper_options_;
+  glm::vec3 consolidated_color_{0.62f, 0.42f, 0.86f};
+  glm::vec3 temporary_color_{0.30f, 0.76f, 0.42f};
 
   std::optional<TopologyReport> topology_;  // of the displayed mesh
   Selection selection_;

@@ -62,6 +62,14 @@ void Window::draw_menu() {
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) request_quit();
     ImGui::EndMenu();
   }
+  if (ImGui::BeginMenu("Edit")) {
+    const bool has_document = session_.has_value();
+    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, has_document && session_->document().can_undo()))
+      run_action("undo");
+    if (ImGui::MenuItem("Redo", "Ctrl+Y", false, has_document && session_->document().can_redo()))
+      run_action("redo");
+    ImGui::EndMenu();
+  }
   if (ImGui::BeginMenu("View")) {
     bool is_wire = display_.show_wireframe;
     if (ImGui::MenuItem("Faces", "W", &display_.show_faces) && !display_.show_faces)
@@ -99,7 +107,7 @@ void Window::draw_menu() {
 
 void Window::draw_control_panel() {
   ImGui::SetNextWindowPos(ImVec2(8, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(280, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Controls")) {
     ImGui::End();
     return;
@@ -130,12 +138,39 @@ void Window::draw_control_panel() {
       settings_.merge_tolerance = std::max(0.0f, tolerance);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: a thousandth of the scene's size");
   }
+  if (ImGui::CollapsingHeader("Edit", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::BeginDisabled(!can_edit());
+    if (ImGui::Button("Add polygon")) run_action("add-polygon");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("through the selected vertices, in click order (Enter)");
+    ImGui::SameLine();
+    if (ImGui::Button("Delete faces")) run_action("delete");
+    if (ImGui::Button("Zip borders")) run_action("zip");
+    ImGui::SameLine();
+    float penalty = float(zipper_options_.triangle_penalty);
+    ImGui::SetNextItemWidth(110);
+    if (ImGui::SliderFloat("triangle penalty", &penalty, 1.0f, 3.0f, "%.2f"))
+      zipper_options_.triangle_penalty = penalty;
+    ImGui::EndDisabled();
+    ImGui::BeginDisabled(!session_ || session_->document().temporary_faces().empty());
+    if (ImGui::Button("Accept")) run_action("accept");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("move the temporary faces into the consolidated mesh");
+    ImGui::SameLine();
+    if (ImGui::Button("Clear temporary")) run_action("clear");
+    ImGui::EndDisabled();
+    if (session_)
+      ImGui::Text(
+          "%zu temporary, %zu consolidated, %zu deleted", session_->document().temporary_faces().size(),
+          session_->document().consolidated_faces().size(), session_->document().deleted_faces().size());
+  }
   if (ImGui::CollapsingHeader("Colours")) {
     ImGui::ColorEdit3("default", &display_.front_color.x, ImGuiColorEditFlags_NoInputs);
     ImGui::ColorEdit3("back faces", &display_.back_color.x, ImGuiColorEditFlags_NoInputs);
     if (ImGui::ColorEdit3("selected", &display_.selection_color.x, ImGuiColorEditFlags_NoInputs))
       refresh_selection();
     ImGui::ColorEdit3("background", &display_.background.x, ImGuiColorEditFlags_NoInputs);
+    bool is_recoloured = ImGui::ColorEdit3("temporary", &temporary_color_.x, ImGuiColorEditFlags_NoInputs);
+    is_recoloured |= ImGui::ColorEdit3("consolidated", &consolidated_color_.x, ImGuiColorEditFlags_NoInputs);
+    if (is_recoloured) apply_face_colors();
   }
   ImGui::End();
 }

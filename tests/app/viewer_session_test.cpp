@@ -7,6 +7,7 @@
 #include "app/viewer_support.hpp"
 #include "nome/io/read_polygons.hpp"
 #include "nome/query/border_lookup.hpp"
+#include "nome/query/pick.hpp"
 #include "render/image.hpp"
 
 using namespace nome;
@@ -153,4 +154,57 @@ TEST_CASE("the merge action shows the merged stage, which export writes", "[app]
   CHECK(merged.num_vertices() == 6);
   CHECK(merged.num_components() == 1);
   CHECK_THAT(r.err, Catch::Contains("merged 1 edge pairs"));
+}
+
+TEST_CASE("a session deletes a face, undoes and redoes it, then fills the hole and accepts", "[app]") {
+  const std::string dir = nome::test::scratch_dir("viewer_edit");
+  const Mesh cube = build_mesh(read_polygons(assets + "cube.obj"));
+  const auto projection = nome::test::viewer_projection(cube, 30.0, 25.0);
+  const TriangleBvh bvh(cube);
+  // A face in full view, clicked at its centre.
+  Index face = no_index;
+  glm::dvec2 face_click(0.0);
+  for (Index f = 0; f < cube.num_faces() && face == no_index; ++f) {
+    Vec3 centre(0.0);
+    for (Index v : cube.face_vertices(f)) centre += cube.position(v) / double(cube.face_degree(f));
+    const auto pixel = project_to_pixel(projection, centre);
+    if (pixel && pick_face(bvh, projection, glm::dvec2(*pixel)) == f) {
+      face = f;
+      face_click = glm::round(glm::dvec2(*pixel));
+    }
+  }
+  REQUIRE(face != no_index);
+  // Three corners of the hole, clicked on the cube without that face.
+  PolygonSoup holed = read_polygons(assets + "cube.obj");
+  PolygonSoup without;
+  without.positions = holed.positions;
+  for (Index f = 0; f < holed.num_faces(); ++f)
+    if (f != face)
+      without.add_face(std::span(holed.face_vertices.data() + holed.face_offsets[f],
+                                 holed.face_offsets[f + 1] - holed.face_offsets[f]));
+  const Mesh open_cube = build_mesh(without);
+  std::string corner_clicks;
+  int corners = 0;
+  for (Index v : cube.face_vertices(face)) {
+    if (corners == 3) break;
+    if (const auto p = nome::test::click_position(open_cube, projection, v)) {
+      corner_clicks += click_line(*p);
+      ++corners;
+    }
+  }
+  REQUIRE(corners == 3);
+  const std::string script = write_script(
+      dir, "view 30 25\nmode face\n" + click_line(face_click) + "action delete\nexport " + dir +
+               "/deleted.obj\naction undo\nexport " + dir + "/undone.obj\naction redo\nmode vertex\n" +
+               corner_clicks + "action add-polygon\naction accept\nscreenshot " + dir +
+               "/filled.png\nexport " + dir + "/filled.obj\nquit\n");
+  const auto r = run_viewer(assets + "cube.obj --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(build_mesh(read_polygons(dir + "/deleted.obj")).num_faces() == 5);
+  CHECK(build_mesh(read_polygons(dir + "/undone.obj")).num_faces() == 6);
+  const Mesh filled = build_mesh(read_polygons(dir + "/filled.obj"));
+  CHECK(filled.num_faces() == 6);
+  CHECK(filled.face_degree(5) == 3);
+  CHECK_THAT(r.err, Catch::Contains("accept: "));
 }
