@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <link.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <string_view>
@@ -90,8 +91,15 @@ int run_viewer(const ViewerOptions& options) {
     Window viewer(window, options);
     drop_target = &viewer;
     bool is_running = true;
+    int frames_to_draw = 0;  // ImGui settles its layout over a frame or two after an input
     while (is_running) {
-      glfwPollEvents();
+      if (viewer.is_animating() || frames_to_draw > 0) {
+        glfwPollEvents();
+        frames_to_draw = std::max(0, frames_to_draw - 1);
+      } else {
+        glfwWaitEventsTimeout(0.5);
+        frames_to_draw = 2;
+      }
       if (glfwWindowShouldClose(window)) {
         glfwSetWindowShouldClose(window, GLFW_FALSE);
         viewer.request_quit();

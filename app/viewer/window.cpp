@@ -582,6 +582,11 @@ bool Window::frame() {
   return !should_close_;
 }
 
+bool Window::is_animating() const {
+  return job_.is_busy() || script_next_ < script_.size() || pending_screenshot_ || pressed_button_ >= 0 ||
+         frames_drawn_ < 3;
+}
+
 void Window::after_draw() {
   if (!pending_screenshot_) return;
   try {

@@ -49,6 +49,9 @@ class Window {
   bool frame();
   // After the panels are drawn into the back buffer, before it is shown: takes a pending screenshot.
   void after_draw();
+  // True while something moves without input (a stage being computed, a script, a drag): the loop then
+  // draws continuously; otherwise it sleeps until an event (or the file watcher's next look).
+  bool is_animating() const;
   // The window manager's close button: asks about unsaved changes first.
   void request_quit();
   int exit_status() const { return exit_status_; }
