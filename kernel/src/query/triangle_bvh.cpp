@@ -221,7 +221,7 @@ std::vector<RayHit> sorted_unique_hits(std::vector<RayHit> hits) {
 }
 
 TriangleBvh::TriangleBvh(const Mesh& mesh, const BvhOptions& options)
-    : triangles_(triangulate(mesh)),
+    : triangles_(display_triangles(mesh)),
       positions_(mesh.positions()),
       corner_vertices_(mesh.corner_vertices()),
       corner_edges_(mesh.corner_edges()) {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
-#include "nome/ops/triangulate.hpp"
+#include "nome/query/display_triangles.hpp"
 #include "nome/query/ray.hpp"
 
 namespace nome {
@@ -20,7 +20,7 @@ struct RayHit {
   ElementKind kind = ElementKind::face;
   Index element = no_index;  // the face, edge or vertex id named by kind
   Index face = no_index;
-  Index triangle = no_index;                   // index into the Triangulation
+  Index triangle = no_index;                   // index into DisplayTriangles
   std::array<double, 3> barycentric{0, 0, 0};  // weights of the triangle's three corners
   Vec3 point{0.0};                             // world position of the hit
   double depth = 0.0;                          // ray parameter t
@@ -45,7 +45,7 @@ struct BvhOptions {
 // a fan diagonal or a face's first corner crosses several triangles of one face at one point.
 std::vector<RayHit> sorted_unique_hits(std::vector<RayHit> hits);
 
-// A bounding volume hierarchy over the triangles a mesh is drawn with (nome::triangulate, shared with the
+// A bounding volume hierarchy over the triangles a mesh is drawn with (display_triangles, shared with the
 // renderer, so a pick lands on the triangle the user sees), binned SAH build, for CPU picking.
 // It copies the positions it needs, so it stays valid while the mesh it came from changes or dies;
 // rebuild it when the displayed geometry changes.
@@ -60,9 +60,9 @@ class TriangleBvh {
   // The nearest hit, if any.
   std::optional<RayHit> cast_nearest(const Ray& ray) const;
 
-  Index num_triangles() const { return static_cast<Index>(triangles_.faces.size()); }
+  Index num_triangles() const { return triangles_.size(); }
   Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
-  const Triangulation& triangles() const { return triangles_; }
+  const DisplayTriangles& triangles() const { return triangles_; }
 
   // The classified hit of the ray on triangle t at the given triangle hit (shared with the
   // brute-force reference in the tests).
@@ -74,7 +74,7 @@ class TriangleBvh {
   template <typename Visit>
   void traverse(const ShearedRay& ray, double& t_max, Visit&& visit) const;
 
-  Triangulation triangles_;
+  DisplayTriangles triangles_;
   std::vector<Vec3> positions_;
   std::vector<Index> order_;  // triangle ids; leaves own contiguous ranges
   std::vector<BvhNode> nodes_;

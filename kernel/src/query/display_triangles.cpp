@@ -1,0 +1,108 @@
+#include "nome/query/display_triangles.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "nome/ops/normals.hpp"
+
+namespace nome {
+namespace {
+
+using Vec2 = glm::dvec2;
+
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x * b.y - a.y * b.x;
+}
+
+bool inside_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
+  return cross(b - a, p - a) >= 0.0 && cross(c - b, p - b) >= 0.0 && cross(a - c, p - c) >= 0.0;
+}
+
+// The face projected on the plane of its normal: counter-clockwise seen from the normal's side.
+std::vector<Vec2> project(const Mesh& mesh, std::span<const Index> vertices, const Vec3& normal) {
+  const Vec3 helper = std::abs(normal.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  const Vec3 u = glm::normalize(glm::cross(helper, normal));
+  const Vec3 v = glm::cross(normal, u);
+  std::vector<Vec2> points;
+  points.reserve(vertices.size());
+  for (Index vertex : vertices) {
+    const Vec3& p = mesh.position(vertex);
+    points.emplace_back(glm::dot(p, u), glm::dot(p, v));
+  }
+  return points;
+}
+
+bool is_convex(const std::vector<Vec2>& points) {
+  const size_t n = points.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2& a = points[(i + n - 1) % n];
+    const Vec2& b = points[i];
+    const Vec2& c = points[(i + 1) % n];
+    if (cross(b - a, c - b) < 0.0) return false;
+  }
+  return true;
+}
+
+// Local corner triples; falls back to a fan of what is left when no ear is found (self-overlapping
+// polygon), so the count is always n - 2.
+void clip_ears(const std::vector<Vec2>& points, std::vector<std::array<Index, 3>>& out) {
+  std::vector<Index> left(points.size());
+  for (Index i = 0; i < left.size(); ++i) left[i] = i;
+  while (left.size() > 3) {
+    const size_t m = left.size();
+    bool clipped = false;
+    for (size_t i = 0; i < m && !clipped; ++i) {
+      const Index a = left[(i + m - 1) % m], b = left[i], c = left[(i + 1) % m];
+      if (cross(points[b] - points[a], points[c] - points[b]) <= 0.0) continue;
+      bool is_ear = true;
+      for (Index p : left) {
+        if (p == a || p == b || p == c) continue;
+        if (inside_triangle(points[p], points[a], points[b], points[c])) {
+          is_ear = false;
+          break;
+        }
+      }
+      if (!is_ear) continue;
+      out.push_back({a, b, c});
+      left.erase(left.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+    }
+    if (!clipped) break;
+  }
+  for (size_t i = 1; i + 1 < left.size(); ++i) out.push_back({left[0], left[i], left[i + 1]});
+}
+
+}  // namespace
+
+DisplayTriangles display_triangles(const Mesh& mesh) {
+  DisplayTriangles out;
+  const Index count = mesh.num_corners() - 2 * mesh.num_faces();
+  out.corners.reserve(count);
+  out.faces.reserve(count);
+  std::vector<std::array<Index, 3>> local;
+  std::vector<Vec2> points;
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    const Index first = mesh.face_first_corner(f);
+    const Index degree = mesh.face_degree(f);
+    local.clear();
+    const Vec3 normal = face_area_normal(mesh, f);
+    const double length = glm::length(normal);
+    bool is_fan = degree == 3 || !(length > 0.0);
+    if (!is_fan) {
+      points = project(mesh, mesh.face_vertices(f), normal / length);
+      is_fan = is_convex(points);
+    }
+    if (is_fan) {
+      for (Index i = 1; i + 1 < degree; ++i) local.push_back({0, i, i + 1});
+    } else {
+      clip_ears(points, local);
+    }
+    for (const auto& t : local) {
+      out.corners.push_back({first + t[0], first + t[1], first + t[2]});
+      out.faces.push_back(f);
+    }
+  }
+  return out;
+}
+
+}  // namespace nome
