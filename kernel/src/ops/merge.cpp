@@ -44,45 +44,44 @@ class PointGrid {
     std::vector<std::pair<std::uint64_t, Index>> keyed(points.size());
     for (size_t i = 0; i < points.size(); ++i) {
       const Vec3 g = glm::floor((positions[points[i]] - origin_) / cell_);
-      keyed[i] = {key(std::int64_t(g.x), std::int64_t(g.y), std::int64_t(g.z)), points[i]};
+      keyed[i] = {key(std::int64_t(g.x), std::int64_t(g.y), std::int64_t(g.z)), Index(i)};
     }
     std::sort(keyed.begin(), keyed.end());
-    ids_.resize(keyed.size());
+    order_.resize(keyed.size());
     positions_.resize(keyed.size());
     for (size_t i = 0; i < keyed.size(); ++i) {
-      ids_[i] = keyed[i].second;
-      positions_[i] = positions[keyed[i].second];
+      order_[i] = keyed[i].second;
+      positions_[i] = positions[points[keyed[i].second]];
     }
 
     size_t capacity = 16;
     while (capacity < 2 * keyed.size()) capacity *= 2;
     mask_ = capacity - 1;
-    slot_keys_.assign(capacity, 0);
-    slot_buckets_.assign(capacity, no_index);
+    slots_.assign(capacity, Slot{0, no_index});
     bucket_starts_.assign(1, 0);
     for (size_t i = 0; i < keyed.size();) {
       size_t end = i + 1;
       while (end < keyed.size() && keyed[end].first == keyed[i].first) ++end;
       size_t s = keyed[i].first & mask_;
-      while (slot_buckets_[s] != no_index) s = (s + 1) & mask_;
-      slot_keys_[s] = keyed[i].first;
-      slot_buckets_[s] = Index(bucket_keys_.size());
+      while (slots_[s].bucket != no_index) s = (s + 1) & mask_;
+      slots_[s] = {keyed[i].first, Index(bucket_keys_.size())};
       bucket_keys_.push_back(keyed[i].first);
       bucket_starts_.push_back(Index(end));
       i = end;
     }
   }
 
-  // The points (vertex ids) in cell order.
-  const std::vector<Index>& ids() const { return ids_; }
+  // Indices into `points`, in cell order.
+  const std::vector<Index>& order() const { return order_; }
 
-  // Calls visit(i, j) once for every pair of points at most the tolerance apart, as indices into ids()
-  // with ids()[i] <= ids()[j] (every point is paired with itself too).
+  // Calls visit(i, j, squared distance) once for every pair of points at most the tolerance apart, as
+  // indices into order() with order()[i] <= order()[j] (every point is paired with itself too).
   template <typename Visit>
   void for_each_close_pair(Visit&& visit) const {
     auto compare = [&](Index i, Index j) {
       const Vec3 d = positions_[i] - positions_[j];
-      if (ids_[i] <= ids_[j] && glm::dot(d, d) <= tolerance2_) visit(i, j);
+      const double d2 = glm::dot(d, d);
+      if (order_[i] <= order_[j] && d2 <= tolerance2_) visit(i, j, d2);
     };
     for (size_t b = 0; b < bucket_keys_.size(); ++b) {
       const Index begin = bucket_starts_[b], end = bucket_starts_[b + 1];
@@ -101,9 +100,9 @@ class PointGrid {
             for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
               const std::uint64_t h = key(x, y, z);
               if (h == bucket_keys_[b]) continue;
-              for (size_t s = h & mask_; slot_buckets_[s] != no_index; s = (s + 1) & mask_) {
-                if (slot_keys_[s] != h) continue;
-                const Index other = slot_buckets_[s];
+              for (size_t s = h & mask_; slots_[s].bucket != no_index; s = (s + 1) & mask_) {
+                if (slots_[s].key != h) continue;
+                const Index other = slots_[s].bucket;
                 for (Index j = bucket_starts_[other]; j < bucket_starts_[other + 1]; ++j) compare(i, j);
                 break;
               }
@@ -121,13 +120,16 @@ class PointGrid {
   double cell_ = 1.0;
   double margin_ = 0.0;
   double tolerance2_ = 0.0;
-  std::vector<Index> ids_;                  // vertex ids in cell order
+  std::vector<Index> order_;                // indices into the points, in cell order
   std::vector<Vec3> positions_;             // their positions
   std::vector<std::uint64_t> bucket_keys_;  // one bucket per occupied cell
-  std::vector<Index> bucket_starts_;        // CSR into ids_ and positions_
+  std::vector<Index> bucket_starts_;        // CSR into order_ and positions_
   size_t mask_ = 0;
-  std::vector<std::uint64_t> slot_keys_;
-  std::vector<Index> slot_buckets_;
+  struct Slot {
+    std::uint64_t key;
+    Index bucket;  // no_index: empty
+  };
+  std::vector<Slot> slots_;
 };
 
 // Union-find over vertices that also keeps each class's members on a cycle, so a class can be walked.
@@ -192,24 +194,33 @@ std::vector<Candidate> find_candidates(const Mesh& mesh, double tolerance) {
   const double tol2 = tolerance * tolerance;
   auto dist2 = [](const Vec3& a, const Vec3& b) { return glm::dot(a - b, a - b); };
 
-  // Gathered once in cell order, so that testing a close pair reads no scattered memory.
-  const std::vector<Index>& ids = grid.ids();
-  std::vector<BorderStep> steps(ids.size());
-  for (size_t i = 0; i < ids.size(); ++i) {
-    const auto fan = mesh.vertex_edges(ids[i]);
-    BorderStep& step = steps[i];
+  // Computed in vertex order (neighbouring vertices share memory), then gathered once into cell
+  // order, so that testing a close pair reads no scattered memory.
+  std::vector<BorderStep> by_vertex(boundary.size());
+  for (size_t k = 0; k < boundary.size(); ++k) {
+    const Index v = boundary[k];
+    const auto fan = mesh.vertex_edges(v);
+    BorderStep& step = by_vertex[k];
     step.edges = {fan.front(), fan.back()};
     for (int k = 0; k < 2; ++k) {
-      step.far_ends[k] = mesh.edge(step.edges[k]).other_vertex(ids[i]);
+      step.far_ends[k] = mesh.edge(step.edges[k]).other_vertex(v);
       step.far_positions[k] = pos[step.far_ends[k]];
     }
   }
+  const std::vector<Index>& order = grid.order();
+  std::vector<BorderStep> steps(order.size());
+  std::vector<Index> ids(order.size());
+  for (size_t i = 0; i < order.size(); ++i) {
+    steps[i] = by_vertex[order[i]];
+    ids[i] = boundary[order[i]];
+  }
+  by_vertex = {};
 
   // Each edge pair is reached through both of its matched vertex pairs; it is kept from the one that
   // reaches the lower-numbered edge at that edge's lower-numbered end. A vertex is paired with itself
   // too, which finds two border edges folding together at their common end.
   std::vector<Candidate> out;
-  grid.for_each_close_pair([&](Index i, Index j) {
+  grid.for_each_close_pair([&](Index i, Index j, double near2) {
     const Index u = ids[i], w = ids[j];
     const BorderStep &su = steps[i], &sw = steps[j];
     for (int a = 0; a < 2; ++a) {
@@ -220,8 +231,7 @@ std::vector<Candidate> find_candidates(const Mesh& mesh, double tolerance) {
         if (far2 > tol2) continue;
         const Index u2 = su.far_ends[a], w2 = sw.far_ends[b];
         const bool keep = eu < ew ? u < u2 : w < w2;
-        if (keep)
-          out.push_back({std::sqrt(std::max(dist2(pos[u], pos[w]), far2)), {eu, ew}, {u, u2}, {w, w2}});
+        if (keep) out.push_back({std::sqrt(std::max(near2, far2)), {eu, ew}, {u, u2}, {w, w2}});
       }
     }
   });
