@@ -5,7 +5,7 @@ PACKAGES := build-essential cmake pkg-config clang-format libglfw3-dev libimgui-
             libbenchmark-dev libopenmesh-dev clang-14 libclang-rt-14-dev
 
 JOBS    ?= 2
-EXAMPLE ?= assets/mobius_band.obj
+EXAMPLE ?= assets/funnel_cube.nome
 RELEASE := build/release
 TESTDIR := build/test
 FUZZDIR := build/fuzz

@@ -4,11 +4,12 @@
 #include "cli/input.hpp"
 #include "nome/io/obj.hpp"
 #include "nome/io/stl.hpp"
+#include "nome/scene/save_nome.hpp"
 
 namespace nome::cli {
 
 int export_command(const std::vector<std::string>& args) {
-  std::vector<OptionSpec> specs = {{"--output", "-o", "OUT", "output file: .obj or .stl"},
+  std::vector<OptionSpec> specs = {{"--output", "-o", "OUT", "output file: .obj, .stl, or .nome (saves the scene with its slider values)"},
                                    {"--ascii", "", "", "write ASCII STL instead of binary"}};
   for (OptionSpec& s : input_options()) specs.push_back(std::move(s));
   Arguments parsed("export", "nome export FILE... -o OUT.obj|OUT.stl [--ascii] [pipeline options]", specs);
@@ -22,10 +23,19 @@ int export_command(const std::vector<std::string>& args) {
   if (!out) throw UsageError("export needs -o OUT.obj or -o OUT.stl");
   const std::filesystem::path path(*out);
   const std::string ext = path.extension().string();
-  if (ext != ".obj" && ext != ".stl")
-    throw UsageError("output must end in .obj or .stl, found '" + *out + "'");
+  if (ext != ".obj" && ext != ".stl" && ext != ".nome")
+    throw UsageError("output must end in .obj, .stl or .nome, found '" + *out + "'");
   if (parsed.has("--ascii") && ext != ".stl") throw UsageError("--ascii applies to .stl output only");
-  const Mesh mesh = load_input(parsed);
+  std::vector<scene::Scene> scenes;
+  const Mesh mesh = load_input(parsed, Stage::offset, &scenes);
+  if (ext == ".nome") {
+    if (scenes.size() != 1 || parsed.positionals().size() != 1)
+      throw UsageError("-o OUT.nome saves one scene: give exactly one .nome, .nom or .slf file");
+    scene::write_nome(scenes.front(), path);
+    std::cerr << "nome: wrote " << *out << " (" << scenes.front().parameters().size() << " sliders, "
+              << scenes.front().instances().size() << " top-level instances)\n";
+    return 0;
+  }
   if (ext == ".obj")
     write_obj(path, mesh);
   else

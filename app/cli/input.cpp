@@ -2,27 +2,10 @@
 
 #include "cli/merge_option.hpp"
 #include "nome/error.hpp"
-#include "nome/io/read_polygons.hpp"
+#include "cli/scene_input.hpp"
 
 namespace nome::cli {
 namespace {
-
-void append(PolygonSoup& into, const PolygonSoup& part) {
-  const Index base = into.num_vertices();
-  const bool names = !into.vertex_names.empty() || !part.vertex_names.empty();
-  if (names) into.vertex_names.resize(into.positions.size());
-  into.positions.insert(into.positions.end(), part.positions.begin(), part.positions.end());
-  if (names) {
-    into.vertex_names.insert(into.vertex_names.end(), part.vertex_names.begin(), part.vertex_names.end());
-    into.vertex_names.resize(into.positions.size());
-  }
-  for (Index f = 0; f < part.num_faces(); ++f) {
-    for (Index c = part.face_offsets[f]; c < part.face_offsets[f + 1]; ++c)
-      into.face_vertices.push_back(part.face_vertices[c] + base);
-    into.face_offsets.push_back(Index(into.face_vertices.size()));
-  }
-  for (auto [a, b] : part.sharp_edges) into.sharp_edges.emplace_back(a + base, b + base);
-}
 
 // build_mesh on all files together; a topology error names the file at fault, with element numbers of
 // that file alone: the parts are rebuilt one by one (only on this error path) to find it.
@@ -45,7 +28,11 @@ Mesh build_naming_the_file(PolygonSoup soup, std::vector<PolygonSoup>& parts,
 }  // namespace
 
 std::vector<OptionSpec> input_options() {
-  return merge_options();
+  std::vector<OptionSpec> options = {
+      {"--set", "", "BANK_PARAM=VALUE", "override a slider of a scene (repeatable)", true},
+      {"--quads", "", "", "pair the triangles of .sif files into quads where convex and nearly planar"}};
+  for (OptionSpec& o : merge_options()) options.push_back(std::move(o));
+  return options;
 }
 
 Mesh load_input(const Arguments& args) {
@@ -64,14 +51,16 @@ Stage parse_stage(const std::string& name) {
 }
 
 Mesh load_input(const Arguments& args, Stage last) {
+  return load_input(args, last, nullptr);
+}
+
+Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
+  InputFiles input = read_input_files(args);
   PolygonSoup soup;
-  std::vector<PolygonSoup> parts;
-  for (const std::string& file : args.positionals()) {
-    parts.push_back(read_polygons(file));
-    append(soup, parts.back());
-  }
-  Mesh mesh = build_naming_the_file(std::move(soup), parts, args.positionals());
+  for (const PolygonSoup& part : input.parts) append_part(soup, part);
+  Mesh mesh = build_naming_the_file(std::move(soup), input.parts, input.part_files);
+  if (scenes) *scenes = std::move(input.scenes);
   if (last == Stage::scene) return mesh;
   return apply_merge_option(std::move(mesh), args);
 }

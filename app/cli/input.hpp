@@ -5,6 +5,7 @@
 
 #include "cli/arguments.hpp"
 #include "nome/mesh/mesh.hpp"
+#include "nome/scene/scene.hpp"
 
 namespace nome::cli {
 
@@ -21,5 +22,7 @@ Stage parse_stage(const std::string& name);
 Mesh load_input(const Arguments& args);
 // The same, stopping after `last` (the stages the options do not ask for pass the mesh through).
 Mesh load_input(const Arguments& args, Stage last);
+// The same, handing back the scenes read (.nome, .slf) through `scenes`.
+Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes);
 
 }  // namespace nome::cli

@@ -2,6 +2,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <sstream>
 
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
@@ -52,7 +53,9 @@ int run_guarded(const std::string& name, int (*command)(const std::vector<std::s
     std::cerr << "nome: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "nome: " << e.what() << "\n";
+    // A scene error lists several located errors, one a line: each gets the prefix.
+    std::istringstream lines(e.what());
+    for (std::string line; std::getline(lines, line);) std::cerr << "nome: " << line << "\n";
     return 1;
   }
 }

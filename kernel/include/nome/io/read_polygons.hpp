@@ -6,7 +6,7 @@
 
 namespace nome {
 
-// Reads a polygon file by its extension: .obj or .stl (case-insensitive). Throws IoError for an
+// Reads a polygon file by its extension: .obj, .stl or .sif (case-insensitive). Throws IoError for an
 // unknown extension, a malformed file or a file without faces.
 PolygonSoup read_polygons(const std::filesystem::path& path);
 

@@ -1,0 +1,67 @@
+#include "cli/scene_format.hpp"
+
+#include <sstream>
+
+namespace nome::cli {
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string scene_text(const scene::Scene& scene) {
+  using scene::format_number;
+  std::ostringstream out;
+  out << "scene " << scene.file() << "\n";
+  for (const scene::Bank& bank : scene.banks()) {
+    out << "  bank " << bank.name << "\n";
+    for (Index id : bank.parameters) {
+      const scene::Parameter& p = scene.parameters()[id];
+      out << "    $" << p.full_name << " = " << format_number(p.value) << "  [" << format_number(p.min)
+          << ", " << format_number(p.max) << "] step " << format_number(p.step) << "\n";
+    }
+  }
+  for (const scene::SceneInstance& i : scene.instances()) {
+    const PolygonSoup& s = i.geometry.soup;
+    out << "  instance " << i.name << ": " << s.num_vertices() << " vertices, " << s.num_faces() << " faces";
+    if (!i.geometry.rims.empty()) out << ", " << i.geometry.rims.size() << " rim lines";
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string scene_json(const scene::Scene& scene) {
+  std::ostringstream out;
+  out << "{\"file\": " << quoted(scene.file()) << ", \"banks\": [";
+  for (size_t b = 0; b < scene.banks().size(); ++b) {
+    const scene::Bank& bank = scene.banks()[b];
+    out << (b ? ", " : "") << "{\"name\": " << quoted(bank.name) << ", \"parameters\": [";
+    for (size_t k = 0; k < bank.parameters.size(); ++k) {
+      const scene::Parameter& p = scene.parameters()[bank.parameters[k]];
+      out << (k ? ", " : "") << "{\"name\": " << quoted(p.full_name)
+          << ", \"value\": " << scene::format_number(p.value) << ", \"min\": " << scene::format_number(p.min)
+          << ", \"max\": " << scene::format_number(p.max) << ", \"step\": " << scene::format_number(p.step)
+          << "}";
+    }
+    out << "]}";
+  }
+  out << "], \"instances\": [";
+  for (size_t i = 0; i < scene.instances().size(); ++i) {
+    const scene::SceneInstance& inst = scene.instances()[i];
+    out << (i ? ", " : "") << "{\"name\": " << quoted(inst.name)
+        << ", \"vertices\": " << inst.geometry.soup.num_vertices()
+        << ", \"faces\": " << inst.geometry.soup.num_faces() << ", \"rims\": " << inst.geometry.rims.size()
+        << "}";
+  }
+  out << "]}";
+  return out.str();
+}
+
+}  // namespace nome::cli

@@ -1,0 +1,103 @@
+#include "cli/scene_input.hpp"
+
+#include <algorithm>
+#include <iostream>
+
+#include "nome/error.hpp"
+#include "nome/io/read_polygons.hpp"
+#include "nome/io/read_scene.hpp"
+#include "nome/io/sif.hpp"
+
+namespace nome::cli {
+
+void append_part(PolygonSoup& into, const PolygonSoup& part) {
+  const Index base = into.num_vertices();
+  const bool names = !into.vertex_names.empty() || !part.vertex_names.empty();
+  const bool face_names = !into.face_names.empty() || !part.face_names.empty();
+  const bool colors = !into.face_colors.empty() || !part.face_colors.empty();
+  if (names) into.vertex_names.resize(into.positions.size());
+  if (face_names) into.face_names.resize(into.num_faces());
+  if (colors) into.face_colors.resize(into.num_faces(), Color(0.75f));
+  into.positions.insert(into.positions.end(), part.positions.begin(), part.positions.end());
+  if (names) {
+    into.vertex_names.insert(into.vertex_names.end(), part.vertex_names.begin(), part.vertex_names.end());
+    into.vertex_names.resize(into.positions.size());
+  }
+  for (Index f = 0; f < part.num_faces(); ++f) {
+    for (Index c = part.face_offsets[f]; c < part.face_offsets[f + 1]; ++c)
+      into.face_vertices.push_back(part.face_vertices[c] + base);
+    into.face_offsets.push_back(Index(into.face_vertices.size()));
+  }
+  if (face_names) {
+    into.face_names.insert(into.face_names.end(), part.face_names.begin(), part.face_names.end());
+    into.face_names.resize(into.num_faces());
+  }
+  if (colors) {
+    into.face_colors.insert(into.face_colors.end(), part.face_colors.begin(), part.face_colors.end());
+    into.face_colors.resize(into.num_faces(), Color(0.75f));
+  }
+  for (auto [a, b] : part.sharp_edges) into.sharp_edges.emplace_back(a + base, b + base);
+}
+
+void apply_overrides(std::vector<scene::Scene>& scenes, const std::vector<std::string>& overrides) {
+  for (const std::string& o : overrides) {
+    const size_t eq = o.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("--set expects BANK_PARAM=VALUE, found '" + o + "'");
+    const std::string name = o.substr(0, eq), text = o.substr(eq + 1);
+    size_t used = 0;
+    double value = 0;
+    try {
+      value = std::stod(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != text.size())
+      throw UsageError("--set " + name + " expects a number, found '" + text + "'");
+    bool found = false;
+    std::vector<std::string> known;
+    for (scene::Scene& s : scenes) {
+      for (const scene::Parameter& p : s.parameters()) known.push_back(p.full_name);
+      if (const auto id = s.find_parameter(name)) {
+        s.set_parameter(*id, value);
+        found = true;
+      }
+    }
+    if (!found) throw UsageError("--set: no parameter '" + name + "'" + scene::did_you_mean(name, known));
+  }
+}
+
+InputFiles read_input_files(const Arguments& args) {
+  InputFiles input;
+  std::vector<std::pair<std::string, PolygonSoup>> flat;  // flat geometry, in argument order after the scenes
+  for (const std::string& file : args.positionals()) {
+    std::string ext = std::filesystem::path(file).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (is_scene_file(file)) {
+      input.scenes.push_back(read_scene(file));
+    } else if (ext == ".anom") {
+      if (input.scenes.empty())
+        throw UsageError(file + ": an .anom file applies to an open scene: give the .nome file before it");
+      input.scenes.back().apply_anom(read_text_file(file), file);
+    } else if (ext == ".sif") {
+      flat.emplace_back(file, read_sif(file, {args.has("--quads"), SifOptions{}.max_fold_degrees}));
+    } else {
+      flat.emplace_back(file, read_polygons(file));
+    }
+  }
+  for (const scene::Scene& s : input.scenes)
+    for (const scene::Diagnostic& w : s.warnings()) std::cerr << "nome: " << w.to_string() << "\n";
+  apply_overrides(input.scenes, args.values("--set"));
+  for (size_t i = 0; i < input.scenes.size(); ++i) {
+    input.parts.push_back(input.scenes[i].combined_soup());
+    input.part_files.push_back(input.scenes[i].file());
+  }
+  for (auto& [file, soup] : flat) {
+    input.parts.push_back(std::move(soup));
+    input.part_files.push_back(file);
+  }
+  return input;
+}
+
+}  // namespace nome::cli

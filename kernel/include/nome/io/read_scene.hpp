@@ -1,0 +1,19 @@
+#pragma once
+
+#include <filesystem>
+
+#include "nome/scene/scene.hpp"
+
+namespace nome {
+
+// Reads a scene file by its extension: .nome or .nom (the scene language) or .slf (the SLIDE subset).
+// Throws SceneError listing every located error, IoError when the file cannot be read.
+scene::Scene read_scene(const std::filesystem::path& path);
+
+// True for the extensions read_scene reads.
+bool is_scene_file(const std::filesystem::path& path);
+
+// The whole file as text; IoError when it cannot be read.
+std::string read_text_file(const std::filesystem::path& path);
+
+}  // namespace nome

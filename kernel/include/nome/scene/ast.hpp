@@ -1,0 +1,136 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nome/scene/expression.hpp"
+
+namespace nome::scene {
+
+// A name as written, with where it stands. Dotted NOME 2.x paths are normalised to `_` (cf.tun5.lc5 ->
+// cf_tun5_lc5) so that both spellings name the same thing.
+struct Name {
+  std::string text;
+  SourceLocation location;
+};
+
+// `set NAME value min max step` inside `bank BANK`: a slider, referenced as $BANK_NAME.
+struct SliderDecl {
+  Name name;
+  Value value, min, max, step;
+};
+
+struct BankDecl {
+  Name name;
+  std::vector<SliderDecl> sliders;
+};
+
+// `surface NAME color (r g b) endsurface`
+struct SurfaceDecl {
+  Name name;
+  Value rgb[3];
+};
+
+// `point NAME (x y z) endpoint`
+struct PointDecl {
+  Name name;
+  Value xyz[3];
+};
+
+// `face NAME (v1 v2 ...) [surface S] endface`, at top level or inside a mesh.
+struct FaceDecl {
+  Name name;
+  std::vector<Name> vertices;
+  std::optional<Name> surface;
+};
+
+// `polyline NAME (v1 v2 ...) [isloop] endpolyline`: a rim line.
+struct PolylineDecl {
+  Name name;
+  std::vector<Name> vertices;
+  bool is_loop = false;
+};
+
+// `object NAME (f1 f2 ...) endobject`: a mesh made of top-level faces.
+struct ObjectDecl {
+  Name name;
+  std::vector<Name> faces;
+};
+
+enum class GeneratorKind { funnel, tunnel, circle, mobius_strip };
+
+// `funnel NAME (n ro ratio h)`, `tunnel NAME (n ro ratio h [ratio_low h_low])`, `circle NAME (n r)`,
+// `mobiusstrip NAME (radius twists cuts segs)`.
+struct GeneratorDecl {
+  GeneratorKind kind = GeneratorKind::funnel;
+  Name name;
+  std::vector<Value> args;
+};
+
+// `sharp (v1 v2 ...) endsharp` inside a mesh: the chain of edges v1-v2, v2-v3, ... is sharp.
+struct SharpDecl {
+  std::vector<Name> vertices;
+  SourceLocation location;
+};
+
+// `mesh NAME face ... endface ... [sharp ...] endmesh`
+struct MeshDecl {
+  Name name;
+  std::vector<FaceDecl> faces;
+  std::vector<SharpDecl> sharps;
+};
+
+enum class TransformKind { translate, rotate, scale, mirror };
+
+// translate (x y z) | rotate (ax ay az) (degrees) | scale (sx sy sz) | mirror (a b c d)
+struct TransformDecl {
+  TransformKind kind = TransformKind::translate;
+  Value args[4];
+  SourceLocation location;
+};
+
+// `instance NAME TARGET [transforms] [surface S] endinstance`
+struct InstanceDecl {
+  Name name;
+  Name target;
+  std::vector<TransformDecl> transforms;
+  std::optional<Name> surface;
+  SourceLocation location;
+};
+
+// `group NAME instance ... endgroup`
+struct GroupDecl {
+  Name name;
+  std::vector<InstanceDecl> instances;
+};
+
+// A face given by the hierarchical names of its vertices: the consolidated mesh of the editing workflow
+// (`consolidate ... consolidateface vertex N endvertex ... endconsolidateface ... endconsolidate`).
+struct NamedFace {
+  std::vector<Name> vertices;
+  SourceLocation location;
+};
+
+// One parsed .nome text. Definitions are resolved by name, so their order does not matter.
+struct SceneAst {
+  std::string file;
+  ExpressionPool expressions;
+  std::vector<BankDecl> banks;
+  std::vector<SurfaceDecl> surfaces;
+  std::vector<PointDecl> points;
+  std::vector<FaceDecl> faces;  // top-level faces (used by objects, or instantiated directly)
+  std::vector<PolylineDecl> polylines;
+  std::vector<ObjectDecl> objects;
+  std::vector<GeneratorDecl> generators;
+  std::vector<MeshDecl> meshes;
+  std::vector<GroupDecl> groups;
+  std::vector<InstanceDecl> instances;  // top-level: the scene's roots
+  std::vector<Name> deleted_faces;      // `delete face NAME endface ... enddelete`
+  std::vector<NamedFace> consolidated_faces;
+};
+
+// The name every consolidated mesh is instantiated by (`instance tp1 consolidatemesh ... endinstance`).
+inline constexpr const char* consolidated_mesh_name = "consolidatemesh";
+
+}  // namespace nome::scene

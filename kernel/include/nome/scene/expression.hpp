@@ -1,0 +1,112 @@
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "nome/error.hpp"
+#include "nome/mesh/types.hpp"
+#include "nome/scene/diagnostic.hpp"
+
+namespace nome::scene {
+
+using ExprId = Index;
+
+enum class ExprOp {
+  number,
+  parameter,
+  pi,
+  negate,
+  add,
+  subtract,
+  multiply,
+  divide,
+  modulo,
+  power,
+  less,
+  less_equal,
+  greater,
+  greater_equal,
+  equal,
+  not_equal,
+  call
+};
+
+enum class Function {
+  sin,
+  cos,
+  tan,
+  asin,
+  acos,
+  atan,
+  atan2,
+  sqrt,
+  abs,
+  pow,
+  exp,
+  log,
+  floor,
+  ceil,
+  min,
+  max
+};
+
+// One node of an expression tree; children are ids into the same pool.
+struct ExprNode {
+  ExprOp op = ExprOp::number;
+  double number = 0;                      // ExprOp::number
+  std::string parameter_name;             // ExprOp::parameter, normalised `bank_name`
+  Index parameter = no_index;             // resolved index into the scene's parameters
+  Function function = Function::sin;      // ExprOp::call
+  ExprId args[2] = {no_index, no_index};  // operands / call arguments
+  SourceLocation location;
+};
+
+// The arithmetic of `{expr ...}`: nodes of every expression of one scene, index-based.
+class ExpressionPool {
+ public:
+  ExprId add(ExprNode node);
+  const ExprNode& node(ExprId id) const { return nodes_[id]; }
+  ExprNode& node(ExprId id) { return nodes_[id]; }
+  Index size() const { return static_cast<Index>(nodes_.size()); }
+
+ private:
+  std::vector<ExprNode> nodes_;
+};
+
+// A number slot of the language: a literal or an expression (`{expr ...}`), with where it stands.
+struct Value {
+  double literal = 0;
+  ExprId expr = no_index;
+  SourceLocation location;
+};
+
+// An expression that cannot be computed (division by zero, a non-finite result, an unresolved name).
+class EvaluationError : public Error {
+ public:
+  EvaluationError(SourceLocation where, const std::string& message) : Error(message), where_(where) {}
+  SourceLocation where() const { return where_; }
+
+ private:
+  SourceLocation where_;
+};
+
+// Evaluates with the given parameter values (radians for trigonometry). Appends every parameter read to
+// `reads` when given. Throws EvaluationError with the location of the offending operation.
+double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> parameters,
+                std::vector<Index>* reads = nullptr);
+double evaluate(const ExpressionPool& pool, const Value& value, std::span<const double> parameters,
+                std::vector<Index>* reads = nullptr);
+
+// The expression as source text that parses back to the same tree (`$bank_name` references).
+std::string to_source(const ExpressionPool& pool, ExprId id);
+// A value as source text: a literal (shortest exact form) or `{expr ...}`.
+std::string to_source(const ExpressionPool& pool, const Value& value);
+// The shortest text that reads back as exactly `x`.
+std::string format_number(double x);
+
+// The function of a name (`sin`, `atan2`, ...) and its argument count; false if it is no function.
+bool find_function(const std::string& name, Function& function, int& arity);
+const char* function_name(Function function);
+
+}  // namespace nome::scene

@@ -1,0 +1,148 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "nome/scene/ast.hpp"
+#include "nome/scene/piece.hpp"
+
+namespace nome::scene {
+
+// A slider: `set NAME value min max step` in `bank BANK`; expressions read it as $BANK_NAME.
+struct Parameter {
+  std::string bank;
+  std::string name;       // within its bank
+  std::string full_name;  // BANK_NAME
+  double value = 0, min = 0, max = 0, step = 0;
+};
+
+// A slider panel.
+struct Bank {
+  std::string name;
+  std::vector<Index> parameters;
+};
+
+// One top-level instance, evaluated: world-space geometry whose vertices and faces carry hierarchical
+// names (`kb_t3_hc2`). The versions tell a viewer what to rebuild: geometry_version changes with any
+// change, topology_version only when the faces or the vertex count change (else only positions moved).
+struct SceneInstance {
+  std::string name;
+  Piece geometry;
+  std::uint64_t geometry_version = 0;
+  std::uint64_t topology_version = 0;
+};
+
+// An evaluated scene (report sections 3 and 6): the parsed text, the slider values, and the geometry of
+// every top-level instance, kept up to date incrementally. Every instance statement of the expanded
+// hierarchy is a placement; a placement of geometry (not of a group) records the parameters its
+// expressions read (its own and its ancestors' transforms and colours, its definition's numbers, and
+// those of the placements whose vertices it references), so that moving a slider re-evaluates only
+// the placements that read it.
+class Scene {
+ public:
+  // Parses and evaluates a .nome text. Throws SceneError listing every error found.
+  static Scene from_text(std::string_view text, const std::string& file);
+  // Evaluates a parsed scene (the .slf reader builds one). `warnings` are kept with the scene.
+  static Scene from_ast(SceneAst ast, std::vector<Diagnostic> warnings = {});
+
+  // Applies an .anom text (saved slider values and working mesh) on top of this scene.
+  void apply_anom(std::string_view text, const std::string& file);
+
+  const std::string& file() const { return ast_.file; }
+  const SceneAst& ast() const { return ast_; }
+  const std::vector<Diagnostic>& warnings() const { return warnings_; }
+
+  const std::vector<Bank>& banks() const { return banks_; }
+  const std::vector<Parameter>& parameters() const { return parameters_; }
+  // By `bank_name` or `bank.name`.
+  std::optional<Index> find_parameter(const std::string& name) const;
+  // Moves a slider and re-evaluates what reads it; returns the top-level instances whose geometry
+  // changed. Throws InvalidInputError for a value outside the slider's range, SceneError when the scene
+  // cannot be evaluated with the new value (the scene then keeps the previous value).
+  std::vector<Index> set_parameter(Index parameter, double value);
+
+  const std::vector<SceneInstance>& instances() const { return instances_; }
+  // Every top-level instance as parts of one soup (a disjoint union; merging is a later stage).
+  PolygonSoup combined_soup() const;
+
+  // The editing model's data (report 7.3.3): faces added by the user, given by the hierarchical names of
+  // their vertices (the consolidated mesh, instantiable as `consolidatemesh`), and deleted faces by name.
+  // Setting either resolves the names (SceneError listing unknown or ambiguous ones) and re-evaluates.
+  const std::vector<std::vector<std::string>>& consolidated_faces() const { return consolidated_; }
+  void set_consolidated_faces(std::vector<std::vector<std::string>> faces);
+  const std::vector<std::string>& deleted_faces() const { return deleted_; }
+  void set_deleted_faces(std::vector<std::string> faces);
+
+  // The full hierarchical name of the vertex a (possibly shortened) name refers to. Throws SceneError
+  // naming the candidates when the name is unknown or ambiguous.
+  std::string resolve_vertex_name(const std::string& name) const;
+
+  // How many placements have been evaluated since the scene was built (tests and status lines).
+  std::size_t placement_evaluations() const { return placement_evaluations_; }
+
+ private:
+  enum class DefinitionKind { face, polyline, object, generator, mesh, group, consolidated };
+  struct Definition {
+    DefinitionKind kind;
+    Index index;
+  };
+  struct Placement {
+    std::string path;
+    Index parent = no_index;
+    Index top = 0;               // the top-level instance it belongs to
+    Index group = no_index;      // where its instance statement is: a group, or no_index for top level
+    Index statement = no_index;  // index of the statement there; no_index: the consolidated mesh itself
+    Definition target{DefinitionKind::group, no_index};
+    bool references = false;  // its vertices are copied from other placements
+    Piece world;
+    std::vector<Index> reads;
+  };
+  struct VertexRef {
+    Index placement;
+    Index vertex;
+  };
+
+  Scene() = default;
+  void build(std::vector<Diagnostic>& errors);
+  void expand(const InstanceDecl& decl, Index group, Index statement, Index parent, Index top,
+              std::vector<Index>& stack, std::vector<Diagnostic>& errors);
+  const InstanceDecl* statement(const Placement& p) const;
+  bool is_leaf(const Placement& p) const { return p.target.kind != DefinitionKind::group; }
+  Piece evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors);
+  Piece definition_piece(const Placement& p, std::vector<Index>& reads, std::vector<Diagnostic>& errors);
+  glm::dmat4 world_matrix(Index placement, std::vector<Index>& reads) const;
+  std::optional<Color> placement_color(Index placement, std::vector<Index>& reads) const;
+  Color surface_color(const Name& surface, std::vector<Index>& reads) const;
+  void index_vertex_names();
+  const VertexRef* lookup_vertex(const Name& name, std::vector<Diagnostic>& errors) const;
+  void evaluate_all(const std::vector<Index>& placements, std::vector<Diagnostic>& errors);
+  void assemble(Index top);
+  void assemble_all();
+  std::vector<std::string> resolve_deleted(const std::vector<Name>& names, std::vector<Diagnostic>& errors);
+  Diagnostic located(SourceLocation at, std::string message) const;
+
+  SceneAst ast_;
+  std::vector<Diagnostic> warnings_;
+  std::vector<Bank> banks_;
+  std::vector<Parameter> parameters_;
+  std::vector<double> values_;
+  std::unordered_map<std::string, Index> parameter_ids_;
+  std::unordered_map<std::string, Definition> definitions_;
+  std::unordered_map<std::string, Index> points_;
+  std::unordered_map<std::string, Index> surfaces_;
+  std::vector<Placement> placements_;
+  std::vector<SceneInstance> instances_;
+  std::unordered_map<std::string, std::vector<VertexRef>> vertex_suffixes_;
+  std::vector<std::vector<std::string>> consolidated_;
+  std::vector<std::string> deleted_;
+  std::size_t placement_evaluations_ = 0;
+};
+
+}  // namespace nome::scene

@@ -1,0 +1,43 @@
+#include "nome/io/read_scene.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "nome/error.hpp"
+#include "nome/scene/parser.hpp"
+
+namespace nome {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path.string() + ": cannot open");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+bool is_scene_file(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".nome" || ext == ".nom" || ext == ".slf";
+}
+
+scene::Scene read_scene(const std::filesystem::path& path) {
+  const std::string text = read_text_file(path);
+  if (lower_extension(path) != ".slf") return scene::Scene::from_text(text, path.string());
+  scene::Diagnostics diagnostics(path.string());
+  scene::SceneAst ast = scene::parse_slf(text, diagnostics);
+  diagnostics.throw_if_errors();
+  return scene::Scene::from_ast(std::move(ast), diagnostics.all());
+}
+
+}  // namespace nome

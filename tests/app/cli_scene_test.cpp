@@ -1,0 +1,84 @@
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+#include "app/cli_support.hpp"
+
+using nome::test::run_nome;
+
+namespace {
+const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+const std::string originals = std::string(NOME_SOURCE_DIR) + "/tests/data/original/";
+}  // namespace
+
+TEST_CASE("nome info lists a scene's banks, sliders and top-level instances", "[app]") {
+  const auto r = run_nome("info " + assets + "funnel_cube.nome");
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("bank fp"));
+  CHECK_THAT(r.out, Catch::Contains("$fp_n = 8  [3, 10] step 1"));
+  CHECK_THAT(r.out, Catch::Contains("instance cf: 96 vertices, 48 faces"));
+  CHECK_THAT(r.out, Catch::Contains("components 6"));
+  const auto json = run_nome("info " + assets + "funnel_cube.nome --json");
+  CHECK_THAT(json.out, Catch::Contains("\"faces\": 48, \"chi\": 0, \"orientable\": true, \"borders\": 12"));
+  CHECK_THAT(json.out, Catch::Contains("\"scenes\": [{\"file\": "));
+  CHECK_THAT(json.out,
+             Catch::Contains("{\"name\": \"fp_n\", \"value\": 8, \"min\": 3, \"max\": 10, \"step\": 1}"));
+}
+
+TEST_CASE("nome info --set overrides a slider", "[app]") {
+  const auto r = run_nome("info " + assets + "funnel_cube.nome --set fp_n=6 --json");
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("\"vertices\": 72, \"edges\": 108, \"faces\": 36"));
+  const auto dotted = run_nome("info " + assets + "funnel_cube.nome --set fp.n=5 --set fp_ro=0.3 --json");
+  CHECK_THAT(dotted.out, Catch::Contains("\"faces\": 30"));
+  const auto outside = run_nome("info " + assets + "funnel_cube.nome --set fp_n=20");
+  CHECK(outside.status == 1);
+  CHECK_THAT(outside.err, Catch::Contains("fp_n=20 is outside its slider range [3, 10]"));
+  const auto unknown = run_nome("info " + assets + "funnel_cube.nome --set fp_m=4");
+  CHECK(unknown.status == 2);
+  CHECK_THAT(unknown.err, Catch::Contains("no parameter 'fp_m' (did you mean fp_n"));
+}
+
+TEST_CASE("nome reports scene errors as FILE:LINE:COL", "[app]") {
+  const std::string dir = nome::test::scratch_dir("scene_errors");
+  std::ofstream(dir + "/bad.nome") << "funnel f (8 1 0) endfunnel\ninstance i g endinstance\n";
+  const auto r = run_nome("info " + dir + "/bad.nome");
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("bad.nome:1:10: funnel 'f' takes 4 arguments (n ro ratio h), found 3"));
+  const auto hild = run_nome("info " + originals + "hild.nom");
+  CHECK(hild.status == 0);
+  CHECK_THAT(hild.err,
+             Catch::Contains("hild.nom:110:58: warning: expected 'endinstance', found 'enintance'"));
+}
+
+TEST_CASE("nome export writes a scene's instances", "[app]") {
+  const std::string dir = nome::test::scratch_dir("scene_export");
+  CHECK(run_nome("export " + assets + "klein_bottle.nome -o " + dir + "/kb.obj").status == 0);
+  CHECK_THAT(run_nome("info " + dir + "/kb.obj --json").out, Catch::Contains("\"faces\": 80"));
+}
+
+TEST_CASE("nome export -o OUT.nome saves the scene with the sliders as set", "[app]") {
+  const std::string dir = nome::test::scratch_dir("scene_save");
+  const auto r = run_nome("export " + assets + "funnel_cube.nome --set fp_n=5 -o " + dir + "/five.nome");
+  CHECK(r.status == 0);
+  const auto back = run_nome("info " + dir + "/five.nome --json");
+  CHECK_THAT(back.out, Catch::Contains("\"faces\": 30"));
+  CHECK_THAT(back.out, Catch::Contains("{\"name\": \"fp_n\", \"value\": 5,"));
+  CHECK(run_nome("export " + assets + "cube.obj -o " + dir + "/x.nome").status == 2);
+}
+
+TEST_CASE("nome info reads .sif (optionally as quads), .slf and .anom on top of a scene", "[app]") {
+  CHECK_THAT(run_nome("info " + assets + "mobius_band.sif --json").out,
+             Catch::Contains("\"faces\": 48, \"chi\": 0, \"orientable\": false, \"borders\": 1"));
+  CHECK_THAT(run_nome("info " + assets + "mobius_band.sif --quads --json").out, Catch::Contains("\"faces\": 24"));
+  const auto anom = run_nome("info " + originals + "kleinbottle.nom " + originals + "kleinbottle_s1.anom");
+  CHECK(anom.status == 0);
+  CHECK_THAT(anom.out, Catch::Contains("instance consolidatemesh: 16 vertices, 8 faces"));
+  const auto alone = run_nome("info " + originals + "kleinbottle_s1.anom");
+  CHECK(alone.status == 2);
+  CHECK_THAT(alone.err, Catch::Contains("an .anom file applies to an open scene"));
+  const auto slf = run_nome("info " + originals + "minSubdiv.slf");
+  CHECK(slf.status == 1);
+  CHECK_THAT(slf.err, Catch::Contains("nome: " + originals + "minSubdiv.slf:5:1: not supported yet: tclinit\n"));
+  CHECK_THAT(slf.err, Catch::Contains("nome: " + originals + "minSubdiv.slf:111:1: not supported yet: window\n"));
+}

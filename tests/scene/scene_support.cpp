@@ -1,0 +1,48 @@
+#include "scene/scene_support.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace nome::test {
+
+std::string assets_dir() {
+  return std::string(NOME_SOURCE_DIR) + "/assets/";
+}
+
+std::string originals_dir() {
+  return std::string(NOME_SOURCE_DIR) + "/tests/data/original/";
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+scene::Scene load_scene_file(const std::string& path) {
+  return scene::Scene::from_text(read_text(path), path);
+}
+
+std::vector<std::string> scene_errors(const std::string& text) {
+  try {
+    scene::Scene::from_text(text, "t.nome");
+  } catch (const scene::SceneError& e) {
+    std::vector<std::string> out;
+    for (const scene::Diagnostic& d : e.diagnostics()) out.push_back(d.to_string());
+    return out;
+  }
+  return {};
+}
+
+Vec3 vertex_position(const scene::Scene& s, const std::string& full_name) {
+  for (const scene::SceneInstance& i : s.instances()) {
+    const auto& names = i.geometry.soup.vertex_names;
+    for (size_t v = 0; v < names.size(); ++v)
+      if (names[v] == full_name) return i.geometry.soup.positions[v];
+  }
+  throw InvalidInputError("vertex_position: no vertex " + full_name);
+}
+
+}  // namespace nome::test

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "nome/scene/scene.hpp"
+
+namespace nome::test {
+
+// assets/ (the report's examples and ours) and tests/data/original/ (files of the original programs).
+std::string assets_dir();
+std::string originals_dir();
+std::string read_text(const std::string& path);
+scene::Scene load_scene_file(const std::string& path);
+
+// Every error the text produces, each as `t.nome:line:col: message`; empty if it loads.
+std::vector<std::string> scene_errors(const std::string& text);
+
+// The world position of a vertex of the scene, by its full hierarchical name.
+Vec3 vertex_position(const scene::Scene& s, const std::string& full_name);
+
+}  // namespace nome::test
