@@ -9,8 +9,9 @@
 namespace nome::cli {
 
 int export_command(const std::vector<std::string>& args) {
-  std::vector<OptionSpec> specs = {{"--output", "-o", "OUT", "output file: .obj, .stl, or .nome (saves the scene with its slider values)"},
-                                   {"--ascii", "", "", "write ASCII STL instead of binary"}};
+  std::vector<OptionSpec> specs = {
+      {"--output", "-o", "OUT", "output file: .obj, .stl, or .nome (saves the scene with its slider values)"},
+      {"--ascii", "", "", "write ASCII STL instead of binary"}};
   for (OptionSpec& s : input_options()) specs.push_back(std::move(s));
   Arguments parsed("export", "nome export FILE... -o OUT.obj|OUT.stl [--ascii] [pipeline options]", specs);
   parsed.parse(args);

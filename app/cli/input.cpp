@@ -1,8 +1,8 @@
 #include "cli/input.hpp"
 
 #include "cli/merge_option.hpp"
-#include "nome/error.hpp"
 #include "cli/scene_input.hpp"
+#include "nome/error.hpp"
 
 namespace nome::cli {
 namespace {

@@ -70,7 +70,8 @@ TEST_CASE("nome export -o OUT.nome saves the scene with the sliders as set", "[a
 TEST_CASE("nome info reads .sif (optionally as quads), .slf and .anom on top of a scene", "[app]") {
   CHECK_THAT(run_nome("info " + assets + "mobius_band.sif --json").out,
              Catch::Contains("\"faces\": 48, \"chi\": 0, \"orientable\": false, \"borders\": 1"));
-  CHECK_THAT(run_nome("info " + assets + "mobius_band.sif --quads --json").out, Catch::Contains("\"faces\": 24"));
+  CHECK_THAT(run_nome("info " + assets + "mobius_band.sif --quads --json").out,
+             Catch::Contains("\"faces\": 24"));
   const auto anom = run_nome("info " + originals + "kleinbottle.nom " + originals + "kleinbottle_s1.anom");
   CHECK(anom.status == 0);
   CHECK_THAT(anom.out, Catch::Contains("instance consolidatemesh: 16 vertices, 8 faces"));
@@ -79,6 +80,17 @@ TEST_CASE("nome info reads .sif (optionally as quads), .slf and .anom on top of 
   CHECK_THAT(alone.err, Catch::Contains("an .anom file applies to an open scene"));
   const auto slf = run_nome("info " + originals + "minSubdiv.slf");
   CHECK(slf.status == 1);
-  CHECK_THAT(slf.err, Catch::Contains("nome: " + originals + "minSubdiv.slf:5:1: not supported yet: tclinit\n"));
-  CHECK_THAT(slf.err, Catch::Contains("nome: " + originals + "minSubdiv.slf:111:1: not supported yet: window\n"));
+  CHECK_THAT(slf.err,
+             Catch::Contains("nome: " + originals + "minSubdiv.slf:5:1: not supported yet: tclinit\n"));
+  CHECK_THAT(slf.err,
+             Catch::Contains("nome: " + originals + "minSubdiv.slf:111:1: not supported yet: window\n"));
+}
+
+TEST_CASE("merged, the report's corner patches close the funnel cube into one surface with six rims",
+          "[app]") {
+  const auto r = run_nome("info " + assets + "funnel_cube_consolidated.nome --merge --json");
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains(
+                        "\"vertices\": 96, \"edges\": 180, \"faces\": 80, \"chi\": -4, \"orientable\": true, "
+                        "\"borders\": 6, \"components\": 1"));
 }
