@@ -1,0 +1,119 @@
+#include <catch2/catch.hpp>
+
+#include "nome/edit/scene_document.hpp"
+#include "nome/mesh/topology_report.hpp"
+#include "nome/ops/merge.hpp"
+#include "nome/scene/save_nome.hpp"
+#include "scene/scene_support.hpp"
+
+using namespace nome;
+
+namespace {
+
+// The report's funnel cube (section 8.1) before any corner is closed.
+const char* const funnel_cube = R"(
+bank fp
+    set n 8 3 10 1
+    set ro 0.5 0.1 1.0 0.1
+    set ratio 0 -0.5 0.5 0.1
+    set h 0.3 0.1 1.5 0.1
+    set z -1 -1.5 -0.1 0.1
+endbank
+funnel fun ({expr $fp_n} {expr $fp_ro} {expr $fp_ratio} {expr $fp_h}) endfunnel
+group cubeMadeByFunnel
+    instance fun1 fun translate (0 0 {expr $fp_z}) endinstance
+    instance fun2 fun translate (0 0 {expr $fp_z}) rotate (1 0 0) (180) endinstance
+    instance fun3 fun translate (0 0 {expr $fp_z}) rotate (1 0 0) (90) endinstance
+    instance fun4 fun translate (0 0 {expr $fp_z}) rotate (1 0 0) (-90) endinstance
+    instance fun5 fun translate (0 0 {expr $fp_z}) rotate (0 1 0) (90) endinstance
+    instance fun6 fun translate (0 0 {expr $fp_z}) rotate (0 1 0) (-90) endinstance
+endgroup
+instance cf cubeMadeByFunnel endinstance
+)";
+
+// The four polygons the report adds below one corner (its funnel_cube_consolidated.nome).
+const std::vector<std::vector<std::string>> corner = {{"fun3_hc3", "fun2_hc5", "fun2_hc6", "fun3_hc2"},
+                                                      {"fun3_hc3", "fun5_hc3", "fun2_hc5"},
+                                                      {"fun3_hc4", "fun5_hc2", "fun5_hc3", "fun3_hc3"},
+                                                      {"fun5_hc3", "fun5_hc4", "fun2_hc4", "fun2_hc5"}};
+
+void close_corner(SceneDocument& doc) {
+  for (const auto& face : corner) {
+    std::vector<std::string> full;
+    for (const std::string& name : face) full.push_back(doc.scene().resolve_vertex_name(name));
+    const EditOutcome added = doc.edits().add_polygon(full);
+    INFO(added.message);
+    REQUIRE(added.applied);
+  }
+  REQUIRE(doc.edits().accept_temporary().applied);
+}
+
+}  // namespace
+
+TEST_CASE("funnel_cube_consolidated.nome: its top-level instances merge into one orientable surface",
+          "[scene]") {
+  const scene::Scene s = test::load_scene_file(test::assets_dir() + "funnel_cube_consolidated.nome");
+  std::vector<Mesh> instances;
+  for (const scene::SceneInstance& instance : s.instances())
+    instances.push_back(build_mesh(instance.geometry.soup));
+  REQUIRE(instances.size() == 9);  // the six funnels' group and the eight corner patches
+  const MergeResult merged = merge_meshes(instances);
+  CHECK(merged.skipped.empty());
+  const TopologyReport r = topology_report(merged.mesh);
+  CHECK(r.vertices == 96);
+  CHECK(r.edges == 180);
+  CHECK(r.faces == 80);
+  CHECK(r.chi == -4);
+  CHECK(r.orientable);
+  CHECK(r.borders == 6);
+  CHECK(r.components.size() == 1);
+  // Each patch has 9 border edges; they and the funnels' 6 x 8 inner rim edges all pair up.
+  CHECK(merged.glued_edges == (8 * 9 + 6 * 8) / 2);
+}
+
+TEST_CASE("the report's corner polygons, accepted and merged, join three funnels into one surface",
+          "[scene]") {
+  SceneDocument doc(scene::Scene::from_text(funnel_cube, "cube.nome"));
+  close_corner(doc);
+  const MergeResult merged = merge_meshes(doc.edits().parts());
+  CHECK(merged.skipped.empty());
+  const TopologyReport r = topology_report(merged.mesh);
+  CHECK(r.components.size() == 4);  // the corner's three funnels as one, the other three apart
+  CHECK(r.orientable);
+  CHECK(r.mobius_edges == 0);
+  CHECK(r.faces == 48 + 4);
+}
+
+TEST_CASE("the consolidated mesh is saved into the scene and read back", "[scene]") {
+  SceneDocument doc(scene::Scene::from_text(funnel_cube, "cube.nome"));
+  close_corner(doc);
+  REQUIRE(doc.edits().delete_faces({doc.edits().scene_geometry().face_names[0]}).applied);
+  const std::string text = scene::to_nome_text(doc.scene_for_saving());
+  const SceneDocument reread(scene::Scene::from_text(text, "saved.nome"));
+  CHECK(reread.edits().consolidated_faces().size() == 4);
+  CHECK(reread.edits().deleted_faces() == doc.edits().deleted_faces());
+  const TopologyReport before = topology_report(merge_meshes(doc.edits().parts()).mesh);
+  const TopologyReport after = topology_report(merge_meshes(reread.edits().parts()).mesh);
+  CHECK(after.vertices == before.vertices);
+  CHECK(after.edges == before.edges);
+  CHECK(after.faces == before.faces);
+  CHECK(after.components.size() == before.components.size());
+}
+
+TEST_CASE("lowering a slider hides the edits on vanished vertices, raising it brings them back", "[scene]") {
+  SceneDocument doc(scene::Scene::from_text(funnel_cube, "cube.nome"));
+  close_corner(doc);
+  const auto n = doc.scene().find_parameter("fp_n");
+  REQUIRE(n);
+  doc.set_parameter(*n, 5);  // hc5 and hc6 are gone
+  const std::vector<UnresolvedEdit> gone = doc.edits().unresolved();
+  CHECK(gone.size() == 3);  // the faces through fun2_hc5 or fun2_hc6
+  std::vector<std::string> left_out;
+  const scene::Scene saved = doc.scene_for_saving(&left_out);
+  CHECK(left_out.size() == 3);
+  CHECK(saved.consolidated_faces().size() == 1);
+
+  doc.set_parameter(*n, 8);
+  CHECK(doc.edits().unresolved().empty());
+  CHECK(doc.edits().consolidated_mesh().mesh.num_faces() == 4);
+}
