@@ -4,15 +4,32 @@
 
 namespace nome::render {
 
+// Each program is compiled on first use: a render without overlays never pays for the others.
 struct Renderer::Programs {
-  ShaderProgram mesh{
-      "mesh", {{GL_VERTEX_SHADER, {"mesh.vert"}}, {GL_FRAGMENT_SHADER, {"lighting.glsl", "mesh.frag"}}}};
-  ShaderProgram lines{"lines",
-                      {{GL_VERTEX_SHADER, {"lines.vert"}},
-                       {GL_GEOMETRY_SHADER, {"lines.geom"}},
-                       {GL_FRAGMENT_SHADER, {"lines.frag"}}}};
-  ShaderProgram cubes{
-      "cubes", {{GL_VERTEX_SHADER, {"cubes.vert"}}, {GL_FRAGMENT_SHADER, {"lighting.glsl", "cubes.frag"}}}};
+  const ShaderProgram& mesh() {
+    if (!mesh_)
+      mesh_ = std::make_unique<ShaderProgram>(
+          "mesh", std::vector<ShaderStage>{{GL_VERTEX_SHADER, {"mesh.vert"}},
+                                           {GL_FRAGMENT_SHADER, {"lighting.glsl", "mesh.frag"}}});
+    return *mesh_;
+  }
+  const ShaderProgram& lines() {
+    if (!lines_)
+      lines_ = std::make_unique<ShaderProgram>("lines", std::vector<ShaderStage>{{GL_VERTEX_SHADER, {"lines.vert"}},
+                                                                                {GL_GEOMETRY_SHADER, {"lines.geom"}},
+                                                                                {GL_FRAGMENT_SHADER, {"lines.frag"}}});
+    return *lines_;
+  }
+  const ShaderProgram& cubes() {
+    if (!cubes_)
+      cubes_ = std::make_unique<ShaderProgram>(
+          "cubes", std::vector<ShaderStage>{{GL_VERTEX_SHADER, {"cubes.vert"}},
+                                            {GL_FRAGMENT_SHADER, {"lighting.glsl", "cubes.frag"}}});
+    return *cubes_;
+  }
+
+ private:
+  std::unique_ptr<ShaderProgram> mesh_, lines_, cubes_;
 };
 
 Renderer::Frame Renderer::Frame::of(const Camera& camera, glm::ivec2 origin, glm::ivec2 size) {
@@ -48,7 +65,7 @@ void Renderer::begin(const Frame& frame, const glm::vec4& background) const {
 void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const DisplaySettings& settings) const {
   glViewport(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
   if (settings.show_faces && mesh.triangle_index_count() > 0) {
-    const ShaderProgram& p = programs_->mesh;
+    const ShaderProgram& p = programs_->mesh();
     p.use();
     p.set("model_view", frame.view);
     p.set("projection", frame.projection);
@@ -94,7 +111,7 @@ void Renderer::draw_segments(GLuint vao, SegmentRange range, const Frame& frame,
                              float width) const {
   if (range.count == 0) return;
   glViewport(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
-  const ShaderProgram& p = programs_->lines;
+  const ShaderProgram& p = programs_->lines();
   p.use();
   p.set("model_view", frame.view);
   p.set("projection", frame.projection);
@@ -122,7 +139,7 @@ void Renderer::draw_lines(const LineSet& lines, const Frame& frame, const glm::v
 void Renderer::draw_cubes(const CubeSet& cubes, const Frame& frame) const {
   if (cubes.count() == 0) return;
   glViewport(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
-  const ShaderProgram& p = programs_->cubes;
+  const ShaderProgram& p = programs_->cubes();
   p.use();
   p.set("model_view", frame.view);
   p.set("projection", frame.projection);
