@@ -15,9 +15,10 @@ struct Renderer::Programs {
   }
   const ShaderProgram& lines() {
     if (!lines_)
-      lines_ = std::make_unique<ShaderProgram>("lines", std::vector<ShaderStage>{{GL_VERTEX_SHADER, {"lines.vert"}},
-                                                                                {GL_GEOMETRY_SHADER, {"lines.geom"}},
-                                                                                {GL_FRAGMENT_SHADER, {"lines.frag"}}});
+      lines_ = std::make_unique<ShaderProgram>(
+          "lines", std::vector<ShaderStage>{{GL_VERTEX_SHADER, {"lines.vert"}},
+                                            {GL_GEOMETRY_SHADER, {"lines.geom"}},
+                                            {GL_FRAGMENT_SHADER, {"lines.frag"}}});
     return *lines_;
   }
   const ShaderProgram& cubes() {
