@@ -74,10 +74,12 @@ void measure(const nome::render::Renderer& renderer, const nome::Mesh& mesh, boo
   const double first = frames.front();
   frames.erase(frames.begin());
   std::sort(frames.begin(), frames.end());
-  std::printf("%8u faces%s, %dx MSAA: display data %7.1f ms, upload %6.1f ms, first frame %7.1f ms, later frames median "
-              "%7.1f ms, read-back %5.1f ms, PNG %6.1f ms\n",
-              mesh.num_faces(), wire ? " + wire" : "       ", samples, build_ms, upload_ms, first, frames[frames.size() / 2],
-              read_ms, png_ms);
+  std::printf(
+      "%8u faces%s, %dx MSAA: display data %7.1f ms, upload %6.1f ms, first frame %7.1f ms, later frames "
+      "median "
+      "%7.1f ms, read-back %5.1f ms, PNG %6.1f ms\n",
+      mesh.num_faces(), wire ? " + wire" : "       ", samples, build_ms, upload_ms, first,
+      frames[frames.size() / 2], read_ms, png_ms);
 }
 
 }  // namespace
