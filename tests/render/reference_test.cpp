@@ -20,6 +20,12 @@ struct ReferenceCase {
 };
 
 const ReferenceCase reference_cases[] = {
+    // The report's examples (assets/*.nome, scene language).
+    {"funnel_cube", "assets/funnel_cube.nome", "--wire"},
+    {"funnel_cube_n5", "assets/funnel_cube.nome", "--set fp_n=5 --flat --wire"},
+    {"funnel_cube_consolidated_merged", "assets/funnel_cube_consolidated.nome", "--merge --wire --borders"},
+    {"klein_bottle_scene_pieces", "assets/klein_bottle.nome", "--wire"},
+    // Surfaces given as OBJ.
     {"mobius_band", "assets/mobius_band.obj", ""},
     {"mobius_band_wire_flat_highlights", "assets/mobius_band.obj", "--wire --flat --mobius-edges --borders"},
     {"mobius_band_narrow_views", "assets/mobius_band_narrow.obj", "--views 4 --wire"},
