@@ -11,25 +11,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "nome/query/pick.hpp"
+#include "torus.hpp"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-nome::Mesh torus(nome::Index u, nome::Index v) {
-  nome::PolygonSoup s;
-  const double two_pi = 6.283185307179586;
-  for (nome::Index i = 0; i < u; ++i)
-    for (nome::Index j = 0; j < v; ++j) {
-      const double a = two_pi * i / u, b = two_pi * j / v;
-      s.add_vertex({(1.0 + 0.3 * std::cos(b)) * std::cos(a), (1.0 + 0.3 * std::cos(b)) * std::sin(a),
-                    0.3 * std::sin(b)});
-    }
-  auto id = [&](nome::Index i, nome::Index j) { return (i % u) * v + (j % v); };
-  for (nome::Index i = 0; i < u; ++i)
-    for (nome::Index j = 0; j < v; ++j) s.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-  return nome::build_mesh(std::move(s));
-}
+using nome::bench::torus;
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());

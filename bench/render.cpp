@@ -12,6 +12,7 @@
 #include "render/mesh_buffers.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/renderer.hpp"
+#include "torus.hpp"
 
 namespace {
 
@@ -21,20 +22,7 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-nome::Mesh torus(nome::Index u, nome::Index v) {
-  nome::PolygonSoup s;
-  const double two_pi = 6.283185307179586;
-  for (nome::Index i = 0; i < u; ++i)
-    for (nome::Index j = 0; j < v; ++j) {
-      const double a = two_pi * i / u, b = two_pi * j / v;
-      s.add_vertex({(1.0 + 0.3 * std::cos(b)) * std::cos(a), (1.0 + 0.3 * std::cos(b)) * std::sin(a),
-                    0.3 * std::sin(b)});
-    }
-  auto id = [&](nome::Index i, nome::Index j) { return (i % u) * v + (j % v); };
-  for (nome::Index i = 0; i < u; ++i)
-    for (nome::Index j = 0; j < v; ++j) s.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-  return nome::build_mesh(std::move(s));
-}
+using nome::bench::torus;
 
 void measure(const nome::render::Renderer& renderer, const nome::Mesh& mesh, bool wire, int samples) {
   using namespace nome::render;
