@@ -1,6 +1,7 @@
 #include "app/cli_support.hpp"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -11,7 +12,9 @@
 namespace nome::test {
 
 std::string scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "nome_app_tests" / name;
+  // One folder per process: several checkouts may run the same tests at once on one machine.
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("nome_app_tests_" + std::to_string(::getpid())) / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
