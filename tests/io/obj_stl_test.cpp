@@ -1,3 +1,5 @@
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -15,7 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "nome_io_tests";
+  const fs::path dir = fs::temp_directory_path() / ("nome_io_tests_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir / name;
 }

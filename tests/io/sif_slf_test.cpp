@@ -1,3 +1,5 @@
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -87,7 +89,8 @@ TEST_CASE("malformed SIF says where and what was expected", "[io]") {
 }
 
 TEST_CASE("the .slf subset reads points, faces, objects, groups and instances", "[io]") {
-  const std::string dir = std::filesystem::temp_directory_path() / "nome_slf_test";
+  const std::string dir =
+      std::filesystem::temp_directory_path() / ("nome_slf_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/cube.slf")
       << "surface Y color (1 1 0) endsurface\n"

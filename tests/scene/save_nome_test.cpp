@@ -1,3 +1,5 @@
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -62,7 +64,8 @@ TEST_CASE("an edited scene saves its slider values, consolidated faces and delet
   CHECK(s.instances()[1].name == "consolidatemesh");
   CHECK(s.instances()[1].geometry.soup.num_faces() == 2);
 
-  const std::string dir = std::filesystem::temp_directory_path() / "nome_save_test";
+  const std::string dir =
+      std::filesystem::temp_directory_path() / ("nome_save_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   scene::write_nome(s, dir + "/edited.nome");
   const Scene back = read_scene(dir + "/edited.nome");
