@@ -29,18 +29,6 @@ std::string lower_extension(const std::filesystem::path& path) {
   return ext;
 }
 
-// The half-size of the cube marking a selected vertex: the report sizes it by the edges at the vertex.
-float marker_size(const Mesh& mesh, Index v) {
-  double sum = 0.0;
-  Index count = 0;
-  for (Index e : mesh.vertex_edges(v)) {
-    const Edge& edge = mesh.edge(e);
-    sum += glm::length(mesh.position(edge.vertices[0]) - mesh.position(edge.vertices[1]));
-    ++count;
-  }
-  return count ? float(0.04 * sum / count) : 0.01f;
-}
-
 // A selected border as the zipper reads it: whole loops from their first vertex, segments end to end
 // in the direction they were picked.
 BorderSelection zipper_border(const BorderLookup& borders, const Selection::Border& border) {
@@ -232,11 +220,7 @@ double Window::aspect() const {
 }
 
 ScreenProjection Window::projection() const {
-  ScreenProjection p;
-  p.view = glm::dmat4(camera_.view_matrix());
-  p.projection = glm::dmat4(camera_.projection_matrix(aspect()));
-  p.viewport = window_size();
-  return p;
+  return camera_.screen_projection(window_size());
 }
 
 void Window::frame_all() {
@@ -376,17 +360,14 @@ void Window::refresh_selection() {
   if (!shown_mesh() || !buffers_) return;
   const Mesh& mesh = *shown_mesh();
   buffers_->set_selected_faces(selection_.faces());
-  std::vector<render::CubeMarker> markers;
-  const glm::vec3 color = display_.selection_color;
-  for (Index v : selection_.vertices())
-    markers.push_back({glm::vec3(mesh.position(v)), marker_size(mesh, v), color});
-  for (Index v : selection_.pending_ends())
-    markers.push_back({glm::vec3(mesh.position(v)), marker_size(mesh, v), glm::vec3(0.1f, 0.7f, 0.3f)});
+  std::vector<Index> marked(selection_.vertices().begin(), selection_.vertices().end());
   // The first vertex of each whole border is the zipper's matching point: marked as a cube.
   for (const auto& border : selection_.borders())
-    if (border.is_loop && !border.vertices.empty())
-      markers.push_back(
-          {glm::vec3(mesh.position(border.vertices[0])), marker_size(mesh, border.vertices[0]), color});
+    if (border.is_loop && !border.vertices.empty()) marked.push_back(border.vertices[0]);
+  std::vector<render::CubeMarker> markers = render::vertex_markers(mesh, marked, display_.selection_color);
+  for (const render::CubeMarker& m :
+       render::vertex_markers(mesh, selection_.pending_ends(), {0.1f, 0.7f, 0.3f}))
+    markers.push_back(m);
   cubes_->set(markers);
   std::vector<glm::vec3> points;
   std::vector<std::uint32_t> segments;

@@ -16,11 +16,7 @@ ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elev
   const double aspect = double(viewer_width) / double(viewer_height);
   camera.set_view(azimuth, elevation);
   camera.fit(mesh.positions(), aspect);
-  ScreenProjection p;
-  p.view = glm::dmat4(camera.view_matrix());
-  p.projection = glm::dmat4(camera.projection_matrix(aspect));
-  p.viewport = {viewer_width, viewer_height};
-  return p;
+  return camera.screen_projection({viewer_width, viewer_height});
 }
 
 std::optional<glm::dvec2> click_position(const Mesh& mesh, const ScreenProjection& projection, Index v) {
