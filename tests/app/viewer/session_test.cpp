@@ -1,0 +1,42 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <fstream>
+
+#include "app/cli_support.hpp"
+#include "nome/error.hpp"
+#include "viewer/session.hpp"
+
+using namespace nome;
+using nome::viewer::Session;
+
+TEST_CASE("a bad edit of the open file keeps the last good geometry and the edits", "[app]") {
+  const std::string dir = nome::test::scratch_dir("session_reload");
+  const std::string file = dir + "/square.obj";
+  const std::string squares = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nv 3 1 0\nv 2 1 0\n";
+  std::ofstream(file) << squares << "f 1 2 3 4\nf 5 6 7 8\n";
+  Session session = Session::open(file);
+  REQUIRE(session.scene_soup().num_faces() == 2);
+  const Mesh shown = build_mesh(session.scene_soup());
+  auto id = [&](const std::string& name) {
+    const auto& names = shown.vertex_names();
+    return Index(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  const std::vector<Index> corners{id("v2"), id("v5"), id("v8"), id("v3")};  // a quad between the squares
+  REQUIRE(session.add_polygon(shown, corners).applied);
+  CHECK(session.face_parts().temporary == 1);
+  CHECK(session.is_modified());
+
+  std::ofstream(file) << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
+  const auto version = session.version();
+  CHECK_THROWS_AS(session.reload(), IoError);
+  CHECK(session.version() == version);
+  CHECK(session.scene_soup().num_faces() == 3);
+
+  // A good edit comes in and the added face follows it by name.
+  std::ofstream(file) << squares << "f 1 2 3 4\nf 5 6 7 8\n" << "v 9 9 9\n";
+  session.reload();
+  CHECK(session.version() > version);
+  CHECK(session.scene_soup().num_faces() == 3);
+  CHECK(session.face_parts().temporary == 1);
+}
