@@ -1,8 +1,12 @@
 #include "viewer/session.hpp"
 
+#include <algorithm>
+
 #include "nome/error.hpp"
 #include "nome/io/read_polygons.hpp"
+#include "nome/io/read_scene.hpp"
 #include "nome/mesh/concatenate.hpp"
+#include "nome/scene/save_nome.hpp"
 
 namespace nome::viewer {
 namespace {
@@ -27,7 +31,12 @@ std::string name_of(const std::vector<std::string>& names, Index i, const char* 
 Session Session::open(const std::filesystem::path& path) {
   Session session;
   session.path_ = path;
-  session.document_ = Document(with_names(read_polygons(path)));
+  if (is_scene_file(path)) {
+    session.scene_.emplace(read_scene(path));
+    session.document_ = Document(session.scene_->combined_soup());
+  } else {
+    session.document_ = Document(with_names(read_polygons(path)));
+  }
   session.update_soup();
   return session;
 }
@@ -89,8 +98,63 @@ bool Session::redo() {
   return is_done;
 }
 
+void Session::set_parameter(Index parameter, double value) {
+  if (!scene_) throw InvalidInputError("set: " + path_.filename().string() + " has no sliders");
+  scene_->set_parameter(parameter, value);
+  document_.set_scene_geometry(scene_->combined_soup());
+  is_modified_ = true;
+  update_soup();
+}
+
+void Session::set_parameter(const std::string& name, double value) {
+  if (!scene_) throw InvalidInputError("set: " + path_.filename().string() + " has no sliders");
+  const auto id = scene_->find_parameter(name);
+  if (!id) {
+    std::vector<std::string> known;
+    for (const scene::Parameter& p : scene_->parameters()) known.push_back(p.full_name);
+    throw InvalidInputError("set: no slider '" + name + "'" + scene::did_you_mean(name, known));
+  }
+  set_parameter(*id, value);
+}
+
+void Session::save(const std::filesystem::path& path) {
+  if (!scene_)
+    throw InvalidInputError("save: only scene files are saved as .nome (export writes .obj and .stl)");
+  // The file's own consolidated faces and deletions, then this session's.
+  std::vector<std::vector<std::string>> consolidated = scene_->consolidated_faces();
+  for (const EditedFace& face : document_.consolidated_faces()) consolidated.push_back(face.vertices);
+  std::vector<std::string> deleted = scene_->deleted_faces();
+  for (const std::string& name : document_.deleted_faces())
+    if (std::find(deleted.begin(), deleted.end(), name) == deleted.end()) deleted.push_back(name);
+  scene::Scene saved = *scene_;
+  saved.set_consolidated_faces(std::move(consolidated));
+  saved.set_deleted_faces(std::move(deleted));
+  scene::write_nome(saved, path);
+  // The saved file now holds the accepted edits: start from it, keeping the temporary faces' intent lost
+  // only when the user had not accepted them (as the report's program did).
+  scene_.emplace(std::move(saved));
+  document_ = Document(scene_->combined_soup());
+  path_ = path;
+  is_modified_ = false;
+  update_soup();
+}
+
 void Session::reload() {
-  document_.set_scene_geometry(with_names(read_polygons(path_)));
+  if (!scene_) {
+    document_.set_scene_geometry(with_names(read_polygons(path_)));
+    update_soup();
+    return;
+  }
+  scene::Scene fresh = read_scene(path_);
+  // The user's slider values survive an edit of the text (where the slider is still there and in range).
+  for (const scene::Parameter& p : scene_->parameters()) {
+    const auto id = fresh.find_parameter(p.full_name);
+    if (!id) continue;
+    const scene::Parameter& q = fresh.parameters()[*id];
+    if (p.value != q.value && p.value >= q.min && p.value <= q.max) fresh.set_parameter(*id, p.value);
+  }
+  scene_.emplace(std::move(fresh));
+  document_.set_scene_geometry(scene_->combined_soup());
   update_soup();
 }
 

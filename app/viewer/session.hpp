@@ -2,11 +2,14 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
+#include <string>
 
 #include "nome/edit/document.hpp"
 #include "nome/mesh/polygon_soup.hpp"
 #include "nome/ops/zipper.hpp"
+#include "nome/scene/scene.hpp"
 
 namespace nome::viewer {
 
@@ -20,9 +23,11 @@ struct FaceParts {
 // The file open in a window (DESIGN.md "App": the document side): its geometry and the editing Document
 // over it (temporary and consolidated faces, deletions, undo), and whether there are unsaved changes.
 // Edits name vertices and faces as the displayed mesh does (hierarchical names; `v12`, `f3` for flat files).
+// A scene file also has sliders, and saves as .nome with its slider values and edits.
 class Session {
  public:
-  // Reads flat geometry (.obj .stl .sif). Throws nome::Error with `file:line:col: message` when it cannot.
+  // Reads a scene (.nome .nom .slf) or flat geometry (.obj .stl .sif). Throws nome::Error (a SceneError
+  // lists every `file:line:col: message`) when it cannot.
   static Session open(const std::filesystem::path& path);
 
   const std::filesystem::path& path() const { return path_; }
@@ -35,6 +40,18 @@ class Session {
   // Unsaved changes (edits since the last save or load).
   bool is_modified() const { return is_modified_; }
   const Document& document() const { return document_; }
+  // The scene of a scene file; none for flat geometry (no sliders, no .nome saving).
+  const scene::Scene* scene() const { return scene_ ? &*scene_ : nullptr; }
+
+  // Moves a slider and re-evaluates what reads it. Throws InvalidInputError outside the slider's range
+  // or for an unknown name (naming close ones), SceneError when the scene cannot be evaluated with the
+  // value (nothing changes then).
+  void set_parameter(Index parameter, double value);
+  void set_parameter(const std::string& name, double value);
+
+  // Saves the scene with its slider values and the consolidated faces and deletions as .nome
+  // (atomically); the saved file becomes the session's file. Temporary faces are not saved.
+  void save(const std::filesystem::path& path);
 
   // Edits of report 7.3.3, on vertices and faces of `displayed` (the scene or merged stage). Each returns
   // what happened; a refused edit changes nothing.
@@ -55,6 +72,7 @@ class Session {
   void update_soup();
 
   std::filesystem::path path_;
+  std::optional<scene::Scene> scene_;
   Document document_;
   PolygonSoup soup_;
   FaceParts parts_;

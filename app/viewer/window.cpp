@@ -84,6 +84,13 @@ void Window::register_keys() {
     keys_.add(GLFW_KEY_1 + i, KeyModifier::control, "open recent file " + std::to_string(i + 1), [this, i] {
       if (std::size_t(i) < recent_.files().size()) open(recent_.files()[i]);
     });
+  keys_.add(GLFW_KEY_S, KeyModifier::control, "save the scene (.nome)", [this] { save(std::nullopt); });
+  keys_.add(GLFW_KEY_S, KeyModifier::control | KeyModifier::shift, "save the scene as (.nome)", [this] {
+    if (!session_ || !session_->scene()) return;
+    browser_purpose_ = BrowserPurpose::save;
+    browser_.open("Save As", session_->path().parent_path(), {".nome"}, "Save",
+                  session_->path().filename().string());
+  });
   keys_.add(GLFW_KEY_E, KeyModifier::control, "export the stage on screen (.stl, .obj)", [this] {
     if (!session_) return;
     browser_purpose_ = BrowserPurpose::export_mesh;
@@ -146,6 +153,31 @@ void Window::open(const std::filesystem::path& path) {
     log_.info("opened " + path.string() + " (" + std::to_string(soup.num_vertices()) + " vertices, " +
               std::to_string(soup.num_faces()) + " faces)");
     glfwSetWindowTitle(window_, ("Nome - " + path.filename().string()).c_str());
+  } catch (const std::exception& e) {
+    log_.error(e.what());
+  }
+}
+
+void Window::save(const std::optional<std::filesystem::path>& path) {
+  if (!session_ || !session_->scene()) {
+    log_.error("save: only scene files (.nome) are saved; File > Export writes .stl and .obj");
+    return;
+  }
+  const std::filesystem::path target = path ? *path : session_->path();
+  try {
+    session_->save(target);
+    std::error_code ec;
+    file_time_ = std::filesystem::last_write_time(target, ec);
+    recent_.add(target);
+    log_.info("saved " + target.string());
+  } catch (const std::exception& e) {
+    log_.error(e.what());
+  }
+}
+
+void Window::set_slider(Index parameter, double value) {
+  try {
+    session_->set_parameter(parameter, value);
   } catch (const std::exception& e) {
     log_.error(e.what());
   }
@@ -540,10 +572,19 @@ bool Window::run_command(const ScriptCommand& c) {
     case Kind::action:
       return run_action(c.words[0]);
     case Kind::set:
+      if (!session_) throw InvalidInputError("set: no file is open");
+      session_->set_parameter(c.words[0], c.numbers[0]);
+      return true;
+    case Kind::save:
+      if (!session_ || !session_->scene())
+        throw InvalidInputError("save: only scene files (.nome) are saved");
+      session_->save(c.words[0]);
+      log_.info("saved " + c.words[0]);
+      return true;
     case Kind::subdiv:
     case Kind::offset:
-    case Kind::save:
-      throw InvalidInputError("'" + c.words.front() + "' needs a scene file (.nome) open");
+      throw InvalidInputError(std::string(c.kind == Kind::subdiv ? "subdiv" : "offset") +
+                              ": this build has no subdivision or offset stage");
   }
   return false;
 }

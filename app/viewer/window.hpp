@@ -96,6 +96,9 @@ class Window {
   void draw_panels();
   void draw_menu();
   void draw_control_panel();
+  void draw_slider_panels();
+  void save(const std::optional<std::filesystem::path>& path);
+  void set_slider(Index parameter, double value);
   void draw_topology_panel();
   void draw_log_panel();
   void draw_status_bar();
@@ -135,7 +138,7 @@ class Window {
   KeyRegistry keys_;
   RecentFiles recent_;
   FileBrowser browser_;
-  enum class BrowserPurpose { open, export_mesh } browser_purpose_ = BrowserPurpose::open;
+  enum class BrowserPurpose { open, save, export_mesh } browser_purpose_ = BrowserPurpose::open;
 
   // Mouse: a press-release that moves less than click_pixels is a click, otherwise a drag.
   static constexpr double click_pixels = 4.0;

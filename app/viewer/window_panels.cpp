@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 
 #define GLFW_INCLUDE_NONE  // GL comes from glad (render/gl.hpp)
 #include <GLFW/glfw3.h>
@@ -23,6 +24,7 @@ float status_bar_height() {
 void Window::draw_panels() {
   draw_menu();
   draw_control_panel();
+  draw_slider_panels();
   draw_topology_panel();
   if (show_log_) draw_log_panel();
   draw_status_bar();
@@ -32,6 +34,8 @@ void Window::draw_panels() {
   if (const auto chosen = browser_.draw()) {
     if (browser_purpose_ == BrowserPurpose::open) {
       open(*chosen);
+    } else if (browser_purpose_ == BrowserPurpose::save) {
+      save(*chosen);
     } else {
       try {
         export_mesh(*chosen);
@@ -56,6 +60,9 @@ void Window::draw_menu() {
       }
       ImGui::EndMenu();
     }
+    const bool is_scene = session_ && session_->scene();
+    if (ImGui::MenuItem("Save", "Ctrl+S", false, is_scene)) save(std::nullopt);
+    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S", false, is_scene)) keys_.press("Ctrl+Shift+S");
     if (ImGui::MenuItem("Export STL / OBJ...", "Ctrl+E", false, session_.has_value())) keys_.press("Ctrl+E");
     if (ImGui::MenuItem("Screenshot", "P")) keys_.press("P");
     ImGui::Separator();
@@ -175,11 +182,42 @@ void Window::draw_control_panel() {
   ImGui::End();
 }
 
+void Window::draw_slider_panels() {
+  const scene::Scene* scene = session_ ? session_->scene() : nullptr;
+  if (!scene) return;
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  float y = 206.0f;  // below the topology panel
+  for (const scene::Bank& bank : scene->banks()) {
+    ImGui::SetNextWindowPos(ImVec2(size.x - 338, y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+    y += 40.0f + 26.0f * float(bank.parameters.size());
+    if (!ImGui::Begin(("bank " + bank.name).c_str())) {
+      ImGui::End();
+      continue;
+    }
+    for (Index id : bank.parameters) {
+      const scene::Parameter& p = scene->parameters()[id];
+      float value = float(p.value);
+      ImGui::SetNextItemWidth(-70);
+      // Ctrl+click on a slider types an exact value (ImGui's own behaviour).
+      if (ImGui::SliderFloat(p.name.c_str(), &value, float(p.min), float(p.max), "%.4g")) {
+        double snapped = value;
+        if (p.step > 0.0) snapped = p.min + std::round((value - p.min) / p.step) * p.step;
+        snapped = std::clamp(snapped, p.min, p.max);
+        if (snapped != p.value) set_slider(id, snapped);
+      }
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("$%s: %g .. %g, step %g", p.full_name.c_str(), p.min, p.max, p.step);
+    }
+    ImGui::End();
+  }
+}
+
 void Window::draw_topology_panel() {
   if (!shown_mesh()) return;
   const ImVec2 size = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(size.x - 328, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(320, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(size.x - 338, 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 170), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Topology")) {
     ImGui::End();
     return;
@@ -331,6 +369,12 @@ void Window::draw_quit_prompt() {
   }
   if (!ImGui::BeginPopupModal("Quit without saving?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   ImGui::TextUnformatted("The scene has unsaved changes.");
+  if (session_ && session_->scene() && ImGui::Button("Save and quit")) {
+    save(std::nullopt);
+    should_close_ = !session_->is_modified();
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
   if (ImGui::Button("Quit without saving")) {
     should_close_ = true;
     ImGui::CloseCurrentPopup();

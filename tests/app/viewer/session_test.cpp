@@ -34,7 +34,8 @@ TEST_CASE("a bad edit of the open file keeps the last good geometry and the edit
   CHECK(session.scene_soup().num_faces() == 3);
 
   // A good edit comes in and the added face follows it by name.
-  std::ofstream(file) << squares << "f 1 2 3 4\nf 5 6 7 8\n" << "v 9 9 9\n";
+  std::ofstream(file) << squares << "f 1 2 3 4\nf 5 6 7 8\n"
+                      << "v 9 9 9\n";
   session.reload();
   CHECK(session.version() > version);
   CHECK(session.scene_soup().num_faces() == 3);

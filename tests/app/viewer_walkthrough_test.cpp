@@ -1,0 +1,146 @@
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <limits>
+
+#include "app/viewer_support.hpp"
+#include "nome/edit/glue_faces.hpp"
+#include "nome/io/read_polygons.hpp"
+#include "nome/io/read_scene.hpp"
+#include "nome/mesh/topology_report.hpp"
+#include "nome/query/border_lookup.hpp"
+
+using namespace nome;
+using nome::test::run_viewer;
+
+// The report's walkthroughs (sections 8.1 and 8.2) as scripted sessions: the same clicks a person makes.
+namespace {
+
+const std::string examples = std::string(NOME_SOURCE_DIR) + "/assets/";
+
+std::string click_line(glm::dvec2 p) {
+  return "click " + std::to_string(int(p.x)) + " " + std::to_string(int(p.y)) + "\n";
+}
+
+// What the scene stage shows of a scene file (before any edit).
+Mesh scene_mesh(const std::string& file) {
+  return glue_faces(read_scene(file).combined_soup()).mesh;
+}
+
+std::string instance_of(const std::string& vertex) {
+  return vertex.substr(0, vertex.rfind('_'));
+}
+
+}  // namespace
+
+TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated polygon that is saved", "[app]") {
+  const std::string dir = nome::test::scratch_dir("walkthrough_funnel_cube");
+  const std::string file = examples + "funnel_cube.nome";
+  const Mesh mesh = scene_mesh(file);
+  const auto projection = nome::test::viewer_projection(mesh, 30.0, 25.0);
+  // Clickable rim vertices (the funnels' high circles), and the closest triple from three funnels.
+  std::vector<std::pair<Index, glm::dvec2>> rim;
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    if (mesh.vertex_names()[v].find("_hc") != std::string::npos)
+      if (const auto p = nome::test::click_position(mesh, projection, v)) rim.emplace_back(v, *p);
+  REQUIRE(rim.size() >= 3);
+  double best = std::numeric_limits<double>::infinity();
+  std::array<std::size_t, 3> triple{};
+  auto distance = [&](std::size_t i, std::size_t j) {
+    return glm::length(mesh.position(rim[i].first) - mesh.position(rim[j].first));
+  };
+  for (std::size_t i = 0; i < rim.size(); ++i)
+    for (std::size_t j = i + 1; j < rim.size(); ++j)
+      for (std::size_t k = j + 1; k < rim.size(); ++k) {
+        const auto a = instance_of(mesh.vertex_names()[rim[i].first]),
+                   b = instance_of(mesh.vertex_names()[rim[j].first]),
+                   c = instance_of(mesh.vertex_names()[rim[k].first]);
+        if (a == b || b == c || a == c) continue;
+        const double perimeter = distance(i, j) + distance(j, k) + distance(k, i);
+        if (perimeter < best) {
+          best = perimeter;
+          triple = {i, j, k};
+        }
+      }
+  REQUIRE(best < std::numeric_limits<double>::infinity());
+  std::string clicks;
+  for (std::size_t i : triple) clicks += click_line(rim[i].second);
+  const std::string script_path = dir + "/script.txt";
+  std::ofstream(script_path) << "view 30 25\nmode vertex\n" << clicks << "action add-polygon\naction accept\n"
+                             << "screenshot " << dir << "/funnel_cube.png\nsave " << dir << "/saved.nome\nquit\n";
+  const auto r = run_viewer(file + " --script " + script_path);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("add-polygon: "));
+  CHECK_THAT(r.err, Catch::Contains("accept: "));
+  const scene::Scene saved = read_scene(dir + "/saved.nome");
+  REQUIRE(saved.consolidated_faces().size() == 1);
+  const auto& face = saved.consolidated_faces()[0];
+  REQUIRE(face.size() == 3);
+  std::vector<std::string> clicked;
+  for (std::size_t i : triple) clicked.push_back(mesh.vertex_names()[rim[i].first]);
+  for (const std::string& name : face) {
+    INFO(name);
+    CHECK(std::find(clicked.begin(), clicked.end(), saved.resolve_vertex_name(name)) != clicked.end());
+  }
+}
+
+TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, undone and redone", "[app]") {
+  const std::string dir = nome::test::scratch_dir("walkthrough_klein_bottle");
+  const std::string file = examples + "klein_bottle.nome";
+  const Mesh mesh = scene_mesh(file);
+  const auto projection = nome::test::viewer_projection(mesh, 30.0, 25.0);
+  // Each border loop's first clickable vertex, and the two loops (of different tunnels) whose centres
+  // are nearest: the rims the report zips first.
+  struct Rim {
+    Index loop;
+    Vec3 centre;
+    glm::dvec2 click;
+    std::string instance;
+  };
+  std::vector<Rim> rims;
+  for (Index l = 0; l < mesh.num_boundary_loops(); ++l) {
+    Vec3 centre(0.0);
+    for (Index v : mesh.loop_vertices(l)) centre += mesh.position(v) / double(mesh.loop_vertices(l).size());
+    for (Index v : mesh.loop_vertices(l))
+      if (const auto p = nome::test::click_position(mesh, projection, v)) {
+        rims.push_back({l, centre, *p, instance_of(mesh.vertex_names()[v])});
+        break;
+      }
+  }
+  double best = std::numeric_limits<double>::infinity();
+  std::pair<std::size_t, std::size_t> pair{};
+  for (std::size_t i = 0; i < rims.size(); ++i)
+    for (std::size_t j = i + 1; j < rims.size(); ++j)
+      if (rims[i].instance != rims[j].instance && glm::length(rims[i].centre - rims[j].centre) < best) {
+        best = glm::length(rims[i].centre - rims[j].centre);
+        pair = {i, j};
+      }
+  REQUIRE(best < std::numeric_limits<double>::infinity());
+  const std::string script_path = dir + "/script.txt";
+  std::ofstream(script_path) << "view 30 25\nmode border\n"
+                             << click_line(rims[pair.first].click) << click_line(rims[pair.second].click)
+                             << "action zip\naction merge\nexport " << dir << "/zipped.obj\nscreenshot " << dir
+                             << "/klein_bottle.png\naction undo\nexport " << dir << "/undone.obj\nquit\n";
+  const auto r = run_viewer(file + " --script " + script_path);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("zip: "));
+  // Merged, the strip closes both rims: two borders fewer than without it.
+  const Index zipped = topology_report(build_mesh(read_polygons(dir + "/zipped.obj"))).borders;
+  const Index undone = topology_report(build_mesh(read_polygons(dir + "/undone.obj"))).borders;
+  CHECK(zipped + 2 == undone);
+}
+
+TEST_CASE("a script moves sliders by name and an unknown slider fails the session", "[app]") {
+  const std::string dir = nome::test::scratch_dir("viewer_sliders");
+  const std::string script_path = dir + "/script.txt";
+  std::ofstream(script_path) << "set fp_n 6\nexport " << dir << "/six.obj\nset fp_n 8\nexport " << dir
+                             << "/eight.obj\nset fp_m 3\nquit\n";
+  const auto r = run_viewer(examples + "funnel_cube.nome --script " + script_path);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("no slider 'fp_m'"));
+  const Index six = build_mesh(read_polygons(dir + "/six.obj")).num_faces();
+  const Index eight = build_mesh(read_polygons(dir + "/eight.obj")).num_faces();
+  CHECK(six * 8 == eight * 6);
+}
