@@ -33,7 +33,8 @@ std::string instance_of(const std::string& vertex) {
 
 }  // namespace
 
-TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated polygon that is saved", "[app]") {
+TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated polygon that is saved",
+          "[app]") {
   const std::string dir = nome::test::scratch_dir("walkthrough_funnel_cube");
   const std::string file = examples + "funnel_cube.nome";
   const Mesh mesh = scene_mesh(file);
@@ -66,8 +67,10 @@ TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated pol
   std::string clicks;
   for (std::size_t i : triple) clicks += click_line(rim[i].second);
   const std::string script_path = dir + "/script.txt";
-  std::ofstream(script_path) << "view 30 25\nmode vertex\n" << clicks << "action add-polygon\naction accept\n"
-                             << "screenshot " << dir << "/funnel_cube.png\nsave " << dir << "/saved.nome\nquit\n";
+  std::ofstream(script_path) << "view 30 25\nmode vertex\n"
+                             << clicks << "action add-polygon\naction accept\n"
+                             << "screenshot " << dir << "/funnel_cube.png\nsave " << dir
+                             << "/saved.nome\nquit\n";
   const auto r = run_viewer(file + " --script " + script_path);
   INFO(r.err);
   REQUIRE(r.status == 0);
@@ -120,8 +123,9 @@ TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, un
   const std::string script_path = dir + "/script.txt";
   std::ofstream(script_path) << "view 30 25\nmode border\n"
                              << click_line(rims[pair.first].click) << click_line(rims[pair.second].click)
-                             << "action zip\naction merge\nexport " << dir << "/zipped.obj\nscreenshot " << dir
-                             << "/klein_bottle.png\naction undo\nexport " << dir << "/undone.obj\nquit\n";
+                             << "action zip\naction merge\nexport " << dir << "/zipped.obj\nscreenshot "
+                             << dir << "/klein_bottle.png\naction undo\nexport " << dir
+                             << "/undone.obj\nquit\n";
   const auto r = run_viewer(file + " --script " + script_path);
   INFO(r.err);
   REQUIRE(r.status == 0);
