@@ -52,8 +52,9 @@ int main() {
       total.push_back(ms_since(start));
       if (!result || result->mesh->num_faces() == 0) return 1;
     }
-    std::printf("  %-5s (%s): median %7.2f ms  (scene %5.2f ms, stages + buffers + BVH %6.2f ms; target < 16 ms)\n",
-                slider.name, slider.what, median(total), median(scene), median(stages));
+    std::printf(
+        "  %-5s (%s): median %7.2f ms  (scene %5.2f ms, stages + buffers + BVH %6.2f ms; target < 16 ms)\n",
+        slider.name, slider.what, median(total), median(scene), median(stages));
   }
   return 0;
 }
