@@ -20,6 +20,10 @@ std::string scratch_dir(const std::string& name) {
   return dir.string();
 }
 
+std::string private_scratch_dir(const std::string& name) {
+  return scratch_dir(name + "_" + std::to_string(::getpid()));
+}
+
 CommandResult run_nome(const std::string& arguments) {
   return run_nome_prefixed("", arguments);
 }

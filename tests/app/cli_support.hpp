@@ -17,5 +17,7 @@ CommandResult run_nome_prefixed(const std::string& prefix, const std::string& ar
 
 // A fresh scratch folder for one test's files.
 std::string scratch_dir(const std::string& name);
+// The same, private to this process: several checkouts' test runs on one machine share /tmp.
+std::string private_scratch_dir(const std::string& name);
 
 }  // namespace nome::test

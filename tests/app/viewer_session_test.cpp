@@ -54,7 +54,7 @@ TEST_CASE("without a display the viewer says so and points to nome render", "[ap
 }
 
 TEST_CASE("a scripted session picks a vertex and a face, exports and takes a screenshot", "[app]") {
-  const std::string dir = nome::test::scratch_dir("viewer_cube");
+  const std::string dir = nome::test::private_scratch_dir("viewer_cube");
   const Mesh mesh = build_mesh(read_polygons(assets + "cube.obj"));
   const auto projection = nome::test::viewer_projection(mesh, 30.0, 25.0);
   std::optional<glm::dvec2> vertex_click;
@@ -89,7 +89,7 @@ TEST_CASE("a scripted session picks a vertex and a face, exports and takes a scr
 }
 
 TEST_CASE("the Möbius band shows its back faces in their own colour", "[app]") {
-  const std::string dir = nome::test::scratch_dir("viewer_mobius");
+  const std::string dir = nome::test::private_scratch_dir("viewer_mobius");
   const std::string script = write_script(dir, "view 20 35\nscreenshot " + dir + "/mobius.png\nquit\n");
   const auto r = run_viewer(assets + "mobius_band.obj --script " + script);
   INFO(r.err);
@@ -107,7 +107,7 @@ TEST_CASE("the Möbius band shows its back faces in their own colour", "[app]") 
 }
 
 TEST_CASE("a bad script is refused before the window does anything", "[app]") {
-  const std::string dir = nome::test::scratch_dir("viewer_bad_script");
+  const std::string dir = nome::test::private_scratch_dir("viewer_bad_script");
   const std::string script = write_script(dir, "click 10\n");
   const auto r = run_viewer(assets + "cube.obj --script " + script);
   CHECK(r.status == 1);
@@ -115,7 +115,7 @@ TEST_CASE("a bad script is refused before the window does anything", "[app]") {
 }
 
 TEST_CASE("border modes select a whole loop from one click and a segment from three", "[app]") {
-  const std::string dir = nome::test::scratch_dir("viewer_border");
+  const std::string dir = nome::test::private_scratch_dir("viewer_border");
   const Mesh mesh = build_mesh(read_polygons(assets + "mobius_band.obj"));
   const auto projection = nome::test::viewer_projection(mesh, 20.0, 35.0);
   const BorderLookup borders(mesh);
@@ -144,7 +144,7 @@ TEST_CASE("border modes select a whole loop from one click and a segment from th
 }
 
 TEST_CASE("the merge action shows the merged stage, which export writes", "[app]") {
-  const std::string dir = nome::test::scratch_dir("viewer_merge");
+  const std::string dir = nome::test::private_scratch_dir("viewer_merge");
   // Two unit squares side by side, each with its own copy of the shared edge.
   std::ofstream(dir + "/pieces.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
                                         "v 1 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\n"
@@ -162,7 +162,7 @@ TEST_CASE("the merge action shows the merged stage, which export writes", "[app]
 }
 
 TEST_CASE("a session deletes a face, undoes and redoes it, then fills the hole and accepts", "[app]") {
-  const std::string dir = nome::test::scratch_dir("viewer_edit");
+  const std::string dir = nome::test::private_scratch_dir("viewer_edit");
   const Mesh cube = build_mesh(read_polygons(assets + "cube.obj"));
   const auto projection = nome::test::viewer_projection(cube, 30.0, 25.0);
   const TriangleBvh bvh(cube);

@@ -35,7 +35,7 @@ std::string instance_of(const std::string& vertex) {
 
 TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated polygon that is saved",
           "[app]") {
-  const std::string dir = nome::test::scratch_dir("walkthrough_funnel_cube");
+  const std::string dir = nome::test::private_scratch_dir("walkthrough_funnel_cube");
   const std::string file = examples + "funnel_cube.nome";
   const Mesh mesh = scene_mesh(file);
   const auto projection = nome::test::viewer_projection(mesh, 30.0, 25.0);
@@ -89,7 +89,7 @@ TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated pol
 }
 
 TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, undone and redone", "[app]") {
-  const std::string dir = nome::test::scratch_dir("walkthrough_klein_bottle");
+  const std::string dir = nome::test::private_scratch_dir("walkthrough_klein_bottle");
   const std::string file = examples + "klein_bottle.nome";
   const Mesh mesh = scene_mesh(file);
   const auto projection = nome::test::viewer_projection(mesh, 30.0, 25.0);
@@ -137,7 +137,7 @@ TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, un
 }
 
 TEST_CASE("a script moves sliders by name and an unknown slider fails the session", "[app]") {
-  const std::string dir = nome::test::scratch_dir("viewer_sliders");
+  const std::string dir = nome::test::private_scratch_dir("viewer_sliders");
   const std::string script_path = dir + "/script.txt";
   std::ofstream(script_path) << "set fp_n 6\nexport " << dir << "/six.obj\nset fp_n 8\nexport " << dir
                              << "/eight.obj\nset fp_m 3\nquit\n";

@@ -11,7 +11,7 @@ using namespace nome;
 using nome::viewer::Session;
 
 TEST_CASE("a bad edit of the open file keeps the last good geometry and the edits", "[app]") {
-  const std::string dir = nome::test::scratch_dir("session_reload");
+  const std::string dir = nome::test::private_scratch_dir("session_reload");
   const std::string file = dir + "/square.obj";
   const std::string squares = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nv 3 1 0\nv 2 1 0\n";
   std::ofstream(file) << squares << "f 1 2 3 4\nf 5 6 7 8\n";
