@@ -247,45 +247,55 @@ Mesh build_mesh(PolygonSoup soup) {
     m.edges_[found].is_sharp = true;
   }
 
-  // phase: boundary loops. From a border edge, step to the other border edge at its far vertex
-  // (the last edge of that vertex's fan if we came in by the first, and vice versa).
-  {
-    std::vector<char> used(m.edges_.size(), 0);
-    for (Index e0 = 0; e0 < m.edges_.size(); ++e0) {
-      if (!m.edges_[e0].is_boundary() || used[e0]) continue;
-      Index e = e0, v = m.edges_[e0].vertices[0];
-      do {
-        used[e] = 1;
-        m.loop_edges_.push_back(e);
-        m.loop_vertices_.push_back(v);
-        v = m.edges_[e].other_vertex(v);
-        const auto fan = m.vertex_edges(v);
-        e = fan.front() == e ? fan.back() : fan.front();
-      } while (e != e0);
-      m.loop_offsets_.push_back(static_cast<Index>(m.loop_edges_.size()));
-    }
-  }
+  m.find_boundary_loops();
+  m.find_components();
+  return m;
+}
 
-  // phase: components, by a breadth-first walk over faces across edges.
-  m.face_components_.assign(nf, no_index);
+void Mesh::find_boundary_loops() {
+  // From a border edge, step to the other border edge at its far vertex (the last edge of that
+  // vertex's fan if we came in by the first, and vice versa).
+  loop_offsets_.assign(1, 0);
+  loop_edges_.clear();
+  loop_vertices_.clear();
+  std::vector<char> used(edges_.size(), 0);
+  for (Index e0 = 0; e0 < edges_.size(); ++e0) {
+    if (!edges_[e0].is_boundary() || used[e0]) continue;
+    Index e = e0, v = edges_[e0].vertices[0];
+    do {
+      used[e] = 1;
+      loop_edges_.push_back(e);
+      loop_vertices_.push_back(v);
+      v = edges_[e].other_vertex(v);
+      const auto fan = vertex_edges(v);
+      e = fan.front() == e ? fan.back() : fan.front();
+    } while (e != e0);
+    loop_offsets_.push_back(static_cast<Index>(loop_edges_.size()));
+  }
+}
+
+void Mesh::find_components() {
+  // A breadth-first walk over faces across edges.
+  const Index nf = num_faces();
+  face_components_.assign(nf, no_index);
+  num_components_ = 0;
   std::vector<Index> queue;
   queue.reserve(nf);
   for (Index f0 = 0; f0 < nf; ++f0) {
-    if (m.face_components_[f0] != no_index) continue;
-    const Index comp = m.num_components_++;
-    m.face_components_[f0] = comp;
+    if (face_components_[f0] != no_index) continue;
+    const Index comp = num_components_++;
+    face_components_[f0] = comp;
     queue.assign(1, f0);
     for (size_t q = 0; q < queue.size(); ++q) {
-      for (Index e : m.face_edges(queue[q])) {
-        const Index g = m.edges_[e].other_face(queue[q]);
-        if (g != no_index && m.face_components_[g] == no_index) {
-          m.face_components_[g] = comp;
+      for (Index e : face_edges(queue[q])) {
+        const Index g = edges_[e].other_face(queue[q]);
+        if (g != no_index && face_components_[g] == no_index) {
+          face_components_[g] = comp;
           queue.push_back(g);
         }
       }
     }
   }
-  return m;
 }
 
 Index Mesh::vertex_component(Index v) const {

@@ -28,6 +28,8 @@ struct Edge {
   Index other_face(Index f) const { return faces[0] == f ? faces[1] : faces[0]; }
 };
 
+struct MeshArrays;
+
 // A 2-manifold polygon mesh, possibly with borders, possibly non-orientable, as index arrays.
 //
 // Faces keep the orientation they were given (the corner order). A corner is one (face, vertex)
@@ -38,7 +40,8 @@ struct Edge {
 // first face of its vertex's fan, flipped at every Möbius edge crossed (well defined: a disk fan
 // crosses an even number of Möbius edges).
 //
-// Build with build_mesh(); the topology is immutable afterwards, positions and sharp flags may change.
+// Build with build_mesh() (from polygons) or assemble_mesh() (from arrays whose adjacency is already
+// known); the topology is immutable afterwards, positions and sharp flags may change.
 class Mesh {
  public:
   Index num_vertices() const { return static_cast<Index>(positions_.size()); }
@@ -122,6 +125,11 @@ class Mesh {
 
  private:
   friend Mesh build_mesh(PolygonSoup soup);
+  friend Mesh assemble_mesh(MeshArrays arrays);
+
+  // Derived arrays shared by both builders: boundary loops from the fans, components by a walk over faces.
+  void find_boundary_loops();
+  void find_components();
 
   std::span<const Index> corner_span(const std::vector<Index>& a, Index f) const {
     return {a.data() + face_offsets_[f], face_offsets_[f + 1] - face_offsets_[f]};
@@ -147,6 +155,32 @@ class Mesh {
   std::vector<std::string> face_names_;
   std::vector<Color> face_colors_;
 };
+
+// The arrays of a mesh whose adjacency is already known (a subdivision level, an offset solid), laid out
+// as Mesh documents them. Corner faces and boundary loops are derived; components too unless given.
+struct MeshArrays {
+  std::vector<Vec3> positions;
+  std::vector<Index> face_offsets{0};
+  std::vector<Index> corner_vertices;
+  std::vector<Index> corner_edges;
+  std::vector<signed char> corner_signs;
+  std::vector<Edge> edges;
+  std::vector<Index> fan_corner_offsets{0};
+  std::vector<Index> fan_corners;
+  std::vector<Index> fan_edge_offsets{0};
+  std::vector<Index> fan_edges;
+  std::vector<Index> face_components;  // empty: found by a walk over faces
+  Index num_components = 0;
+  std::vector<Color> face_colors;  // empty, or one per face
+};
+
+// Assembles a mesh from arrays in O(corners), without build_mesh's search and checks: the caller
+// guarantees the invariants (tests check them with validate()).
+Mesh assemble_mesh(MeshArrays arrays);
+
+// Every broken invariant of the mesh, described (empty for a valid mesh): array sizes, edge records
+// against corners, Möbius flags against directions, fans in order with their signs, loops, components.
+std::vector<std::string> validate(const Mesh& mesh);
 
 // Builds the mesh in O(corners). Throws TopologyError naming the elements when the polygons are not a
 // 2-manifold: a face with fewer than 3 vertices, a vertex repeated in a face, an index out of range, a

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "nome/mesh/mesh.hpp"
+
+namespace nome {
+
+// The smooth-vertex rule of Catmull-Clark (report 004 section 4.1.3; see spec/README.md on names).
+enum class SubdivisionRule {
+  classic,  // ((n-3) v + 2 avg(edge midpoints) + avg(face points)) / n: Catmull-Clark, OpenSubdiv, OpenMesh
+  report,   // ((n-2) v + avg(new edge points) + avg(face points)) / n: the 2016 report's stiffer rule
+};
+
+struct SubdivisionOptions {
+  int levels = 1;
+  SubdivisionRule rule = SubdivisionRule::classic;
+};
+
+// Catmull-Clark subdivision (report 004 section 4), `levels` times, on any mesh the kernel accepts:
+// polygons of any degree, borders, Möbius edges, several components. Border and sharp edges keep their
+// midpoints; a vertex with >= 3 sharp edges stays put, with 2 it follows the crease (6v + a + b) / 8.
+// Each n-gon becomes n quads with its orientation; children of Möbius and sharp edges keep the flag.
+// Positions never depend on face orientation or numbering.
+Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options);
+
+// The refined topology of one base topology, built once (the topology pass), and the position pass
+// that can run again whenever the base positions change without changing the topology: the
+// interactive fast path. Children are numbered arithmetically, as in OpenSubdiv's Vtr: the child
+// vertices of a level are its parent's face points, then edge points, then vertex points; the child
+// faces of parent corner c are face c (so a face's children are consecutive), the two children of
+// parent edge e are edges 2e and 2e+1. The last level keeps only its quads' corners unless mesh() is
+// asked for, which builds its edges and fans the same way.
+class Refinement {
+ public:
+  // The topology pass. Throws InvalidInputError unless levels >= 1.
+  Refinement(const Mesh& base, int levels);
+  Refinement(Refinement&&) noexcept;
+  Refinement& operator=(Refinement&&) noexcept;
+  ~Refinement();
+
+  int levels() const;
+  // True when `base` has the counts and sharp flags of the mesh this refinement was built from.
+  bool fits(const Mesh& base) const;
+
+  // The last level: every face is a quad, quad f has corners quad_vertices()[4f .. 4f+3].
+  Index num_vertices() const;
+  Index num_faces() const;
+  std::span<const Index> quad_vertices() const;
+
+  // The position pass: gathers every level from the one before into reused buffers and writes the
+  // last level into `out` (num_vertices() entries). `base` must fit. Uses up to `threads` threads.
+  void refine_positions(const Mesh& base, SubdivisionRule rule, std::span<Vec3> out, int threads = 1);
+
+  // The last level as a full Mesh with the given positions (from refine_positions), built from the
+  // level before it without any search; faces keep the colours and components of their ancestors.
+  Mesh mesh(const Mesh& base, std::vector<Vec3> positions) const;
+
+  struct Level;
+
+ private:
+  std::vector<Level> levels_;                     // levels 1..k; the last one holds only its corners
+  std::vector<std::vector<Vec3>> level_positions_;  // levels 1..k-1 (reused by every position pass)
+  Index base_vertices_ = 0, base_faces_ = 0, base_corners_ = 0, base_edges_ = 0;
+  std::vector<Index> base_sharp_edges_;
+};
+
+}  // namespace nome

@@ -1,0 +1,74 @@
+#include "ops/parallel_for.hpp"
+#include "ops/refinement_level.hpp"
+
+namespace nome {
+
+// Report 004 section 4.1, written as gathers so that each child position is computed once, by one
+// thread, from its parent's neighbourhood: face points, then edge points (which read face points),
+// then vertex points (which read both).
+template <class Parent>
+void refine_positions(const Parent& p, std::span<const Vec3> in, SubdivisionRule rule, std::span<Vec3> out,
+                      int threads) {
+  const Index nf = p.num_faces(), ne = p.num_edges();
+  parallel_for(nf, threads, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f) {
+      const Index b = p.face_begin(f), n = p.face_end(f) - b;
+      Vec3 sum = in[p.corner_vertex(b)];
+      for (Index i = 1; i < n; ++i) sum += in[p.corner_vertex(b + i)];
+      out[f] = sum * (1.0 / n);
+    }
+  });
+  parallel_for(ne, threads, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e) {
+      const auto& ends = p.edge_ends(e);
+      const Vec3 sum = in[ends[0]] + in[ends[1]];
+      if (p.is_boundary(e) || p.is_sharp(e)) {
+        out[nf + e] = sum * 0.5;
+      } else {
+        const Index fa = p.corner_face(p.edge_corner(e, 0)), fb = p.corner_face(p.edge_corner(e, 1));
+        out[nf + e] = (sum + out[fa] + out[fb]) * 0.25;
+      }
+    }
+  });
+  parallel_for(p.num_vertices(), threads, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v) {
+      const Vec3& here = in[v];
+      Vec3& result = out[nf + ne + v];
+      const auto edges = p.vertex_edges(v);
+      Index sharp_count = 0;
+      Vec3 sharp_sum(0.0);
+      for (Index e : edges) {
+        if (!p.is_boundary(e) && !p.is_sharp(e)) continue;
+        ++sharp_count;
+        const auto& ends = p.edge_ends(e);
+        sharp_sum += in[ends[0] == v ? ends[1] : ends[0]];
+      }
+      if (sharp_count >= 3 || edges.empty()) {  // corner (or isolated vertex)
+        result = here;
+      } else if (sharp_count == 2) {  // crease: (6v + a + b) / 8
+        result = (6.0 * here + sharp_sum) * 0.125;
+      } else {
+        Vec3 face_sum(0.0), edge_sum(0.0);
+        for (Index c : p.vertex_corners(v)) face_sum += out[p.corner_face(c)];
+        if (rule == SubdivisionRule::classic) {
+          for (Index e : edges) {
+            const auto& ends = p.edge_ends(e);
+            edge_sum += in[ends[0] == v ? ends[1] : ends[0]];
+          }
+        } else {
+          for (Index e : edges) edge_sum += out[nf + e];
+        }
+        // classic: ((n-3) v + 2 avg(midpoints) + avg(faces)) / n = ((n-2) v + avg(neighbours) + avg(faces)) / n
+        const double n = double(edges.size());
+        result = ((n - 2.0) * here + (edge_sum + face_sum) / n) / n;
+      }
+    }
+  });
+}
+
+template void refine_positions(const MeshLevelView&, std::span<const Vec3>, SubdivisionRule, std::span<Vec3>,
+                               int);
+template void refine_positions(const Refinement::Level&, std::span<const Vec3>, SubdivisionRule,
+                               std::span<Vec3>, int);
+
+}  // namespace nome

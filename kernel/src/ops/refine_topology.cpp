@@ -1,0 +1,186 @@
+#include "ops/parallel_for.hpp"
+#include "ops/refinement_level.hpp"
+
+namespace nome {
+namespace {
+
+using Level = Refinement::Level;
+
+// The child of parent edge `e` on the side of its end vertex `v`.
+template <class Parent>
+Index half_edge_child(const Parent& p, Index e, Index v) {
+  return 2 * e + (p.edge_ends(e)[0] == v ? 0 : 1);
+}
+
+// Each parent corner c becomes child quad c: (vertex point, edge point of the edge leaving c, face
+// point, edge point of the edge arriving at c), which keeps the parent face's orientation.
+template <class Parent>
+void child_corners(const Parent& p, Level& child, bool full, int threads) {
+  const Index nf = p.num_faces(), ne = p.num_edges();
+  parallel_for(p.num_corners(), threads, [&](Index begin, Index end) {
+    for (Index c = begin; c < end; ++c) {
+      const Index v = p.corner_vertex(c), pc = p.prev_corner(c);
+      const Index out = p.corner_edge(c), in = p.corner_edge(pc);
+      Index* q = child.corner_vertices.data() + 4 * size_t(c);
+      q[0] = nf + ne + v;
+      q[1] = nf + out;
+      q[2] = p.corner_face(c);
+      q[3] = nf + in;
+      if (!full) continue;
+      Index* qe = child.corner_edges.data() + 4 * size_t(c);
+      qe[0] = half_edge_child(p, out, v);
+      qe[1] = 2 * ne + c;
+      qe[2] = 2 * ne + pc;
+      qe[3] = half_edge_child(p, in, v);
+      child.corner_signs[4 * size_t(c)] = static_cast<signed char>(p.corner_sign(c));
+      child.corner_signs[4 * size_t(c) + 2] = 1;
+    }
+  });
+}
+
+// Parent edge e gives edges 2e (from its first end to the edge point) and 2e+1 (on to its second
+// end), keeping its flags; parent corner c gives the face-interior edge 2E+c from the edge point of
+// its leaving edge to the face point, never Möbius, never sharp.
+template <class Parent>
+void child_edges(const Parent& p, Level& child, int threads) {
+  const Index nf = p.num_faces(), ne = p.num_edges();
+  parallel_for(ne, threads, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e) {
+      const auto [v0, v1] = p.edge_ends(e);
+      const Index ca = p.edge_corner(e, 0), cb = p.edge_corner(e, 1), na = p.next_corner(ca);
+      const std::uint8_t flags = (p.is_mobius(e) ? mobius_flag : 0) | (p.is_sharp(e) ? sharp_flag : 0);
+      child.edge_vertices[2 * e] = {nf + ne + v0, nf + e};
+      child.edge_vertices[2 * e + 1] = {nf + e, nf + ne + v1};
+      child.edge_flags[2 * e] = child.edge_flags[2 * e + 1] = flags;
+      if (cb == no_index) {
+        child.edge_corners[2 * e] = {4 * ca, no_index};
+        child.edge_corners[2 * e + 1] = {4 * na + 3, no_index};
+      } else if (flags & mobius_flag) {  // face b also starts at v0
+        child.edge_corners[2 * e] = {4 * ca, 4 * cb};
+        child.edge_corners[2 * e + 1] = {4 * na + 3, 4 * p.next_corner(cb) + 3};
+      } else {  // face b starts at v1
+        child.edge_corners[2 * e] = {4 * ca, 4 * p.next_corner(cb) + 3};
+        child.edge_corners[2 * e + 1] = {4 * na + 3, 4 * cb};
+      }
+    }
+  });
+  parallel_for(p.num_corners(), threads, [&](Index begin, Index end) {
+    for (Index c = begin; c < end; ++c) {
+      child.edge_vertices[2 * ne + c] = {nf + p.corner_edge(c), p.corner_face(c)};
+      child.edge_corners[2 * ne + c] = {4 * c + 1, 4 * p.next_corner(c) + 2};
+      child.edge_flags[2 * ne + c] = 0;
+    }
+  });
+}
+
+// Fan sizes of the child vertices as CSR offsets: a face point has the face's degree, an edge point
+// 4 corners and 4 edges (2 and 3 on a border), a vertex point its parent's fan.
+template <class Parent>
+void child_fan_offsets(const Parent& p, Level& child) {
+  const Index nf = p.num_faces(), ne = p.num_edges(), nv = p.num_vertices();
+  auto& co = child.fan_corner_offsets;
+  auto& eo = child.fan_edge_offsets;
+  co.resize(size_t(nf) + ne + nv + 1);
+  eo.resize(co.size());
+  co[0] = eo[0] = 0;
+  for (Index f = 0; f < nf; ++f) co[f + 1] = eo[f + 1] = p.face_end(f);
+  Index c = co[nf], e = eo[nf];
+  for (Index i = 0; i < ne; ++i) {
+    const bool border = p.is_boundary(i);
+    co[nf + i + 1] = c += border ? 2 : 4;
+    eo[nf + i + 1] = e += border ? 3 : 4;
+  }
+  for (Index v = 0; v < nv; ++v) {
+    co[nf + ne + v + 1] = c += Index(p.vertex_corners(v).size());
+    eo[nf + ne + v + 1] = e += Index(p.vertex_edges(v).size());
+  }
+}
+
+// The fans themselves, in order, with the corner signs of the edge points' corners (see Mesh).
+template <class Parent>
+void child_fans(const Parent& p, Level& child, int threads) {
+  const Index nf = p.num_faces(), ne = p.num_edges();
+  child_fan_offsets(p, child);
+  child.fan_corners.resize(child.fan_corner_offsets.back());
+  child.fan_edges.resize(child.fan_edge_offsets.back());
+  Index* fc = child.fan_corners.data();
+  Index* fe = child.fan_edges.data();
+  const Index* co = child.fan_corner_offsets.data();
+  const Index* eo = child.fan_edge_offsets.data();
+  signed char* sign = child.corner_signs.data();
+
+  // Face point: child quads of corners c0..c(n-1) in face order; edge i (2E + c(i-1)) lies between
+  // quads i-1 and i. No Möbius edges inside a face: every sign is +1.
+  parallel_for(nf, threads, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f) {
+      const Index b = p.face_begin(f), n = p.face_end(f) - b;
+      for (Index i = 0; i < n; ++i) {
+        fc[co[f] + i] = 4 * (b + i) + 2;
+        fe[eo[f] + i] = 2 * ne + b + (i == 0 ? n - 1 : i - 1);
+      }
+    }
+  });
+  // Edge point: half 2e, quad of face a at v0, interior edge of face a, quad of face a at v1, half 2e+1,
+  // then face b's two quads around its interior edge; across a Möbius half the sign flips.
+  parallel_for(ne, threads, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e) {
+      const Index ca = p.edge_corner(e, 0), cb = p.edge_corner(e, 1), na = p.next_corner(ca);
+      Index* corners = fc + co[nf + e];
+      Index* edges = fe + eo[nf + e];
+      corners[0] = 4 * ca + 1;
+      corners[1] = 4 * na + 3;
+      sign[corners[0]] = sign[corners[1]] = 1;
+      edges[0] = 2 * e;
+      edges[1] = 2 * ne + ca;
+      edges[2] = 2 * e + 1;
+      if (cb == no_index) continue;
+      const Index nb = p.next_corner(cb);
+      const bool mobius = p.is_mobius(e);
+      corners[2] = mobius ? 4 * nb + 3 : 4 * cb + 1;
+      corners[3] = mobius ? 4 * cb + 1 : 4 * nb + 3;
+      sign[corners[2]] = sign[corners[3]] = mobius ? -1 : 1;
+      edges[3] = 2 * ne + cb;
+    }
+  });
+  // Vertex point: the parent's fan, corner by corner and edge by edge.
+  parallel_for(p.num_vertices(), threads, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v) {
+      const auto corners = p.vertex_corners(v);
+      const auto edges = p.vertex_edges(v);
+      Index* cs = fc + co[nf + ne + v];
+      Index* es = fe + eo[nf + ne + v];
+      for (size_t i = 0; i < corners.size(); ++i) cs[i] = 4 * corners[i];
+      for (size_t i = 0; i < edges.size(); ++i) es[i] = half_edge_child(p, edges[i], v);
+    }
+  });
+}
+
+}  // namespace
+
+template <class Parent>
+void refine_topology(const Parent& p, Level& child, bool full, int threads) {
+  const size_t nc = p.num_corners();
+  const size_t ne = 2 * size_t(p.num_edges()) + nc;
+  child.vertex_count = p.num_faces() + p.num_edges() + p.num_vertices();
+  child.corner_vertices.resize(4 * nc);
+  child.corner_edges.resize(full ? 4 * nc : 0);
+  child.corner_signs.resize(full ? 4 * nc : 0);
+  child_corners(p, child, full, threads);
+  if (!full) {
+    child.edge_vertices = {};
+    child.edge_corners = {};
+    child.edge_flags = {};
+    child.fan_corner_offsets = child.fan_corners = child.fan_edge_offsets = child.fan_edges = {};
+    return;
+  }
+  child.edge_vertices.resize(ne);
+  child.edge_corners.resize(ne);
+  child.edge_flags.resize(ne);
+  child_edges(p, child, threads);
+  child_fans(p, child, threads);
+}
+
+template void refine_topology(const MeshLevelView&, Level&, bool, int);
+template void refine_topology(const Level&, Level&, bool, int);
+
+}  // namespace nome

@@ -1,0 +1,92 @@
+#pragma once
+
+// Internal to subdivision: one refined level as flat arrays (every face a quad), a view giving a base
+// Mesh the same accessors, and the two passes written once for both.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "nome/mesh/mesh.hpp"
+#include "nome/ops/subdivide.hpp"
+
+namespace nome {
+
+inline constexpr std::uint8_t mobius_flag = 1;
+inline constexpr std::uint8_t sharp_flag = 2;
+
+struct Refinement::Level {
+  Index vertex_count = 0;
+  Index num_vertices() const { return vertex_count; }
+  std::vector<Index> corner_vertices;  // 4 per face
+  std::vector<Index> corner_edges;
+  std::vector<signed char> corner_signs;
+  std::vector<std::array<Index, 2>> edge_vertices;  // in the direction of the first face
+  std::vector<std::array<Index, 2>> edge_corners;   // [1] is no_index on a border edge
+  std::vector<std::uint8_t> edge_flags;
+  std::vector<Index> fan_corner_offsets, fan_corners, fan_edge_offsets, fan_edges;
+
+  Index num_faces() const { return Index(corner_vertices.size() / 4); }
+  Index num_corners() const { return Index(corner_vertices.size()); }
+  Index num_edges() const { return Index(edge_vertices.size()); }
+  Index face_begin(Index f) const { return 4 * f; }
+  Index face_end(Index f) const { return 4 * f + 4; }
+  Index corner_face(Index c) const { return c >> 2; }
+  Index next_corner(Index c) const { return (c & ~Index(3)) | ((c + 1) & 3); }
+  Index prev_corner(Index c) const { return (c & ~Index(3)) | ((c + 3) & 3); }
+  Index corner_vertex(Index c) const { return corner_vertices[c]; }
+  Index corner_edge(Index c) const { return corner_edges[c]; }
+  int corner_sign(Index c) const { return corner_signs[c]; }
+  const std::array<Index, 2>& edge_ends(Index e) const { return edge_vertices[e]; }
+  Index edge_corner(Index e, int side) const { return edge_corners[e][side]; }
+  bool is_mobius(Index e) const { return edge_flags[e] & mobius_flag; }
+  bool is_sharp(Index e) const { return edge_flags[e] & sharp_flag; }
+  bool is_boundary(Index e) const { return edge_corners[e][1] == no_index; }
+  std::span<const Index> vertex_corners(Index v) const {
+    return {fan_corners.data() + fan_corner_offsets[v], fan_corner_offsets[v + 1] - fan_corner_offsets[v]};
+  }
+  std::span<const Index> vertex_edges(Index v) const {
+    return {fan_edges.data() + fan_edge_offsets[v], fan_edge_offsets[v + 1] - fan_edge_offsets[v]};
+  }
+};
+
+// A base Mesh seen through the accessors of a Level.
+class MeshLevelView {
+ public:
+  explicit MeshLevelView(const Mesh& mesh) : m_(mesh) {}
+  Index num_vertices() const { return m_.num_vertices(); }
+  Index num_faces() const { return m_.num_faces(); }
+  Index num_corners() const { return m_.num_corners(); }
+  Index num_edges() const { return m_.num_edges(); }
+  Index face_begin(Index f) const { return m_.face_offsets()[f]; }
+  Index face_end(Index f) const { return m_.face_offsets()[f + 1]; }
+  Index corner_face(Index c) const { return m_.corner_face(c); }
+  Index next_corner(Index c) const { return m_.next_corner(c); }
+  Index prev_corner(Index c) const { return m_.prev_corner(c); }
+  Index corner_vertex(Index c) const { return m_.corner_vertex(c); }
+  Index corner_edge(Index c) const { return m_.corner_edge(c); }
+  int corner_sign(Index c) const { return m_.corner_sign(c); }
+  const std::array<Index, 2>& edge_ends(Index e) const { return m_.edge(e).vertices; }
+  Index edge_corner(Index e, int side) const { return m_.edge(e).corners[side]; }
+  bool is_mobius(Index e) const { return m_.edge(e).is_mobius; }
+  bool is_sharp(Index e) const { return m_.edge(e).is_sharp; }
+  bool is_boundary(Index e) const { return m_.edge(e).is_boundary(); }
+  std::span<const Index> vertex_corners(Index v) const { return m_.vertex_corners(v); }
+  std::span<const Index> vertex_edges(Index v) const { return m_.vertex_edges(v); }
+
+ private:
+  const Mesh& m_;
+};
+
+// The topology pass from `parent` (a Level or a MeshLevelView) into `child`. With `full` false only the
+// child's corner vertices are built (the last level of a refinement). Runs on `threads` threads.
+template <class Parent>
+void refine_topology(const Parent& parent, Refinement::Level& child, bool full, int threads);
+
+// The position pass: child positions (face points, edge points, vertex points) from parent positions.
+template <class Parent>
+void refine_positions(const Parent& parent, std::span<const Vec3> in, SubdivisionRule rule, std::span<Vec3> out,
+                      int threads);
+
+}  // namespace nome

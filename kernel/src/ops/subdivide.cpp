@@ -1,0 +1,133 @@
+#include "nome/ops/subdivide.hpp"
+
+#include <string>
+
+#include "nome/error.hpp"
+#include "ops/refinement_level.hpp"
+
+namespace nome {
+namespace {
+
+std::vector<Index> sharp_edges(const Mesh& mesh) {
+  std::vector<Index> sharp;
+  for (Index e = 0; e < mesh.num_edges(); ++e)
+    if (mesh.edge(e).is_sharp) sharp.push_back(e);
+  return sharp;
+}
+
+}  // namespace
+
+Refinement::Refinement(const Mesh& base, int levels)
+    : base_vertices_(base.num_vertices()),
+      base_faces_(base.num_faces()),
+      base_corners_(base.num_corners()),
+      base_edges_(base.num_edges()),
+      base_sharp_edges_(sharp_edges(base)) {
+  if (levels < 1) throw InvalidInputError("Refinement: levels must be at least 1, got " + std::to_string(levels));
+  levels_.resize(size_t(levels));
+  level_positions_.resize(size_t(levels) - 1);
+  for (int k = 0; k < levels; ++k) {
+    const bool full = k + 1 < levels;
+    if (k == 0)
+      refine_topology(MeshLevelView(base), levels_[0], full, 1);
+    else
+      refine_topology(levels_[k - 1], levels_[k], full, 1);
+  }
+}
+
+Refinement::Refinement(Refinement&&) noexcept = default;
+Refinement& Refinement::operator=(Refinement&&) noexcept = default;
+Refinement::~Refinement() = default;
+
+int Refinement::levels() const {
+  return static_cast<int>(levels_.size());
+}
+
+bool Refinement::fits(const Mesh& base) const {
+  return base.num_vertices() == base_vertices_ && base.num_faces() == base_faces_ &&
+         base.num_corners() == base_corners_ && base.num_edges() == base_edges_ &&
+         sharp_edges(base) == base_sharp_edges_;
+}
+
+Index Refinement::num_vertices() const {
+  return levels_.back().vertex_count;
+}
+Index Refinement::num_faces() const {
+  return levels_.back().num_faces();
+}
+std::span<const Index> Refinement::quad_vertices() const {
+  return levels_.back().corner_vertices;
+}
+
+void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::span<Vec3> out, int threads) {
+  if (!fits(base)) throw InvalidInputError("Refinement::refine_positions: the base mesh's topology changed");
+  if (out.size() != num_vertices())
+    throw InvalidInputError("Refinement::refine_positions: output holds " + std::to_string(out.size()) +
+                            " positions, the last level has " + std::to_string(num_vertices()));
+  std::span<const Vec3> in = base.positions();
+  for (size_t k = 0; k < levels_.size(); ++k) {
+    std::span<Vec3> target = out;
+    if (k + 1 < levels_.size()) {
+      level_positions_[k].resize(levels_[k].vertex_count);
+      target = level_positions_[k];
+    }
+    if (k == 0)
+      nome::refine_positions(MeshLevelView(base), in, rule, target, threads);
+    else
+      nome::refine_positions(levels_[k - 1], in, rule, target, threads);
+    in = target;
+  }
+}
+
+Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions) const {
+  if (!fits(base)) throw InvalidInputError("Refinement::mesh: the base mesh's topology changed");
+  if (positions.size() != num_vertices())
+    throw InvalidInputError("Refinement::mesh: expected " + std::to_string(num_vertices()) + " positions");
+  Level last;
+  if (levels_.size() == 1)
+    refine_topology(MeshLevelView(base), last, true, 1);
+  else
+    refine_topology(levels_[levels_.size() - 2], last, true, 1);
+
+  MeshArrays a;
+  const Index nf = last.num_faces();
+  a.positions = std::move(positions);
+  a.face_offsets.resize(size_t(nf) + 1);
+  for (Index f = 0; f <= nf; ++f) a.face_offsets[f] = 4 * f;
+  a.corner_vertices = std::move(last.corner_vertices);
+  a.corner_edges = std::move(last.corner_edges);
+  a.corner_signs = std::move(last.corner_signs);
+  a.edges.resize(last.num_edges());
+  for (Index e = 0; e < last.num_edges(); ++e) {
+    Edge& edge = a.edges[e];
+    edge.vertices = last.edge_vertices[e];
+    edge.corners = last.edge_corners[e];
+    edge.faces = {edge.corners[0] >> 2, edge.corners[1] == no_index ? no_index : edge.corners[1] >> 2};
+    edge.is_mobius = last.edge_flags[e] & mobius_flag;
+    edge.is_sharp = last.edge_flags[e] & sharp_flag;
+  }
+  a.fan_corner_offsets = std::move(last.fan_corner_offsets);
+  a.fan_corners = std::move(last.fan_corners);
+  a.fan_edge_offsets = std::move(last.fan_edge_offsets);
+  a.fan_edges = std::move(last.fan_edges);
+  // A level-k face's level-1 ancestor is face >> 2(k-1), which is a base corner.
+  const unsigned shift = 2 * unsigned(levels_.size() - 1);
+  a.face_components.resize(nf);
+  for (Index f = 0; f < nf; ++f) a.face_components[f] = base.face_component(base.corner_face(f >> shift));
+  a.num_components = base.num_components();
+  if (!base.face_colors().empty()) {
+    a.face_colors.resize(nf);
+    for (Index f = 0; f < nf; ++f) a.face_colors[f] = base.face_colors()[base.corner_face(f >> shift)];
+  }
+  return assemble_mesh(std::move(a));
+}
+
+Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options) {
+  if (options.levels == 0) return mesh;
+  Refinement refinement(mesh, options.levels);
+  std::vector<Vec3> positions(refinement.num_vertices());
+  refinement.refine_positions(mesh, options.rule, positions);
+  return refinement.mesh(mesh, std::move(positions));
+}
+
+}  // namespace nome

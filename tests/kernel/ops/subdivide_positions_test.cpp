@@ -1,0 +1,204 @@
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "nome/ops/subdivide.hpp"
+#include "support/point_sets.hpp"
+#include "support/shapes.hpp"
+
+using namespace nome;
+
+namespace {
+
+std::vector<Vec3> subdivided(const PolygonSoup& soup, int levels, SubdivisionRule rule = SubdivisionRule::classic) {
+  return subdivide(build_mesh(soup), {levels, rule}).positions();
+}
+
+// Jitters every vertex so that no position is an accident of symmetry.
+PolygonSoup jittered(PolygonSoup soup, double amount) {
+  std::mt19937 rng{42};
+  std::uniform_real_distribution<double> d(-amount, amount);
+  for (Vec3& p : soup.positions) p += Vec3(d(rng), d(rng), d(rng));
+  return soup;
+}
+
+// The Möbius band of test::mobius_band travelled twice: its orientation double cover, an annulus.
+PolygonSoup mobius_double_cover(const PolygonSoup& band, Index segments, Index width) {
+  PolygonSoup s;
+  for (Index i = 0; i < 2 * segments; ++i)
+    for (Index j = 0; j <= width; ++j) {
+      const Index jj = i < segments ? j : width - j;
+      s.add_vertex(band.positions[(i % segments) * (width + 1) + jj]);
+    }
+  auto id = [&](Index i, Index j) { return (i % (2 * segments)) * (width + 1) + j; };
+  for (Index i = 0; i < 2 * segments; ++i)
+    for (Index j = 0; j < width; ++j) s.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return s;
+}
+
+Vec3 weighted(const PolygonSoup& s, std::initializer_list<std::pair<Index, double>> terms) {
+  Vec3 sum(0.0);
+  for (auto [v, w] : terms) sum += w * s.positions[v];
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("positions do not depend on orientation, numbering or where a face's corner list starts", "[kernel]") {
+  const std::pair<const char*, PolygonSoup> shapes[] = {
+      {"torus", jittered(test::torus(7, 5), 0.05)},
+      {"mobius band", jittered(test::mobius_band(8, 2), 0.05)},
+      {"klein bottle", jittered(test::klein_bottle(8, 6), 0.05)},
+      {"cube", jittered(test::cube(), 0.1)},
+      {"projective plane", jittered(test::projective_plane(), 0.1)},
+      {"grid with a crease", [] {
+         PolygonSoup g = jittered(test::grid(4, 4), 0.1);
+         g.sharp_edges = {{10, 11}, {11, 12}, {12, 13}, {12, 17}};
+         return g;
+       }()},
+  };
+  std::mt19937 rng{42};
+  for (const auto& [name, soup] : shapes) {
+    for (SubdivisionRule rule : {SubdivisionRule::classic, SubdivisionRule::report}) {
+      for (int levels = 1; levels <= 3; ++levels) {
+        INFO(name << ", " << levels << " levels, rule " << int(rule));
+        const auto reference = subdivided(soup, levels, rule);
+        CHECK(test::compare_point_sets(reference, subdivided(test::reverse_random_faces(soup, 0.5, rng), levels, rule),
+                                       1e-12) == "");
+        CHECK(test::compare_point_sets(reference, subdivided(test::renumber_vertices(soup, rng), levels, rule),
+                                       1e-12) == "");
+        CHECK(test::compare_point_sets(reference, subdivided(test::rotate_corners(soup, rng), levels, rule),
+                                       1e-12) == "");
+      }
+    }
+  }
+}
+
+TEST_CASE("a Möbius band subdivides as its orientation double cover does, each point twice", "[kernel]") {
+  for (Index width : {1u, 3u}) {
+    const Index segments = 9;
+    const PolygonSoup band = test::mobius_band(segments, width);
+    const PolygonSoup cover = mobius_double_cover(band, segments, width);
+    for (int levels = 1; levels <= 3; ++levels) {
+      INFO("width " << width << ", " << levels << " levels");
+      CHECK(test::compare_point_sets(subdivided(band, levels), subdivided(cover, levels), 1e-12, 2) == "");
+    }
+  }
+}
+
+TEST_CASE("cube, level 1: face points, edge points and both vertex rules by hand", "[kernel]") {
+  const Mesh cube = build_mesh(test::cube());
+  const std::vector<Vec3> face_points = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}};
+  for (SubdivisionRule rule : {SubdivisionRule::classic, SubdivisionRule::report}) {
+    const Mesh m = subdivide(cube, {1, rule});
+    REQUIRE(m.num_vertices() == 26);
+    REQUIRE(m.num_faces() == 24);
+    for (Index f = 0; f < 6; ++f) CHECK(m.position(f) == face_points[f]);
+    // Edge points: (v0 + v1 + f1 + f2) / 4 puts them at 3/4 along both face directions.
+    for (Index e = 0; e < 12; ++e) {
+      const Vec3 p = m.position(6 + e);
+      const Vec3 mid = 0.5 * (cube.position(cube.edge(e).vertices[0]) + cube.position(cube.edge(e).vertices[1]));
+      CHECK(p == 0.75 * mid);
+    }
+    // Vertex points: classic ((n-2) v + avg(neighbours) + avg(faces)) / n = 5/9 v; report
+    // ((n-2) v + avg(edge points) + avg(faces)) / n = 11/18 v.
+    const double scale = rule == SubdivisionRule::classic ? 5.0 / 9.0 : 11.0 / 18.0;
+    for (Index v = 0; v < 8; ++v) {
+      const Vec3 expected = scale * cube.position(v);
+      for (int k = 0; k < 3; ++k) CHECK(m.position(18 + v)[k] == Approx(expected[k]).epsilon(1e-15));
+    }
+  }
+}
+
+TEST_CASE("on a regular grid the points follow the bicubic B-spline stencils", "[kernel]") {
+  const PolygonSoup g = jittered(test::grid(6, 6), 0.3);
+  const Mesh base = build_mesh(g);
+  auto id = [](Index i, Index j) { return j * 7 + i; };
+  const Index nf = base.num_faces(), ne = base.num_edges();
+  // Vertex (3,3): 1/64 [1 6 1; 6 36 6; 1 6 1] for classic, and the report's rule works out to
+  // 1/128 (84 v + 8 per edge neighbour + 3 per diagonal one). (Report 004 section 4.1.3 prints 92, 6, 3,
+  // which does not follow from its own formula.)
+  const Index v = id(3, 3);
+  const Vec3 edge_nbrs = weighted(g, {{id(2, 3), 1}, {id(4, 3), 1}, {id(3, 2), 1}, {id(3, 4), 1}});
+  const Vec3 diag_nbrs = weighted(g, {{id(2, 2), 1}, {id(4, 2), 1}, {id(2, 4), 1}, {id(4, 4), 1}});
+  const Vec3 classic = (36.0 * g.positions[v] + 6.0 * edge_nbrs + diag_nbrs) / 64.0;
+  const Vec3 report = (84.0 * g.positions[v] + 8.0 * edge_nbrs + 3.0 * diag_nbrs) / 128.0;
+  const Mesh c = subdivide(base, {1, SubdivisionRule::classic});
+  const Mesh r = subdivide(base, {1, SubdivisionRule::report});
+  for (int k = 0; k < 3; ++k) {
+    CHECK(c.position(nf + ne + v)[k] == Approx(classic[k]).margin(1e-14));
+    CHECK(r.position(nf + ne + v)[k] == Approx(report[k]).margin(1e-14));
+  }
+  // Edge (3,3)-(4,3): 1/16 [1 6 1] on both columns; face (3,3): the bilinear average.
+  Index edge = no_index;
+  for (Index e : base.vertex_edges(v))
+    if (base.edge(e).other_vertex(v) == id(4, 3)) edge = e;
+  REQUIRE(edge != no_index);
+  const Vec3 edge_point = weighted(g, {{id(3, 3), 6. / 16},
+                                       {id(4, 3), 6. / 16},
+                                       {id(3, 2), 1. / 16},
+                                       {id(4, 2), 1. / 16},
+                                       {id(3, 4), 1. / 16},
+                                       {id(4, 4), 1. / 16}});
+  const Index face = 3 * 6 + 3;
+  const Vec3 face_point = weighted(g, {{id(3, 3), .25}, {id(4, 3), .25}, {id(4, 4), .25}, {id(3, 4), .25}});
+  for (int k = 0; k < 3; ++k) {
+    CHECK(c.position(nf + edge)[k] == Approx(edge_point[k]).margin(1e-14));
+    CHECK(c.position(face)[k] == Approx(face_point[k]).margin(1e-14));
+  }
+}
+
+TEST_CASE("crease, corner and border rules on an open grid", "[kernel]") {
+  PolygonSoup g = jittered(test::grid(4, 4), 0.3);
+  auto id = [](Index i, Index j) { return j * 5 + i; };
+  // A crease along row j = 2 that reaches the border at (0,2) and (4,2), and a spur (2,2)-(2,3).
+  g.sharp_edges = {{id(0, 2), id(1, 2)}, {id(1, 2), id(2, 2)}, {id(2, 2), id(3, 2)},
+                   {id(3, 2), id(4, 2)}, {id(2, 2), id(2, 3)}};
+  const Mesh base = build_mesh(g);
+  const Mesh m = subdivide(base, {1, SubdivisionRule::classic});
+  const Index vp = base.num_faces() + base.num_edges();
+  auto p = [&](Index i, Index j) { return g.positions[id(i, j)]; };
+  auto near = [](const Vec3& a, const Vec3& b) { return glm::length(a - b) < 1e-14; };
+  // Crease vertex (1,2): (6v + a + b) / 8 along the crease.
+  CHECK(near(m.position(vp + id(1, 2)), (6.0 * p(1, 2) + p(0, 2) + p(2, 2)) / 8.0));
+  // Three sharp edges: a corner, unchanged. Border meets crease at (0,2): two border edges + one sharp.
+  CHECK(m.position(vp + id(2, 2)) == p(2, 2));
+  CHECK(m.position(vp + id(0, 2)) == p(0, 2));
+  // A border vertex follows its border; so does the grid's own corner (2 sharp edges, not 3).
+  CHECK(near(m.position(vp + id(2, 0)), (6.0 * p(2, 0) + p(1, 0) + p(3, 0)) / 8.0));
+  CHECK(near(m.position(vp + id(0, 0)), (6.0 * p(0, 0) + p(1, 0) + p(0, 1)) / 8.0));
+  // The spur's far end (2,3) has one sharp edge: the smooth rule, as on a regular grid.
+  const Vec3 smooth = (36.0 * p(2, 3) + 6.0 * (p(1, 3) + p(3, 3) + p(2, 2) + p(2, 4)) + p(1, 2) + p(3, 2) +
+                       p(1, 4) + p(3, 4)) /
+                      64.0;
+  CHECK(near(m.position(vp + id(2, 3)), smooth));
+  // Sharp and border edges get their midpoints.
+  for (Index e = 0; e < base.num_edges(); ++e) {
+    const Edge& edge = base.edge(e);
+    if (!edge.is_sharp && !edge.is_boundary()) continue;
+    CHECK(near(m.position(base.num_faces() + e),
+               0.5 * (base.position(edge.vertices[0]) + base.position(edge.vertices[1]))));
+  }
+}
+
+TEST_CASE("the position pass alone reproduces a full refinement after the base moves", "[kernel]") {
+  const Mesh base = build_mesh(test::mobius_band(64, 8));
+  Refinement refinement(base, 3);
+  std::vector<Vec3> out(refinement.num_vertices());
+  refinement.refine_positions(base, SubdivisionRule::classic, out);
+  CHECK(out == subdivide(base, {3, SubdivisionRule::classic}).positions());
+  Mesh moved = base;
+  for (Vec3& p : moved.positions()) p = Vec3(2.0 * p.x, p.y + p.z * p.z, p.z - 1.0);
+  refinement.refine_positions(moved, SubdivisionRule::report, out);
+  CHECK(out == subdivide(moved, {3, SubdivisionRule::report}).positions());
+  // Two threads split the work, not the arithmetic: bit for bit the same.
+  const Mesh torus = build_mesh(test::torus(64, 32));
+  Refinement big(torus, 4);
+  std::vector<Vec3> one(big.num_vertices()), two(big.num_vertices());
+  big.refine_positions(torus, SubdivisionRule::classic, one, 1);
+  big.refine_positions(torus, SubdivisionRule::classic, two, 2);
+  CHECK(one == two);
+  const auto quads = big.quad_vertices();
+  const Mesh full = big.mesh(torus, two);
+  CHECK(std::equal(quads.begin(), quads.end(), full.corner_vertices().begin(), full.corner_vertices().end()));
+}

@@ -1,0 +1,122 @@
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "nome/error.hpp"
+#include "nome/mesh/topology_report.hpp"
+#include "nome/ops/subdivide.hpp"
+#include "support/shapes.hpp"
+
+using namespace nome;
+
+namespace {
+
+struct Named {
+  const char* name;
+  PolygonSoup soup;
+};
+
+std::vector<Named> surfaces() {
+  std::mt19937 rng{42};
+  PolygonSoup sharp_grid = test::grid(4, 3);
+  sharp_grid.sharp_edges = {{6, 7}, {7, 8}, {7, 12}};
+  return {
+      {"tetrahedron", test::tetrahedron()},
+      {"cube", test::cube()},
+      {"grid", test::grid(3, 2)},
+      {"grid with sharp edges", sharp_grid},
+      {"torus", test::torus(6, 4)},
+      {"torus with reversed faces", test::reverse_random_faces(test::torus(6, 4), 0.4, rng)},
+      {"mobius band", test::mobius_band(7, 2)},
+      {"mobius band, three twists", test::mobius_band(9, 1, 3)},
+      {"klein bottle", test::klein_bottle(6, 4)},
+      {"projective plane", test::projective_plane()},
+      {"two parts", test::disjoint_union(test::mobius_band(6, 1), test::cube())},
+  };
+}
+
+Index count_flags(const Mesh& m, bool Edge::*flag) {
+  Index n = 0;
+  for (const Edge& e : m.edges()) n += (e.*flag) ? 1 : 0;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("every subdivision level is a valid mesh with the expected counts", "[kernel]") {
+  for (const Named& s : surfaces()) {
+    INFO(s.name);
+    Mesh m = build_mesh(s.soup);
+    REQUIRE(validate(m).empty());
+    for (int level = 1; level <= 3; ++level) {
+      INFO("level " << level);
+      const Mesh child = subdivide(m, {1, SubdivisionRule::classic});
+      const auto problems = validate(child);
+      CHECK(problems.empty());
+      if (!problems.empty()) FAIL(problems.front());
+      CHECK(child.num_vertices() == m.num_faces() + m.num_edges() + m.num_vertices());
+      CHECK(child.num_edges() == 2 * m.num_edges() + m.num_corners());
+      CHECK(child.num_faces() == m.num_corners());
+      for (Index f = 0; f < child.num_faces(); ++f) CHECK(child.face_degree(f) == 4);
+      CHECK(count_flags(child, &Edge::is_mobius) == 2 * count_flags(m, &Edge::is_mobius));
+      CHECK(count_flags(child, &Edge::is_sharp) == 2 * count_flags(m, &Edge::is_sharp));
+      m = child;
+    }
+  }
+}
+
+TEST_CASE("subdivision preserves chi, orientability and borders of every part", "[kernel]") {
+  for (const Named& s : surfaces()) {
+    INFO(s.name);
+    const Mesh base = build_mesh(s.soup);
+    const TopologyReport before = topology_report(base);
+    for (int level = 1; level <= 3; ++level) {
+      INFO("level " << level);
+      const TopologyReport after = topology_report(subdivide(base, {level, SubdivisionRule::classic}));
+      REQUIRE(after.components.size() == before.components.size());
+      CHECK(after.chi == before.chi);
+      CHECK(after.orientable == before.orientable);
+      CHECK(after.borders == before.borders);
+      for (size_t i = 0; i < before.components.size(); ++i) {
+        CHECK(after.components[i].chi == before.components[i].chi);
+        CHECK(after.components[i].orientable == before.components[i].orientable);
+        CHECK(after.components[i].borders == before.components[i].borders);
+        CHECK(after.components[i].genus == before.components[i].genus);
+      }
+    }
+  }
+}
+
+TEST_CASE("child faces keep their parent's orientation and colour", "[kernel]") {
+  PolygonSoup soup = test::mobius_band(5, 2);
+  for (Index f = 0; f < soup.num_faces(); ++f) soup.face_colors.push_back(Color(float(f), 0.f, 1.f));
+  const Mesh base = build_mesh(soup);
+  const Mesh child = subdivide(base, {2, SubdivisionRule::classic});
+  REQUIRE(child.face_colors().size() == child.num_faces());
+  for (Index f = 0; f < child.num_faces(); ++f)
+    CHECK(child.face_colors()[f] == base.face_colors()[base.corner_face(f >> 2)]);
+  // Children of a face are consecutive and run the same way round: the quad at parent corner c starts at
+  // c's vertex point and goes on to the edge point of the edge leaving c.
+  const Mesh level1 = subdivide(base, {1, SubdivisionRule::classic});
+  const Index nf = base.num_faces(), ne = base.num_edges();
+  for (Index c = 0; c < base.num_corners(); ++c) {
+    const auto q = level1.face_vertices(c);
+    CHECK(q[0] == nf + ne + base.corner_vertex(c));
+    CHECK(q[1] == nf + base.corner_edge(c));
+    CHECK(q[2] == base.corner_face(c));
+  }
+}
+
+TEST_CASE("a refinement rejects levels below 1 and a base of another topology", "[kernel]") {
+  const Mesh cube = build_mesh(test::cube());
+  CHECK_THROWS_AS(Refinement(cube, 0), InvalidInputError);
+  Refinement refinement(cube, 2);
+  CHECK(refinement.fits(cube));
+  const Mesh tetra = build_mesh(test::tetrahedron());
+  CHECK_FALSE(refinement.fits(tetra));
+  std::vector<Vec3> out(refinement.num_vertices());
+  CHECK_THROWS_AS(refinement.refine_positions(tetra, SubdivisionRule::classic, out), InvalidInputError);
+  Mesh sharper = cube;
+  sharper.set_sharp(0, true);
+  CHECK_FALSE(refinement.fits(sharper));
+}
