@@ -25,7 +25,8 @@ std::string compare_point_sets(const std::vector<Vec3>& a, const std::vector<Vec
     std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return points[i].x < points[j].x; });
     return order;
   };
-  const auto count_near = [&](const std::vector<Vec3>& points, const std::vector<size_t>& order, const Vec3& q) {
+  const auto count_near = [&](const std::vector<Vec3>& points, const std::vector<size_t>& order,
+                              const Vec3& q) {
     const auto first = std::lower_bound(order.begin(), order.end(), q.x - tol,
                                         [&](size_t j, double x) { return points[j].x < x; });
     int found = 0;

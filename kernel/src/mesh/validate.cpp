@@ -42,7 +42,8 @@ void check_arrays(const Mesh& m, Violations& out) {
       out.add("corner " + str(c) + " refers to a missing vertex or edge");
   const size_t nv1 = size_t(m.num_vertices()) + 1;
   for (const auto* offsets : {&m.fan_corner_offsets(), &m.fan_edge_offsets()}) {
-    if (offsets->size() != nv1 || offsets->front() != 0) out.add("fan offsets do not have one entry per vertex");
+    if (offsets->size() != nv1 || offsets->front() != 0)
+      out.add("fan offsets do not have one entry per vertex");
     for (size_t i = 0; i + 1 < offsets->size(); ++i)
       if ((*offsets)[i + 1] < (*offsets)[i]) out.add("fan offsets decrease at vertex " + std::to_string(i));
   }
@@ -76,7 +77,8 @@ void check_corners_and_edges(const Mesh& m, Violations& out) {
         continue;
       }
       if (m.corner_edge(c) != i) out.add(name + ": its corner " + str(c) + " runs along another edge");
-      if (m.corner_face(c) != e.faces[side]) out.add(name + ": corner and face disagree on side " + str(side));
+      if (m.corner_face(c) != e.faces[side])
+        out.add(name + ": corner and face disagree on side " + str(side));
       const Index from = m.corner_vertex(c), to = m.corner_vertex(m.next_corner(c));
       const bool forward = from == e.vertices[0] && to == e.vertices[1];
       const bool backward = from == e.vertices[1] && to == e.vertices[0];
@@ -103,7 +105,8 @@ void check_fans(const Mesh& m, Violations& out) {
               std::to_string(corners.size()) + " corners");
       continue;
     }
-    if (boundary && !m.edge(edges.back()).is_boundary()) out.add(name + ": border fan does not end on a border");
+    if (boundary && !m.edge(edges.back()).is_boundary())
+      out.add(name + ": border fan does not end on a border");
     if (m.corner_sign(corners.front()) != 1) out.add(name + ": first corner's sign is not +1");
     for (size_t i = 0; i < corners.size(); ++i) {
       const Index c = corners[i];
@@ -137,7 +140,8 @@ void check_loops_and_components(const Mesh& m, Violations& out) {
     }
   }
   for (Index i = 0; i < m.num_edges(); ++i)
-    if (m.edge(i).is_boundary() != (in_loop[i] == 1)) out.add("edge " + str(i) + " is in the wrong number of loops");
+    if (m.edge(i).is_boundary() != (in_loop[i] == 1))
+      out.add("edge " + str(i) + " is in the wrong number of loops");
   for (const Edge& e : m.edges())
     if (e.faces[1] != no_index && m.face_component(e.faces[0]) != m.face_component(e.faces[1]))
       out.add("faces " + str(e.faces[0]) + " and " + str(e.faces[1]) + " share an edge across components");

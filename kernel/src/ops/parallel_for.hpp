@@ -22,7 +22,8 @@ void parallel_for(Index n, int threads, const Body& body) {
   const Index chunk = (n + count - 1) / count;
   std::vector<std::thread> pool;
   pool.reserve(count - 1);
-  for (Index t = 1; t < count; ++t) pool.emplace_back(body, std::min(n, t * chunk), std::min(n, (t + 1) * chunk));
+  for (Index t = 1; t < count; ++t)
+    pool.emplace_back(body, std::min(n, t * chunk), std::min(n, (t + 1) * chunk));
   body(Index(0), std::min(n, chunk));
   for (std::thread& thread : pool) thread.join();
 }

@@ -86,7 +86,7 @@ void refine_topology(const Parent& parent, Refinement::Level& child, bool full, 
 
 // The position pass: child positions (face points, edge points, vertex points) from parent positions.
 template <class Parent>
-void refine_positions(const Parent& parent, std::span<const Vec3> in, SubdivisionRule rule, std::span<Vec3> out,
-                      int threads);
+void refine_positions(const Parent& parent, std::span<const Vec3> in, SubdivisionRule rule,
+                      std::span<Vec3> out, int threads);
 
 }  // namespace nome

@@ -23,7 +23,8 @@ Refinement::Refinement(const Mesh& base, int levels)
       base_corners_(base.num_corners()),
       base_edges_(base.num_edges()),
       base_sharp_edges_(sharp_edges(base)) {
-  if (levels < 1) throw InvalidInputError("Refinement: levels must be at least 1, got " + std::to_string(levels));
+  if (levels < 1)
+    throw InvalidInputError("Refinement: levels must be at least 1, got " + std::to_string(levels));
   levels_.resize(size_t(levels));
   level_positions_.resize(size_t(levels) - 1);
   for (int k = 0; k < levels; ++k) {

@@ -25,8 +25,9 @@ MeshArrays arrays_of(const Mesh& m) {
 }  // namespace
 
 TEST_CASE("build_mesh gives valid meshes and assemble_mesh rebuilds them from their arrays", "[kernel]") {
-  for (const PolygonSoup& soup : {test::cube(), test::grid(3, 2), test::mobius_band(7, 2), test::klein_bottle(6, 4),
-                                  test::projective_plane(), test::disjoint_union(test::torus(5, 3), test::cube())}) {
+  for (const PolygonSoup& soup :
+       {test::cube(), test::grid(3, 2), test::mobius_band(7, 2), test::klein_bottle(6, 4),
+        test::projective_plane(), test::disjoint_union(test::torus(5, 3), test::cube())}) {
     const Mesh m = build_mesh(soup);
     CHECK(validate(m).empty());
     const Mesh again = assemble_mesh(arrays_of(m));

@@ -10,7 +10,8 @@ using namespace nome;
 
 namespace {
 
-std::vector<Vec3> subdivided(const PolygonSoup& soup, int levels, SubdivisionRule rule = SubdivisionRule::classic) {
+std::vector<Vec3> subdivided(const PolygonSoup& soup, int levels,
+                             SubdivisionRule rule = SubdivisionRule::classic) {
   return subdivide(build_mesh(soup), {levels, rule}).positions();
 }
 
@@ -44,14 +45,16 @@ Vec3 weighted(const PolygonSoup& s, std::initializer_list<std::pair<Index, doubl
 
 }  // namespace
 
-TEST_CASE("positions do not depend on orientation, numbering or where a face's corner list starts", "[kernel]") {
+TEST_CASE("positions do not depend on orientation, numbering or where a face's corner list starts",
+          "[kernel]") {
   const std::pair<const char*, PolygonSoup> shapes[] = {
       {"torus", jittered(test::torus(7, 5), 0.05)},
       {"mobius band", jittered(test::mobius_band(8, 2), 0.05)},
       {"klein bottle", jittered(test::klein_bottle(8, 6), 0.05)},
       {"cube", jittered(test::cube(), 0.1)},
       {"projective plane", jittered(test::projective_plane(), 0.1)},
-      {"grid with a crease", [] {
+      {"grid with a crease",
+       [] {
          PolygonSoup g = jittered(test::grid(4, 4), 0.1);
          g.sharp_edges = {{10, 11}, {11, 12}, {12, 13}, {12, 17}};
          return g;
@@ -63,10 +66,11 @@ TEST_CASE("positions do not depend on orientation, numbering or where a face's c
       for (int levels = 1; levels <= 3; ++levels) {
         INFO(name << ", " << levels << " levels, rule " << int(rule));
         const auto reference = subdivided(soup, levels, rule);
-        CHECK(test::compare_point_sets(reference, subdivided(test::reverse_random_faces(soup, 0.5, rng), levels, rule),
+        CHECK(test::compare_point_sets(reference,
+                                       subdivided(test::reverse_random_faces(soup, 0.5, rng), levels, rule),
                                        1e-12) == "");
-        CHECK(test::compare_point_sets(reference, subdivided(test::renumber_vertices(soup, rng), levels, rule),
-                                       1e-12) == "");
+        CHECK(test::compare_point_sets(
+                  reference, subdivided(test::renumber_vertices(soup, rng), levels, rule), 1e-12) == "");
         CHECK(test::compare_point_sets(reference, subdivided(test::rotate_corners(soup, rng), levels, rule),
                                        1e-12) == "");
       }
@@ -97,7 +101,8 @@ TEST_CASE("cube, level 1: face points, edge points and both vertex rules by hand
     // Edge points: (v0 + v1 + f1 + f2) / 4 puts them at 3/4 along both face directions.
     for (Index e = 0; e < 12; ++e) {
       const Vec3 p = m.position(6 + e);
-      const Vec3 mid = 0.5 * (cube.position(cube.edge(e).vertices[0]) + cube.position(cube.edge(e).vertices[1]));
+      const Vec3 mid =
+          0.5 * (cube.position(cube.edge(e).vertices[0]) + cube.position(cube.edge(e).vertices[1]));
       CHECK(p == 0.75 * mid);
     }
     // Vertex points: classic ((n-2) v + avg(neighbours) + avg(faces)) / n = 5/9 v; report
@@ -152,8 +157,11 @@ TEST_CASE("crease, corner and border rules on an open grid", "[kernel]") {
   PolygonSoup g = jittered(test::grid(4, 4), 0.3);
   auto id = [](Index i, Index j) { return j * 5 + i; };
   // A crease along row j = 2 that reaches the border at (0,2) and (4,2), and a spur (2,2)-(2,3).
-  g.sharp_edges = {{id(0, 2), id(1, 2)}, {id(1, 2), id(2, 2)}, {id(2, 2), id(3, 2)},
-                   {id(3, 2), id(4, 2)}, {id(2, 2), id(2, 3)}};
+  g.sharp_edges = {{id(0, 2), id(1, 2)},
+                   {id(1, 2), id(2, 2)},
+                   {id(2, 2), id(3, 2)},
+                   {id(3, 2), id(4, 2)},
+                   {id(2, 2), id(2, 3)}};
   const Mesh base = build_mesh(g);
   const Mesh m = subdivide(base, {1, SubdivisionRule::classic});
   const Index vp = base.num_faces() + base.num_edges();
