@@ -1,5 +1,7 @@
 #include "nome/ops/normals.hpp"
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
 namespace nome {
@@ -46,6 +48,24 @@ Normals compute_normals(const Mesh& mesh) {
       if (!mesh.is_isolated_vertex(v)) out.degenerate_vertices.push_back(v);
     }
   }
+  return out;
+}
+
+std::string degeneracy_warning(const Mesh& mesh, const Normals& normals) {
+  constexpr size_t max_named = 8;
+  std::string out;
+  auto list = [&](const std::vector<Index>& ids, const char* what, auto label) {
+    if (ids.empty()) return;
+    if (!out.empty()) out += "; ";
+    out += std::to_string(ids.size()) + " " + what + ": ";
+    for (size_t i = 0; i < std::min(ids.size(), max_named); ++i) out += (i ? ", " : "") + label(ids[i]);
+    if (ids.size() > max_named) out += ", ...";
+  };
+  list(normals.degenerate_faces, "degenerate faces (zero area or coinciding vertices)",
+       [&](Index f) { return mesh.face_label(f); });
+  list(normals.degenerate_vertices, "vertices whose faces' normals cancel",
+       [&](Index v) { return mesh.vertex_label(v); });
+  if (!out.empty()) out += "; their normals are set to zero";
   return out;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
@@ -21,5 +22,9 @@ struct Normals {
 // orientation sign (Möbius-aware: no dot-product guessing). Degenerate elements get a zero normal and
 // are listed, never NaN.
 Normals compute_normals(const Mesh& mesh);
+
+// A warning naming the degenerate faces and vertices of `normals` (the first few of each, by label),
+// or "" when there are none: for the caller to show, since the kernel never prints.
+std::string degeneracy_warning(const Mesh& mesh, const Normals& normals);
 
 }  // namespace nome

@@ -1,0 +1,257 @@
+#include "nome/ops/offset.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "nome/error.hpp"
+#include "nome/ops/normals.hpp"
+
+namespace nome {
+namespace {
+
+void check_distance(const char* who, double distance) {
+  if (!(distance > 0.0) || !std::isfinite(distance))
+    throw InvalidInputError(std::string(who) + ": the offset distance must be positive and finite, got " +
+                            std::to_string(distance));
+}
+
+// Output vertex pair of each input vertex: vertices without faces get none.
+std::vector<Index> vertex_ranks(const Mesh& mesh, Index& count) {
+  std::vector<Index> rank(mesh.num_vertices(), no_index);
+  count = 0;
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    if (!mesh.is_isolated_vertex(v)) rank[v] = count++;
+  return rank;
+}
+
+// Builds the offset's arrays. Input vertex v on side `side` (0: v+, 1: v-) is output vertex
+// 2 rank(v) + side. The corner with sign s sits on side 0 in the positive copy when s = +1.
+class OffsetBuilder {
+ public:
+  explicit OffsetBuilder(const Mesh& m) : m_(m), nf_(m.num_faces()), nc_(m.num_corners()), ne_(m.num_edges()) {
+    rank_ = vertex_ranks(m, nv_out_);
+    // Border bookkeeping: each border edge's loop position (its quad) and each border vertex's loop
+    // position (its side edge, joining v+ and v-).
+    loop_of_edge_.assign(ne_, no_index);
+    loop_of_vertex_.assign(m.num_vertices(), no_index);
+    for (Index l = 0; l < m.num_boundary_loops(); ++l) {
+      const auto es = m.loop_edges(l);
+      const auto vs = m.loop_vertices(l);
+      for (size_t i = 0; i < es.size(); ++i, ++num_border_) {
+        loop_of_edge_[es[i]] = num_border_;
+        loop_of_vertex_[vs[i]] = num_border_;
+      }
+    }
+  }
+
+  Mesh build(const Normals& normals, double distance) {
+    MeshArrays a;
+    a.positions.resize(2 * size_t(nv_out_));
+    write_positions(normals, distance, a.positions);
+    faces(a);
+    edges(a);
+    fans(a);
+    if (!m_.face_colors().empty()) {
+      a.face_colors.reserve(2 * size_t(nf_) + num_border_);
+      for (int copy = 0; copy < 2; ++copy)
+        a.face_colors.insert(a.face_colors.end(), m_.face_colors().begin(), m_.face_colors().end());
+      for (Index l = 0; l < m_.num_boundary_loops(); ++l)
+        for (Index e : m_.loop_edges(l)) a.face_colors.push_back(m_.face_colors()[m_.edge(e).faces[0]]);
+    }
+    return assemble_mesh(std::move(a));
+  }
+
+  void write_positions(const Normals& normals, double distance, std::span<Vec3> out) const {
+    for (Index v = 0; v < m_.num_vertices(); ++v) {
+      if (rank_[v] == no_index) continue;
+      const Vec3 shift = distance * normals.vertices[v];
+      out[2 * rank_[v]] = m_.position(v) + shift;
+      out[2 * rank_[v] + 1] = m_.position(v) - shift;
+    }
+  }
+
+ private:
+  Index out_vertex(Index v, int side) const { return 2 * rank_[v] + Index(side); }
+  // The side of v used by corner c's positive copy.
+  int positive_side(Index c) const { return m_.corner_sign(c) > 0 ? 0 : 1; }
+  Index local(Index c) const { return c - m_.face_first_corner(m_.corner_face(c)); }
+  // Negative copy of face f: corner i holds the vertex of parent corner (n - i) % n, and its edge is the
+  // parent edge of corner n - 1 - i; so parent corner c's vertex sits at negative corner (n - local) % n.
+  Index negative_corner_at_vertex(Index c) const {
+    const Index f = m_.corner_face(c), n = m_.face_degree(f);
+    return nc_ + m_.face_first_corner(f) + (n - local(c)) % n;
+  }
+  Index negative_corner_along_edge(Index c) const {
+    const Index f = m_.corner_face(c), n = m_.face_degree(f);
+    return nc_ + m_.face_first_corner(f) + (n - 1 - local(c));
+  }
+  Index ribbon_corner(Index j, int k) const { return 2 * nc_ + 4 * j + Index(k); }
+  // The corner of the first face of border edge e at its vertex v.
+  Index first_face_corner_at(Index e, Index v) const {
+    const Edge& edge = m_.edge(e);
+    return edge.vertices[0] == v ? edge.corners[0] : m_.next_corner(edge.corners[0]);
+  }
+
+  void faces(MeshArrays& a) const {
+    a.face_offsets.resize(2 * size_t(nf_) + num_border_ + 1);
+    for (Index f = 0; f <= nf_; ++f) {
+      a.face_offsets[f] = m_.face_offsets()[f];
+      a.face_offsets[nf_ + f] = nc_ + m_.face_offsets()[f];
+    }
+    for (Index j = 0; j <= num_border_; ++j) a.face_offsets[2 * nf_ + j] = 2 * nc_ + 4 * j;
+    a.corner_vertices.resize(2 * size_t(nc_) + 4 * size_t(num_border_));
+    for (Index c = 0; c < nc_; ++c) {
+      const Index v = m_.corner_vertex(c);
+      a.corner_vertices[c] = out_vertex(v, positive_side(c));
+      a.corner_vertices[negative_corner_at_vertex(c)] = out_vertex(v, 1 - positive_side(c));
+    }
+    // Border quad (b+, a+, a-, b-) for border edge a -> b of its face: it runs against both copies.
+    for (Index l = 0; l < m_.num_boundary_loops(); ++l)
+      for (Index e : m_.loop_edges(l)) {
+        const Edge& edge = m_.edge(e);
+        const Index j = loop_of_edge_[e], ca = edge.corners[0], cb = m_.next_corner(ca);
+        const Index va = edge.vertices[0], vb = edge.vertices[1];
+        Index* q = a.corner_vertices.data() + ribbon_corner(j, 0);
+        q[0] = out_vertex(vb, positive_side(cb));
+        q[1] = out_vertex(va, positive_side(ca));
+        q[2] = out_vertex(va, 1 - positive_side(ca));
+        q[3] = out_vertex(vb, 1 - positive_side(cb));
+      }
+  }
+
+  // Input edge e gives edge 2e (in the positive copy of its first face) and 2e+1 (in the negative copy);
+  // border vertex at loop position j gives the side edge 2E + j.
+  void edges(MeshArrays& a) const {
+    a.edges.resize(2 * size_t(ne_) + num_border_);
+    a.corner_edges.resize(a.corner_vertices.size());
+    a.corner_signs.assign(a.corner_vertices.size(), 1);
+    for (Index e = 0; e < ne_; ++e) {
+      const Edge& in = m_.edge(e);
+      Edge& plus = a.edges[2 * e];
+      Edge& minus = a.edges[2 * e + 1];
+      const Index ca = in.corners[0];
+      const int sa = positive_side(ca), sb = positive_side(m_.next_corner(ca));
+      plus.vertices = {out_vertex(in.vertices[0], sa), out_vertex(in.vertices[1], sb)};
+      minus.vertices = {out_vertex(in.vertices[1], 1 - sb), out_vertex(in.vertices[0], 1 - sa)};
+      plus.corners[0] = ca;
+      minus.corners[0] = negative_corner_along_edge(ca);
+      if (in.is_boundary()) {
+        const Index j = loop_of_edge_[e];
+        plus.corners[1] = ribbon_corner(j, 0);
+        minus.corners[1] = ribbon_corner(j, 2);
+      } else if (in.is_mobius) {
+        plus.corners[1] = negative_corner_along_edge(in.corners[1]);
+        minus.corners[1] = in.corners[1];
+      } else {
+        plus.corners[1] = in.corners[1];
+        minus.corners[1] = negative_corner_along_edge(in.corners[1]);
+      }
+      plus.is_sharp = minus.is_sharp = in.is_sharp;
+      for (Edge* out : {&plus, &minus}) a.corner_edges[out->corners[0]] = a.corner_edges[out->corners[1]] = Index(out - a.edges.data());
+    }
+    // Side edges: the border quad of loop position j has a's side at corners 1 -> 2 and b's at 3 -> 0.
+    for (Index l = 0; l < m_.num_boundary_loops(); ++l)
+      for (Index e : m_.loop_edges(l)) {
+        const Index j = loop_of_edge_[e];
+        for (int end = 0; end < 2; ++end) {
+          const Index v = m_.edge(e).vertices[end];
+          const Index side_edge = 2 * ne_ + loop_of_vertex_[v];
+          const Index corner = ribbon_corner(j, end == 0 ? 1 : 3);
+          a.corner_edges[corner] = side_edge;
+          Edge& out = a.edges[side_edge];
+          if (loop_of_vertex_[v] == j) {  // the loop starts this edge at v: this quad is the edge's first face
+            out.vertices = {a.corner_vertices[corner], a.corner_vertices[corner == ribbon_corner(j, 1) ? ribbon_corner(j, 2) : ribbon_corner(j, 0)]};
+            out.corners[0] = corner;
+          } else {
+            out.corners[1] = corner;
+          }
+        }
+      }
+    for (Edge& e : a.edges) e.faces = {face_of(e.corners[0]), face_of(e.corners[1])};
+  }
+
+  Index face_of(Index c) const {
+    if (c < nc_) return m_.corner_face(c);
+    if (c < 2 * nc_) return nf_ + m_.corner_face(c - nc_);
+    return 2 * nf_ + (c - 2 * nc_) / 4;
+  }
+
+  // Output vertex (v, side): the copies of v's fan faces that hold it, in fan order; at a border vertex
+  // the fan closes through the last border quad, the side edge and the first border quad.
+  void fans(MeshArrays& a) const {
+    const Index nv = m_.num_vertices();
+    a.fan_corner_offsets.assign(2 * size_t(nv_out_) + 1, 0);
+    a.fan_edge_offsets.assign(2 * size_t(nv_out_) + 1, 0);
+    for (Index v = 0; v < nv; ++v) {
+      if (rank_[v] == no_index) continue;
+      const Index k = Index(m_.vertex_corners(v).size()) + (m_.is_boundary_vertex(v) ? 2 : 0);
+      for (int side = 0; side < 2; ++side) {
+        a.fan_corner_offsets[out_vertex(v, side) + 1] = k;
+        a.fan_edge_offsets[out_vertex(v, side) + 1] = k;
+      }
+    }
+    for (size_t i = 1; i < a.fan_corner_offsets.size(); ++i) {
+      a.fan_corner_offsets[i] += a.fan_corner_offsets[i - 1];
+      a.fan_edge_offsets[i] += a.fan_edge_offsets[i - 1];
+    }
+    a.fan_corners.resize(a.fan_corner_offsets.back());
+    a.fan_edges.resize(a.fan_edge_offsets.back());
+    for (Index v = 0; v < nv; ++v) {
+      if (rank_[v] == no_index) continue;
+      const auto corners = m_.vertex_corners(v);
+      const auto edges = m_.vertex_edges(v);
+      for (int side = 0; side < 2; ++side) {
+        const Index w = out_vertex(v, side);
+        Index* fc = a.fan_corners.data() + a.fan_corner_offsets[w];
+        Index* fe = a.fan_edges.data() + a.fan_edge_offsets[w];
+        for (size_t i = 0; i < corners.size(); ++i) {
+          const Index c = corners[i];
+          fc[i] = positive_side(c) == side ? c : negative_corner_at_vertex(c);
+        }
+        for (size_t i = 0; i < edges.size(); ++i) {
+          const Index e = edges[i];
+          fe[i] = positive_side(first_face_corner_at(e, v)) == side ? 2 * e : 2 * e + 1;
+        }
+        if (!m_.is_boundary_vertex(v)) continue;
+        const size_t k = corners.size();
+        fc[k] = ribbon_corner_at(edges.back(), v, side);
+        fc[k + 1] = ribbon_corner_at(edges.front(), v, side);
+        fe[k + 1] = 2 * ne_ + loop_of_vertex_[v];
+      }
+    }
+  }
+
+  // The corner of border edge e's quad (b+, a+, a-, b-) at output vertex (v, side).
+  Index ribbon_corner_at(Index e, Index v, int side) const {
+    const Index j = loop_of_edge_[e];
+    const bool positive = positive_side(first_face_corner_at(e, v)) == side;
+    if (m_.edge(e).vertices[0] == v) return ribbon_corner(j, positive ? 1 : 2);
+    return ribbon_corner(j, positive ? 0 : 3);
+  }
+
+  const Mesh& m_;
+  Index nf_, nc_, ne_;
+  Index nv_out_ = 0, num_border_ = 0;
+  std::vector<Index> rank_, loop_of_edge_, loop_of_vertex_;
+};
+
+}  // namespace
+
+Mesh offset(const Mesh& mesh, const OffsetOptions& options) {
+  check_distance("offset", options.distance);
+  const Mesh solid = OffsetBuilder(mesh).build(compute_normals(mesh), options.distance);
+  if (options.subdivision_levels == 0) return solid;
+  return subdivide(solid, {options.subdivision_levels, options.rule});
+}
+
+void offset_positions(const Mesh& mesh, double distance, std::span<Vec3> out) {
+  check_distance("offset_positions", distance);
+  Index count = 0;
+  vertex_ranks(mesh, count);
+  if (out.size() != 2 * size_t(count))
+    throw InvalidInputError("offset_positions: output holds " + std::to_string(out.size()) + " positions, the offset has " +
+                            std::to_string(2 * size_t(count)));
+  OffsetBuilder(mesh).write_positions(compute_normals(mesh), distance, out);
+}
+
+}  // namespace nome

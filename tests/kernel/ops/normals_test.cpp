@@ -1,0 +1,52 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "nome/ops/normals.hpp"
+#include "support/shapes.hpp"
+
+using namespace nome;
+
+TEST_CASE("Möbius-aware vertex normals agree with every signed face normal of their fan", "[kernel]") {
+  std::mt19937 rng{42};
+  for (const PolygonSoup& soup : {test::mobius_band(24, 3), test::klein_bottle(24, 12),
+                                  test::reverse_random_faces(test::torus(16, 8), 0.5, rng)}) {
+    const Mesh m = build_mesh(soup);
+    const Normals n = compute_normals(m);
+    CHECK(n.degenerate_faces.empty());
+    CHECK(n.degenerate_vertices.empty());
+    CHECK(degeneracy_warning(m, n).empty());
+    for (Index v = 0; v < m.num_vertices(); ++v) {
+      CHECK(glm::length(n.vertices[v]) == Approx(1.0));
+      for (Index c : m.vertex_corners(v))
+        CHECK(glm::dot(n.vertices[v], double(m.corner_sign(c)) * n.faces[m.corner_face(c)]) > 0.2);
+    }
+  }
+}
+
+TEST_CASE("Newell's face normal is the area vector of a non-planar polygon too", "[kernel]") {
+  PolygonSoup s;
+  s.positions = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0.3}, {0, 1, -0.3}};
+  s.add_face({0, 1, 2, 3});
+  const Mesh m = build_mesh(s);
+  const Vec3 n = face_area_normal(m, 0);
+  CHECK(n.z == Approx(2.0 * 2.0));  // twice the projected area on z = 0
+  CHECK(compute_normals(m).faces[0] == glm::normalize(n));
+}
+
+TEST_CASE("degenerate faces give zero normals and a warning that names them, never NaN", "[kernel]") {
+  PolygonSoup s = test::grid(2, 1);
+  // Face 1 = (v1 v2 v5 v4): fold its far side onto its near side, so that it has no area.
+  s.positions[4] = s.positions[1];
+  s.positions[5] = s.positions[2];
+  s.face_names = {"left", "flat"};
+  const Mesh m = build_mesh(s);
+  const Normals n = compute_normals(m);
+  REQUIRE(n.degenerate_faces == std::vector<Index>{1});
+  CHECK(n.faces[1] == Vec3(0.0));
+  for (const Vec3& v : n.vertices) CHECK_FALSE((std::isnan(v.x) || std::isnan(v.y) || std::isnan(v.z)));
+  const std::string warning = degeneracy_warning(m, n);
+  CHECK_THAT(warning, Catch::Contains("1 degenerate faces") && Catch::Contains("flat"));
+  CHECK_THAT(warning, Catch::Contains("v2") && Catch::Contains("v5"));
+}

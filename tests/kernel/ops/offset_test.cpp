@@ -1,0 +1,112 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "nome/error.hpp"
+#include "nome/mesh/topology_report.hpp"
+#include "nome/ops/offset.hpp"
+#include "support/shapes.hpp"
+
+using namespace nome;
+
+namespace {
+
+// Signed volume by the divergence theorem over a fan triangulation of each face: positive when a
+// closed surface's faces are oriented outward.
+double signed_volume(const Mesh& m) {
+  double volume = 0.0;
+  for (Index f = 0; f < m.num_faces(); ++f) {
+    const auto vs = m.face_vertices(f);
+    for (size_t i = 1; i + 1 < vs.size(); ++i)
+      volume += glm::dot(m.position(vs[0]), glm::cross(m.position(vs[i]), m.position(vs[i + 1]))) / 6.0;
+  }
+  return volume;
+}
+
+struct Case {
+  const char* name;
+  PolygonSoup soup;
+  long long chi;  // of the offset solid
+};
+
+}  // namespace
+
+TEST_CASE("the offset is a closed, orientable, outward solid with chi = 2 chi(M)", "[kernel]") {
+  std::mt19937 rng{42};
+  const Case cases[] = {
+      {"disk (grid) -> sphere", test::grid(3, 2), 2},
+      {"annulus -> torus", test::mobius_band(12, 2, 2), 0},
+      {"mobius band -> torus", test::mobius_band(12, 2), 0},
+      {"mobius band, 3 twists -> torus", test::mobius_band(15, 1, 3), 0},
+      {"klein bottle -> torus", test::klein_bottle(12, 8), 0},
+      {"torus -> two tori", test::torus(8, 6), 0},
+      {"torus with reversed faces -> two tori", test::reverse_random_faces(test::torus(8, 6), 0.5, rng), 0},
+      {"cube -> two spheres", test::cube(), 4},
+      {"projective plane -> sphere", test::projective_plane(), 2},
+      {"mobius band with reversed faces", test::reverse_random_faces(test::mobius_band(12, 3), 0.5, rng), 0},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name);
+    const Mesh m = build_mesh(c.soup);
+    const Mesh solid = offset(m, {0.02});
+    const auto problems = validate(solid);
+    CHECK(problems.empty());
+    if (!problems.empty()) FAIL(problems.front());
+    const TopologyReport r = topology_report(solid);
+    CHECK(r.chi == 2 * topology_report(m).chi);
+    CHECK(r.chi == c.chi);
+    CHECK(r.borders == 0);
+    CHECK(r.orientable);
+    CHECK(r.mobius_edges == 0);
+    CHECK(signed_volume(solid) > 0.0);
+    Index border_edges = 0;
+    for (const Edge& e : m.edges()) border_edges += e.is_boundary() ? 1 : 0;
+    CHECK(solid.num_faces() == 2 * m.num_faces() + border_edges);
+  }
+}
+
+TEST_CASE("offset copies sit at distance d along the vertex normal, one on each side", "[kernel]") {
+  const Mesh disk = build_mesh(test::grid(2, 2));
+  const Mesh solid = offset(disk, {0.25});
+  REQUIRE(solid.num_vertices() == 2 * disk.num_vertices());
+  for (Index v = 0; v < disk.num_vertices(); ++v) {
+    CHECK(solid.position(2 * v) == disk.position(v) + Vec3(0, 0, 0.25));
+    CHECK(solid.position(2 * v + 1) == disk.position(v) - Vec3(0, 0, 0.25));
+  }
+  // 8 faces of two copies plus one quad per border edge.
+  CHECK(solid.num_faces() == 8 + 8);
+  // The slab of a flat unit-cell 2x2 grid: volume = area * thickness.
+  CHECK(signed_volume(solid) == Approx(4.0 * 0.5));
+}
+
+TEST_CASE("a subdivided Möbius band offsets into a torus, rounded by subdivision after", "[kernel]") {
+  const Mesh band = subdivide(build_mesh(test::mobius_band(16, 2)), {2, SubdivisionRule::classic});
+  const Mesh solid = offset(band, {0.03, 1, SubdivisionRule::classic});
+  CHECK(validate(solid).empty());
+  const TopologyReport r = topology_report(solid);
+  CHECK(r.components.size() == 1);
+  CHECK(r.chi == 0);
+  CHECK(r.orientable);
+  CHECK(r.components[0].genus == 1);
+  CHECK(r.borders == 0);
+  CHECK(signed_volume(solid) > 0.0);
+}
+
+TEST_CASE("offset_positions moves the vertices of a kept offset topology", "[kernel]") {
+  const Mesh band = build_mesh(test::mobius_band(10, 2));
+  Mesh moved = band;
+  for (Vec3& p : moved.positions()) p = Vec3(p.x * 1.5, p.y, p.z + 0.1 * p.x);
+  Mesh solid = offset(band, {0.05});
+  offset_positions(moved, 0.05, solid.positions());
+  CHECK(solid.positions() == offset(moved, {0.05}).positions());
+}
+
+TEST_CASE("offset refuses a distance that is not positive and finite", "[kernel]") {
+  const Mesh cube = build_mesh(test::cube());
+  for (double d : {0.0, -0.1, std::numeric_limits<double>::infinity(), std::nan("")}) {
+    CHECK_THROWS_WITH(offset(cube, {d}), Catch::StartsWith("offset: the offset distance must be positive"));
+  }
+  std::vector<Vec3> out(3);
+  CHECK_THROWS_AS(offset_positions(cube, 0.1, out), InvalidInputError);
+}
