@@ -1,6 +1,7 @@
 #include "cli/input.hpp"
 
 #include "cli/merge_option.hpp"
+#include "cli/pipeline_options.hpp"
 #include "cli/scene_input.hpp"
 #include "nome/error.hpp"
 
@@ -32,6 +33,7 @@ std::vector<OptionSpec> input_options() {
       {"--set", "", "BANK_PARAM=VALUE", "override a slider of a scene (repeatable)", true},
       {"--quads", "", "", "pair the triangles of .sif files into quads where convex and nearly planar"}};
   for (OptionSpec& o : merge_options()) options.push_back(std::move(o));
+  for (OptionSpec& o : pipeline_option_specs()) options.push_back(std::move(o));
   return options;
 }
 
@@ -42,11 +44,8 @@ Mesh load_input(const Arguments& args) {
 Stage parse_stage(const std::string& name) {
   if (name == "scene") return Stage::scene;
   if (name == "merged") return Stage::merged;
-  const std::pair<const char*, const char*> pending[] = {{"subdivided", "subdivision"},
-                                                         {"offset", "offsetting"}};
-  for (const auto& [stage, feature] : pending)
-    if (name == stage)
-      throw UsageError("--stage " + name + ": " + feature + " is not built yet (available: scene, merged)");
+  if (name == "subdivided") return Stage::subdivided;
+  if (name == "offset") return Stage::offset;
   throw UsageError("--stage expects scene, merged, subdivided or offset, found '" + name + "'");
 }
 
@@ -62,7 +61,9 @@ Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* sc
   Mesh mesh = build_naming_the_file(std::move(soup), input.parts, input.part_files);
   if (scenes) *scenes = std::move(input.scenes);
   if (last == Stage::scene) return mesh;
-  return apply_merge_option(std::move(mesh), args);
+  mesh = apply_merge_option(std::move(mesh), args);
+  if (last == Stage::merged) return mesh;
+  return run_pipeline(mesh, args, last == Stage::offset);
 }
 
 }  // namespace nome::cli

@@ -92,7 +92,7 @@ TEST_CASE("nome render refuses bad requests and writes nothing", "[app]") {
       {"render " + asset("cube.obj") + out + " --background mauve", 2, "--background expects a colour"},
       {"render " + asset("cube.obj") + out + " --backend vulkan", 2, "--backend expects egl or osmesa"},
       {"render " + asset("cube.obj") + out + " --stage sculpted", 2, "--stage expects scene, merged"},
-      {"render " + asset("cube.obj") + out + " --stage offset", 2, "offsetting is not built yet"},
+      {"render " + asset("cube.obj") + out + " --stage offset --offset 0", 2, "--offset expects a positive"},
       {"render " + asset("cube.obj") + out + " --fit --distance 3", 2, "cannot be combined"},
       {"render " + asset("cube.obj") + out + " --distance -1", 2, "--distance must be positive"},
       {"render " + asset("cube.obj") + out + " --target 1,2", 2, "--target expects X,Y,Z"},

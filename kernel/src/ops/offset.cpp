@@ -24,11 +24,23 @@ std::vector<Index> vertex_ranks(const Mesh& mesh, Index& count) {
   return rank;
 }
 
+// v+ and v- of each vertex that has faces, in vertex order.
+void write_offset_positions(const Mesh& mesh, const Normals& normals, double distance, std::span<Vec3> out) {
+  Index next = 0;
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    if (mesh.is_isolated_vertex(v)) continue;
+    const Vec3 shift = distance * normals.vertices[v];
+    out[next++] = mesh.position(v) + shift;
+    out[next++] = mesh.position(v) - shift;
+  }
+}
+
 // Builds the offset's arrays. Input vertex v on side `side` (0: v+, 1: v-) is output vertex
 // 2 rank(v) + side. The corner with sign s sits on side 0 in the positive copy when s = +1.
 class OffsetBuilder {
  public:
-  explicit OffsetBuilder(const Mesh& m) : m_(m), nf_(m.num_faces()), nc_(m.num_corners()), ne_(m.num_edges()) {
+  explicit OffsetBuilder(const Mesh& m)
+      : m_(m), nf_(m.num_faces()), nc_(m.num_corners()), ne_(m.num_edges()) {
     rank_ = vertex_ranks(m, nv_out_);
     // Border bookkeeping: each border edge's loop position (its quad) and each border vertex's loop
     // position (its side edge, joining v+ and v-).
@@ -47,7 +59,7 @@ class OffsetBuilder {
   Mesh build(const Normals& normals, double distance) {
     MeshArrays a;
     a.positions.resize(2 * size_t(nv_out_));
-    write_positions(normals, distance, a.positions);
+    write_offset_positions(m_, normals, distance, a.positions);
     faces(a);
     edges(a);
     fans(a);
@@ -59,15 +71,6 @@ class OffsetBuilder {
         for (Index e : m_.loop_edges(l)) a.face_colors.push_back(m_.face_colors()[m_.edge(e).faces[0]]);
     }
     return assemble_mesh(std::move(a));
-  }
-
-  void write_positions(const Normals& normals, double distance, std::span<Vec3> out) const {
-    for (Index v = 0; v < m_.num_vertices(); ++v) {
-      if (rank_[v] == no_index) continue;
-      const Vec3 shift = distance * normals.vertices[v];
-      out[2 * rank_[v]] = m_.position(v) + shift;
-      out[2 * rank_[v] + 1] = m_.position(v) - shift;
-    }
   }
 
  private:
@@ -147,7 +150,8 @@ class OffsetBuilder {
         minus.corners[1] = negative_corner_along_edge(in.corners[1]);
       }
       plus.is_sharp = minus.is_sharp = in.is_sharp;
-      for (Edge* out : {&plus, &minus}) a.corner_edges[out->corners[0]] = a.corner_edges[out->corners[1]] = Index(out - a.edges.data());
+      for (Edge* out : {&plus, &minus})
+        a.corner_edges[out->corners[0]] = a.corner_edges[out->corners[1]] = Index(out - a.edges.data());
     }
     // Side edges: the border quad of loop position j has a's side at corners 1 -> 2 and b's at 3 -> 0.
     for (Index l = 0; l < m_.num_boundary_loops(); ++l)
@@ -159,8 +163,11 @@ class OffsetBuilder {
           const Index corner = ribbon_corner(j, end == 0 ? 1 : 3);
           a.corner_edges[corner] = side_edge;
           Edge& out = a.edges[side_edge];
-          if (loop_of_vertex_[v] == j) {  // the loop starts this edge at v: this quad is the edge's first face
-            out.vertices = {a.corner_vertices[corner], a.corner_vertices[corner == ribbon_corner(j, 1) ? ribbon_corner(j, 2) : ribbon_corner(j, 0)]};
+          if (loop_of_vertex_[v] ==
+              j) {  // the loop starts this edge at v: this quad is the edge's first face
+            out.vertices = {
+                a.corner_vertices[corner],
+                a.corner_vertices[corner == ribbon_corner(j, 1) ? ribbon_corner(j, 2) : ribbon_corner(j, 0)]};
             out.corners[0] = corner;
           } else {
             out.corners[1] = corner;
@@ -238,20 +245,28 @@ class OffsetBuilder {
 }  // namespace
 
 Mesh offset(const Mesh& mesh, const OffsetOptions& options) {
+  return offset(mesh, compute_normals(mesh), options);
+}
+
+Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options) {
   check_distance("offset", options.distance);
-  const Mesh solid = OffsetBuilder(mesh).build(compute_normals(mesh), options.distance);
+  const Mesh solid = OffsetBuilder(mesh).build(normals, options.distance);
   if (options.subdivision_levels == 0) return solid;
   return subdivide(solid, {options.subdivision_levels, options.rule});
 }
 
 void offset_positions(const Mesh& mesh, double distance, std::span<Vec3> out) {
+  offset_positions(mesh, compute_normals(mesh), distance, out);
+}
+
+void offset_positions(const Mesh& mesh, const Normals& normals, double distance, std::span<Vec3> out) {
   check_distance("offset_positions", distance);
   Index count = 0;
   vertex_ranks(mesh, count);
   if (out.size() != 2 * size_t(count))
-    throw InvalidInputError("offset_positions: output holds " + std::to_string(out.size()) + " positions, the offset has " +
-                            std::to_string(2 * size_t(count)));
-  OffsetBuilder(mesh).write_positions(compute_normals(mesh), distance, out);
+    throw InvalidInputError("offset_positions: output holds " + std::to_string(out.size()) +
+                            " positions, the offset has " + std::to_string(2 * size_t(count)));
+  write_offset_positions(mesh, normals, distance, out);
 }
 
 }  // namespace nome

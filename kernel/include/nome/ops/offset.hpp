@@ -3,13 +3,14 @@
 #include <span>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/ops/normals.hpp"
 #include "nome/ops/subdivide.hpp"
 
 namespace nome {
 
 struct OffsetOptions {
-  double distance = 0.05;       // half the slab's thickness; must be positive and finite
-  int subdivision_levels = 0;   // Catmull-Clark levels after the offset, to round the rims
+  double distance = 0.05;      // half the slab's thickness; must be positive and finite
+  int subdivision_levels = 0;  // Catmull-Clark levels after the offset, to round the rims
   SubdivisionRule rule = SubdivisionRule::classic;
 };
 
@@ -24,8 +25,12 @@ struct OffsetOptions {
 // InvalidInputError when the distance is not positive and finite.
 Mesh offset(const Mesh& mesh, const OffsetOptions& options);
 
+// The same with the mesh's normals already computed (a caller that also wants their warnings).
+Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options);
+
 // The position pass alone: writes the positions offset(mesh, {distance}) would have into `out`
 // (2 per vertex that has faces), for a caller that keeps the topology and moves only the vertices.
 void offset_positions(const Mesh& mesh, double distance, std::span<Vec3> out);
+void offset_positions(const Mesh& mesh, const Normals& normals, double distance, std::span<Vec3> out);
 
 }  // namespace nome

@@ -1,0 +1,70 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "app/cli_support.hpp"
+
+using nome::test::run_nome;
+
+namespace {
+const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+}
+
+TEST_CASE("nome export --subdiv --offset turns a Möbius band into a closed torus-shaped STL", "[app]") {
+  const std::string dir = nome::test::scratch_dir("pipeline");
+  const auto r = run_nome("export " + assets + "mobius_band.obj --subdiv 3 --offset 0.05 -o " + dir + "/band.stl");
+  REQUIRE(r.status == 0);
+  const auto info = run_nome("info " + dir + "/band.stl --json");
+  CHECK(info.status == 0);
+  CHECK_THAT(info.out, Catch::Contains("\"chi\": 0, \"orientable\": true, \"borders\": 0, \"components\": 1"));
+  CHECK_THAT(info.out, Catch::Contains("\"mobius_edges\": 0"));
+  CHECK_THAT(info.out, Catch::Contains("\"genus\": 1"));
+}
+
+TEST_CASE("nome info reports the pipeline's result", "[app]") {
+  // The cube: 6 faces -> 24 -> 96 quads; both rules give the same topology.
+  for (const char* rule : {"classic", "report"}) {
+    const auto r = run_nome("info " + assets + "cube.obj --json --subdiv 2 --rule " + rule);
+    CHECK(r.status == 0);
+    CHECK_THAT(r.out, Catch::Contains("\"vertices\": 98, \"edges\": 192, \"faces\": 96, \"chi\": 2"));
+  }
+  // A disk thickens into a sphere; subdivision after keeps it one.
+  const auto disk = run_nome("info " + assets + "grid.obj --json --offset 0.1 --subdiv-after 1");
+  CHECK(disk.status == 0);
+  CHECK_THAT(disk.out, Catch::Contains("\"chi\": 2, \"orientable\": true, \"borders\": 0"));
+  // A Klein bottle thickens into a torus.
+  const auto klein = run_nome("info " + assets + "klein_bottle.obj --json --subdiv 1 --offset 0.02");
+  CHECK(klein.status == 0);
+  CHECK_THAT(klein.out, Catch::Contains("\"chi\": 0, \"orientable\": true, \"borders\": 0, \"components\": 1"));
+}
+
+TEST_CASE("pipeline options out of range are usage errors; oversized results need --force", "[app]") {
+  const std::string cube = assets + "cube.obj";
+  CHECK(run_nome("info " + cube + " --subdiv -1").status == 2);
+  CHECK(run_nome("info " + cube + " --subdiv many").status == 2);
+  CHECK(run_nome("info " + cube + " --rule loop").status == 2);
+  CHECK(run_nome("info " + cube + " --offset 0").status == 2);
+  CHECK(run_nome("info " + cube + " --offset -0.5").status == 2);
+  CHECK(run_nome("info " + cube + " --offset nan").status == 2);
+  CHECK(run_nome("info " + cube + " --subdiv-after 1").status == 2);
+  const std::string dir = nome::test::scratch_dir("budget");
+  const auto r = run_nome("export " + cube + " --subdiv 12 -o " + dir + "/huge.obj");
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("100663296 faces") && Catch::Contains("--force"));
+  CHECK_FALSE(std::filesystem::exists(dir + "/huge.obj"));
+  for (const char* cmd : {"info", "export"}) {
+    const auto help = run_nome(std::string(cmd) + " --help");
+    for (const char* option : {"--subdiv N", "--rule RULE", "--offset D", "--subdiv-after M", "--force"})
+      CHECK_THAT(help.out, Catch::Contains(option));
+  }
+}
+
+TEST_CASE("the offset warns about degenerate faces by name", "[app]") {
+  const std::string dir = nome::test::scratch_dir("degenerate");
+  std::ofstream(dir + "/flat.obj") << "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 0 0\nv 2 0 0\n"
+                                      "f 1 2 5 4\nf 2 3 6 5\n";
+  const auto r = run_nome("info " + dir + "/flat.obj --offset 0.1");
+  CHECK(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("nome: warning: offset: 1 degenerate faces") && Catch::Contains("f1"));
+}

@@ -1,0 +1,131 @@
+#include <catch2/catch.hpp>
+
+#include "nome/error.hpp"
+#include "nome/mesh/topology_report.hpp"
+#include "nome/ops/offset.hpp"
+#include "nome/ops/pipeline.hpp"
+#include "support/shapes.hpp"
+
+using namespace nome;
+
+namespace {
+
+PipelineOptions full_options() {
+  PipelineOptions o;
+  o.subdivision_levels = 2;
+  o.offset_distance = 0.04;
+  o.subdivision_after = 1;
+  return o;
+}
+
+Mesh moved(Mesh m, double amount) {
+  for (Vec3& p : m.positions()) p += Vec3(amount * p.y, 0.0, amount * p.x * p.x);
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("the pipeline composes subdivision, offset and subdivision after", "[kernel]") {
+  const Mesh band = build_mesh(test::mobius_band(12, 2));
+  Pipeline pipeline;
+  const Mesh& result = pipeline.run(band, full_options());
+  const Mesh expected = offset(subdivide(band, {2, SubdivisionRule::classic}), {0.04, 1, SubdivisionRule::classic});
+  CHECK(result.positions() == expected.positions());
+  CHECK(result.corner_vertices() == expected.corner_vertices());
+  const TopologyReport r = topology_report(result);
+  CHECK((r.chi == 0 && r.orientable && r.borders == 0 && r.components.size() == 1));
+  CHECK(pipeline.subdivision_work() == StageWork::rebuilt);
+  CHECK(pipeline.offset_work() == StageWork::rebuilt);
+  CHECK(pipeline.subdivision_after_work() == StageWork::rebuilt);
+}
+
+TEST_CASE("the pipeline redoes only what an input or option change invalidates", "[kernel]") {
+  const Mesh band = build_mesh(test::mobius_band(12, 2));
+  Pipeline pipeline;
+  PipelineOptions o = full_options();
+  pipeline.run(band, o);
+
+  pipeline.run(band, o);
+  CHECK(pipeline.subdivision_work() == StageWork::cached);
+  CHECK(pipeline.offset_work() == StageWork::cached);
+  CHECK(pipeline.subdivision_after_work() == StageWork::cached);
+
+  // A slider moved vertices: every stage re-runs its position pass only, and gets what a fresh
+  // pipeline gets, bit for bit.
+  const Mesh dragged = moved(band, 0.2);
+  const std::vector<Vec3> fast = pipeline.run(dragged, o).positions();
+  CHECK(pipeline.subdivision_work() == StageWork::positions);
+  CHECK(pipeline.offset_work() == StageWork::positions);
+  CHECK(pipeline.subdivision_after_work() == StageWork::positions);
+  CHECK(fast == Pipeline().run(dragged, o).positions());
+
+  o.offset_distance = 0.08;  // a thicker slab: the subdivision before the offset is kept
+  const std::vector<Vec3> thicker = pipeline.run(dragged, o).positions();
+  CHECK(pipeline.subdivision_work() == StageWork::cached);
+  CHECK(pipeline.offset_work() == StageWork::positions);
+  CHECK(pipeline.subdivision_after_work() == StageWork::positions);
+  CHECK(thicker == Pipeline().run(dragged, o).positions());
+
+  o.rule = SubdivisionRule::report;
+  pipeline.run(dragged, o);
+  CHECK(pipeline.subdivision_work() == StageWork::positions);
+  CHECK(pipeline.run(dragged, o).positions() == Pipeline().run(dragged, o).positions());
+
+  o.subdivision_levels = 1;
+  pipeline.run(dragged, o);
+  CHECK(pipeline.subdivision_work() == StageWork::rebuilt);
+  CHECK(pipeline.offset_work() == StageWork::rebuilt);
+
+  const Mesh other = build_mesh(test::mobius_band(10, 2));
+  const Mesh& result = pipeline.run(other, o);
+  CHECK(pipeline.subdivision_work() == StageWork::rebuilt);
+  CHECK(result.positions() == Pipeline().run(other, o).positions());
+
+  o.offset_distance = 0;
+  o.subdivision_after = 0;
+  CHECK(pipeline.run(other, o).num_faces() == other.num_corners());
+  CHECK(pipeline.offset_work() == StageWork::skipped);
+}
+
+TEST_CASE("the pipeline refuses a result over the memory budget unless forced", "[kernel]") {
+  const Mesh cube = build_mesh(test::cube());
+  PipelineOptions o;
+  o.subdivision_levels = 12;
+  const PipelineEstimate e = estimate_pipeline(cube, o);
+  CHECK(e.faces == 24.0 * (1 << 22));
+  CHECK_THROWS_AS(Pipeline().run(cube, o), BudgetError);
+  CHECK_THROWS_WITH(Pipeline().run(cube, o), Catch::Contains("100663296 faces") && Catch::Contains("GB"));
+  o.subdivision_levels = 2;
+  o.memory_budget = 1000;
+  CHECK_THROWS_AS(Pipeline().run(cube, o), BudgetError);
+  o.force = true;
+  CHECK(Pipeline().run(cube, o).num_faces() == 96);
+  // Offset and subdivision after are counted too: 2 * 96 faces, then 4 * 4 each.
+  o.offset_distance = 0.1;
+  o.subdivision_after = 1;
+  CHECK(estimate_pipeline(cube, o).faces == 2 * 96 * 4);
+  CHECK(Pipeline().run(cube, o).num_faces() == 2 * 96 * 4);
+}
+
+TEST_CASE("the pipeline checks its options and passes on the offset's warnings", "[kernel]") {
+  const Mesh cube = build_mesh(test::cube());
+  PipelineOptions o;
+  o.offset_distance = -1;
+  CHECK_THROWS_AS(Pipeline().run(cube, o), InvalidInputError);
+  o.offset_distance = 0;
+  o.subdivision_after = 1;
+  CHECK_THROWS_WITH(Pipeline().run(cube, o), Catch::Contains("needs an offset"));
+  o.subdivision_after = 0;
+  o.subdivision_levels = -1;
+  CHECK_THROWS_AS(Pipeline().run(cube, o), InvalidInputError);
+
+  PolygonSoup s = test::grid(2, 1);
+  s.positions[4] = s.positions[1];
+  s.positions[5] = s.positions[2];
+  Pipeline pipeline;
+  PipelineOptions thick;
+  thick.offset_distance = 0.1;
+  pipeline.run(build_mesh(s), thick);
+  REQUIRE(pipeline.warnings().size() == 1);
+  CHECK_THAT(pipeline.warnings()[0], Catch::StartsWith("offset: 1 degenerate faces") && Catch::Contains("f1"));
+}
