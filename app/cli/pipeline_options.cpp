@@ -11,7 +11,8 @@ namespace nome::cli {
 std::vector<OptionSpec> pipeline_option_specs() {
   return {
       {"--subdiv", "", "N", "Catmull-Clark subdivision levels (default 0)"},
-      {"--rule", "", "RULE", "smooth-vertex rule: classic (Catmull-Clark, default) or report (the 2016 report's)"},
+      {"--rule", "", "RULE",
+       "smooth-vertex rule: classic (Catmull-Clark, default) or report (the 2016 report's)"},
       {"--offset", "", "D", "thicken into a closed solid, D on each side of the surface (D > 0)"},
       {"--subdiv-after", "", "M", "Catmull-Clark levels after --offset, to round the rims (default 0)"},
       {"--force", "", "", "compute results whose estimated size exceeds the memory budget (4 GB)"},
@@ -32,7 +33,8 @@ PipelineOptions pipeline_options(const Arguments& args) {
   }
   if (args.has("--offset")) {
     o.offset_distance = args.double_value("--offset", 0.0);
-    if (o.offset_distance <= 0.0) throw UsageError("--offset expects a positive distance, found " + *args.value("--offset"));
+    if (o.offset_distance <= 0.0)
+      throw UsageError("--offset expects a positive distance, found " + *args.value("--offset"));
   }
   if (o.subdivision_after > 0 && !args.has("--offset")) throw UsageError("--subdiv-after needs --offset");
   o.force = args.has("--force");

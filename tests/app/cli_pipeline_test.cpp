@@ -13,11 +13,13 @@ const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
 
 TEST_CASE("nome export --subdiv --offset turns a Möbius band into a closed torus-shaped STL", "[app]") {
   const std::string dir = nome::test::scratch_dir("pipeline");
-  const auto r = run_nome("export " + assets + "mobius_band.obj --subdiv 3 --offset 0.05 -o " + dir + "/band.stl");
+  const auto r =
+      run_nome("export " + assets + "mobius_band.obj --subdiv 3 --offset 0.05 -o " + dir + "/band.stl");
   REQUIRE(r.status == 0);
   const auto info = run_nome("info " + dir + "/band.stl --json");
   CHECK(info.status == 0);
-  CHECK_THAT(info.out, Catch::Contains("\"chi\": 0, \"orientable\": true, \"borders\": 0, \"components\": 1"));
+  CHECK_THAT(info.out,
+             Catch::Contains("\"chi\": 0, \"orientable\": true, \"borders\": 0, \"components\": 1"));
   CHECK_THAT(info.out, Catch::Contains("\"mobius_edges\": 0"));
   CHECK_THAT(info.out, Catch::Contains("\"genus\": 1"));
 }
@@ -36,7 +38,8 @@ TEST_CASE("nome info reports the pipeline's result", "[app]") {
   // A Klein bottle thickens into a torus.
   const auto klein = run_nome("info " + assets + "klein_bottle.obj --json --subdiv 1 --offset 0.02");
   CHECK(klein.status == 0);
-  CHECK_THAT(klein.out, Catch::Contains("\"chi\": 0, \"orientable\": true, \"borders\": 0, \"components\": 1"));
+  CHECK_THAT(klein.out,
+             Catch::Contains("\"chi\": 0, \"orientable\": true, \"borders\": 0, \"components\": 1"));
 }
 
 TEST_CASE("pipeline options out of range are usage errors; oversized results need --force", "[app]") {

@@ -31,7 +31,8 @@ std::string gigabytes(double bytes) {
 void check_options(const PipelineOptions& o) {
   if (o.subdivision_levels < 0 || o.subdivision_levels > max_levels || o.subdivision_after < 0 ||
       o.subdivision_after > max_levels)
-    throw InvalidInputError("pipeline: subdivision levels must be between 0 and " + std::to_string(max_levels));
+    throw InvalidInputError("pipeline: subdivision levels must be between 0 and " +
+                            std::to_string(max_levels));
   if (o.offset_distance != 0.0 && !(o.offset_distance > 0.0 && std::isfinite(o.offset_distance)))
     throw InvalidInputError("pipeline: the offset distance must be positive and finite, got " +
                             std::to_string(o.offset_distance));
@@ -66,15 +67,16 @@ const Mesh& Pipeline::run(const Mesh& input, const PipelineOptions& o) {
   check_options(o);
   const PipelineEstimate estimate = estimate_pipeline(input, o);
   if (!o.force && estimate.bytes > double(o.memory_budget))
-    throw BudgetError("pipeline: the result would have about " + std::to_string(std::llround(estimate.faces)) +
-                      " faces and need about " + gigabytes(estimate.bytes) + ", over the budget of " +
+    throw BudgetError("pipeline: the result would have about " +
+                      std::to_string(std::llround(estimate.faces)) + " faces and need about " +
+                      gigabytes(estimate.bytes) + ", over the budget of " +
                       gigabytes(double(o.memory_budget)));
   warnings_.clear();
 
   // phase: what changed in the input since the last run.
   std::vector<Index> sharp = sharp_edges(input);
-  topology_changed_ = input.face_offsets() != input_face_offsets_ || input.corner_vertices() != input_corners_ ||
-                      sharp != input_sharp_;
+  topology_changed_ = input.face_offsets() != input_face_offsets_ ||
+                      input.corner_vertices() != input_corners_ || sharp != input_sharp_;
   positions_changed_ = topology_changed_ || input.positions() != input_positions_;
   const bool first_run = !last_options_;
   const PipelineOptions previous = last_options_.value_or(o);
@@ -130,13 +132,13 @@ Mesh Pipeline::take_result(const Mesh& input) {
 }
 
 Mesh& Pipeline::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int levels,
-                                      const PipelineOptions& o) {
+                                const PipelineOptions& o) {
   if (topology_changed_ || !stage.refinement || stage.levels != levels) {
-    stage.refinement.emplace(in, levels);
+    stage.refinement.emplace(in, levels, o.threads);
     stage.levels = levels;
     std::vector<Vec3> positions(stage.refinement->num_vertices());
     stage.refinement->refine_positions(in, o.rule, positions, o.threads);
-    stage.result = stage.refinement->mesh(in, std::move(positions));
+    stage.result = stage.refinement->mesh(in, std::move(positions), o.threads);
     stage.work = StageWork::rebuilt;
     topology_changed_ = positions_changed_ = true;
   } else if (positions_changed_) {

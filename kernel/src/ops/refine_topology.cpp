@@ -32,8 +32,6 @@ void child_corners(const Parent& p, Level& child, bool full, int threads) {
       qe[1] = 2 * ne + c;
       qe[2] = 2 * ne + pc;
       qe[3] = half_edge_child(p, in, v);
-      child.corner_signs[4 * size_t(c)] = static_cast<signed char>(p.corner_sign(c));
-      child.corner_signs[4 * size_t(c) + 2] = 1;
     }
   });
 }
@@ -43,14 +41,11 @@ void child_corners(const Parent& p, Level& child, bool full, int threads) {
 // its leaving edge to the face point, never Möbius, never sharp.
 template <class Parent>
 void child_edges(const Parent& p, Level& child, int threads) {
-  const Index nf = p.num_faces(), ne = p.num_edges();
+  const Index ne = p.num_edges();
   parallel_for(ne, threads, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e) {
-      const auto [v0, v1] = p.edge_ends(e);
       const Index ca = p.edge_corner(e, 0), cb = p.edge_corner(e, 1), na = p.next_corner(ca);
       const std::uint8_t flags = (p.is_mobius(e) ? mobius_flag : 0) | (p.is_sharp(e) ? sharp_flag : 0);
-      child.edge_vertices[2 * e] = {nf + ne + v0, nf + e};
-      child.edge_vertices[2 * e + 1] = {nf + e, nf + ne + v1};
       child.edge_flags[2 * e] = child.edge_flags[2 * e + 1] = flags;
       if (cb == no_index) {
         child.edge_corners[2 * e] = {4 * ca, no_index};
@@ -66,7 +61,6 @@ void child_edges(const Parent& p, Level& child, int threads) {
   });
   parallel_for(p.num_corners(), threads, [&](Index begin, Index end) {
     for (Index c = begin; c < end; ++c) {
-      child.edge_vertices[2 * ne + c] = {nf + p.corner_edge(c), p.corner_face(c)};
       child.edge_corners[2 * ne + c] = {4 * c + 1, 4 * p.next_corner(c) + 2};
       child.edge_flags[2 * ne + c] = 0;
     }
@@ -96,7 +90,7 @@ void child_fan_offsets(const Parent& p, Level& child) {
   }
 }
 
-// The fans themselves, in order, with the corner signs of the edge points' corners (see Mesh).
+// The fans themselves, in order (see Mesh).
 template <class Parent>
 void child_fans(const Parent& p, Level& child, int threads) {
   const Index nf = p.num_faces(), ne = p.num_edges();
@@ -107,10 +101,9 @@ void child_fans(const Parent& p, Level& child, int threads) {
   Index* fe = child.fan_edges.data();
   const Index* co = child.fan_corner_offsets.data();
   const Index* eo = child.fan_edge_offsets.data();
-  signed char* sign = child.corner_signs.data();
 
   // Face point: child quads of corners c0..c(n-1) in face order; edge i (2E + c(i-1)) lies between
-  // quads i-1 and i. No Möbius edges inside a face: every sign is +1.
+  // quads i-1 and i.
   parallel_for(nf, threads, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f) {
       const Index b = p.face_begin(f), n = p.face_end(f) - b;
@@ -121,7 +114,7 @@ void child_fans(const Parent& p, Level& child, int threads) {
     }
   });
   // Edge point: half 2e, quad of face a at v0, interior edge of face a, quad of face a at v1, half 2e+1,
-  // then face b's two quads around its interior edge; across a Möbius half the sign flips.
+  // then face b's two quads around its interior edge.
   parallel_for(ne, threads, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e) {
       const Index ca = p.edge_corner(e, 0), cb = p.edge_corner(e, 1), na = p.next_corner(ca);
@@ -129,7 +122,6 @@ void child_fans(const Parent& p, Level& child, int threads) {
       Index* edges = fe + eo[nf + e];
       corners[0] = 4 * ca + 1;
       corners[1] = 4 * na + 3;
-      sign[corners[0]] = sign[corners[1]] = 1;
       edges[0] = 2 * e;
       edges[1] = 2 * ne + ca;
       edges[2] = 2 * e + 1;
@@ -138,7 +130,6 @@ void child_fans(const Parent& p, Level& child, int threads) {
       const bool mobius = p.is_mobius(e);
       corners[2] = mobius ? 4 * nb + 3 : 4 * cb + 1;
       corners[3] = mobius ? 4 * cb + 1 : 4 * nb + 3;
-      sign[corners[2]] = sign[corners[3]] = mobius ? -1 : 1;
       edges[3] = 2 * ne + cb;
     }
   });
@@ -164,16 +155,13 @@ void refine_topology(const Parent& p, Level& child, bool full, int threads) {
   child.vertex_count = p.num_faces() + p.num_edges() + p.num_vertices();
   child.corner_vertices.resize(4 * nc);
   child.corner_edges.resize(full ? 4 * nc : 0);
-  child.corner_signs.resize(full ? 4 * nc : 0);
   child_corners(p, child, full, threads);
   if (!full) {
-    child.edge_vertices = {};
     child.edge_corners = {};
     child.edge_flags = {};
     child.fan_corner_offsets = child.fan_corners = child.fan_edge_offsets = child.fan_edges = {};
     return;
   }
-  child.edge_vertices.resize(ne);
   child.edge_corners.resize(ne);
   child.edge_flags.resize(ne);
   child_edges(p, child, threads);

@@ -21,15 +21,15 @@ struct Refinement::Level {
   Index num_vertices() const { return vertex_count; }
   std::vector<Index> corner_vertices;  // 4 per face
   std::vector<Index> corner_edges;
-  std::vector<signed char> corner_signs;
-  std::vector<std::array<Index, 2>> edge_vertices;  // in the direction of the first face
-  std::vector<std::array<Index, 2>> edge_corners;   // [1] is no_index on a border edge
+  // An edge's end vertices are those of its first corner and the next one (no array of their own: the
+  // memory of the level before the last bounds the peak). Corner signs are left to Refinement::mesh().
+  std::vector<std::array<Index, 2>> edge_corners;  // [1] is no_index on a border edge
   std::vector<std::uint8_t> edge_flags;
   std::vector<Index> fan_corner_offsets, fan_corners, fan_edge_offsets, fan_edges;
 
   Index num_faces() const { return Index(corner_vertices.size() / 4); }
   Index num_corners() const { return Index(corner_vertices.size()); }
-  Index num_edges() const { return Index(edge_vertices.size()); }
+  Index num_edges() const { return Index(edge_corners.size()); }
   Index face_begin(Index f) const { return 4 * f; }
   Index face_end(Index f) const { return 4 * f + 4; }
   Index corner_face(Index c) const { return c >> 2; }
@@ -37,8 +37,10 @@ struct Refinement::Level {
   Index prev_corner(Index c) const { return (c & ~Index(3)) | ((c + 3) & 3); }
   Index corner_vertex(Index c) const { return corner_vertices[c]; }
   Index corner_edge(Index c) const { return corner_edges[c]; }
-  int corner_sign(Index c) const { return corner_signs[c]; }
-  const std::array<Index, 2>& edge_ends(Index e) const { return edge_vertices[e]; }
+  std::array<Index, 2> edge_ends(Index e) const {
+    const Index c = edge_corners[e][0];
+    return {corner_vertices[c], corner_vertices[next_corner(c)]};
+  }
   Index edge_corner(Index e, int side) const { return edge_corners[e][side]; }
   bool is_mobius(Index e) const { return edge_flags[e] & mobius_flag; }
   bool is_sharp(Index e) const { return edge_flags[e] & sharp_flag; }
@@ -66,8 +68,7 @@ class MeshLevelView {
   Index prev_corner(Index c) const { return m_.prev_corner(c); }
   Index corner_vertex(Index c) const { return m_.corner_vertex(c); }
   Index corner_edge(Index c) const { return m_.corner_edge(c); }
-  int corner_sign(Index c) const { return m_.corner_sign(c); }
-  const std::array<Index, 2>& edge_ends(Index e) const { return m_.edge(e).vertices; }
+  std::array<Index, 2> edge_ends(Index e) const { return m_.edge(e).vertices; }
   Index edge_corner(Index e, int side) const { return m_.edge(e).corners[side]; }
   bool is_mobius(Index e) const { return m_.edge(e).is_mobius; }
   bool is_sharp(Index e) const { return m_.edge(e).is_sharp; }

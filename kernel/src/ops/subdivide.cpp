@@ -17,7 +17,7 @@ std::vector<Index> sharp_edges(const Mesh& mesh) {
 
 }  // namespace
 
-Refinement::Refinement(const Mesh& base, int levels)
+Refinement::Refinement(const Mesh& base, int levels, int threads)
     : base_vertices_(base.num_vertices()),
       base_faces_(base.num_faces()),
       base_corners_(base.num_corners()),
@@ -30,9 +30,9 @@ Refinement::Refinement(const Mesh& base, int levels)
   for (int k = 0; k < levels; ++k) {
     const bool full = k + 1 < levels;
     if (k == 0)
-      refine_topology(MeshLevelView(base), levels_[0], full, 1);
+      refine_topology(MeshLevelView(base), levels_[0], full, threads);
     else
-      refine_topology(levels_[k - 1], levels_[k], full, 1);
+      refine_topology(levels_[k - 1], levels_[k], full, threads);
   }
 }
 
@@ -80,32 +80,42 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
   }
 }
 
-Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions) const {
+Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads) const {
   if (!fits(base)) throw InvalidInputError("Refinement::mesh: the base mesh's topology changed");
   if (positions.size() != num_vertices())
     throw InvalidInputError("Refinement::mesh: expected " + std::to_string(num_vertices()) + " positions");
   Level last;
   if (levels_.size() == 1)
-    refine_topology(MeshLevelView(base), last, true, 1);
+    refine_topology(MeshLevelView(base), last, true, threads);
   else
-    refine_topology(levels_[levels_.size() - 2], last, true, 1);
+    refine_topology(levels_[levels_.size() - 2], last, true, threads);
 
   MeshArrays a;
   const Index nf = last.num_faces();
   a.positions = std::move(positions);
   a.face_offsets.resize(size_t(nf) + 1);
   for (Index f = 0; f <= nf; ++f) a.face_offsets[f] = 4 * f;
-  a.corner_vertices = std::move(last.corner_vertices);
-  a.corner_edges = std::move(last.corner_edges);
-  a.corner_signs = std::move(last.corner_signs);
   a.edges.resize(last.num_edges());
   for (Index e = 0; e < last.num_edges(); ++e) {
     Edge& edge = a.edges[e];
-    edge.vertices = last.edge_vertices[e];
+    edge.vertices = last.edge_ends(e);
     edge.corners = last.edge_corners[e];
     edge.faces = {edge.corners[0] >> 2, edge.corners[1] == no_index ? no_index : edge.corners[1] >> 2};
     edge.is_mobius = last.edge_flags[e] & mobius_flag;
     edge.is_sharp = last.edge_flags[e] & sharp_flag;
+  }
+  a.corner_vertices = std::move(last.corner_vertices);
+  a.corner_edges = std::move(last.corner_edges);
+  // Corner signs: +1 at the first corner of each fan, flipped across every Möbius edge after it.
+  a.corner_signs.resize(a.corner_vertices.size());
+  for (Index v = 0; v < last.num_vertices(); ++v) {
+    const auto corners = last.vertex_corners(v);
+    const auto edges = last.vertex_edges(v);
+    signed char sign = 1;
+    for (size_t i = 0; i < corners.size(); ++i) {
+      if (i > 0 && (last.edge_flags[edges[i]] & mobius_flag)) sign = static_cast<signed char>(-sign);
+      a.corner_signs[corners[i]] = sign;
+    }
   }
   a.fan_corner_offsets = std::move(last.fan_corner_offsets);
   a.fan_corners = std::move(last.fan_corners);

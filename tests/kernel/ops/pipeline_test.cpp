@@ -29,7 +29,8 @@ TEST_CASE("the pipeline composes subdivision, offset and subdivision after", "[k
   const Mesh band = build_mesh(test::mobius_band(12, 2));
   Pipeline pipeline;
   const Mesh& result = pipeline.run(band, full_options());
-  const Mesh expected = offset(subdivide(band, {2, SubdivisionRule::classic}), {0.04, 1, SubdivisionRule::classic});
+  const Mesh expected =
+      offset(subdivide(band, {2, SubdivisionRule::classic}), {0.04, 1, SubdivisionRule::classic});
   CHECK(result.positions() == expected.positions());
   CHECK(result.corner_vertices() == expected.corner_vertices());
   const TopologyReport r = topology_report(result);
@@ -127,5 +128,6 @@ TEST_CASE("the pipeline checks its options and passes on the offset's warnings",
   thick.offset_distance = 0.1;
   pipeline.run(build_mesh(s), thick);
   REQUIRE(pipeline.warnings().size() == 1);
-  CHECK_THAT(pipeline.warnings()[0], Catch::StartsWith("offset: 1 degenerate faces") && Catch::Contains("f1"));
+  CHECK_THAT(pipeline.warnings()[0],
+             Catch::StartsWith("offset: 1 degenerate faces") && Catch::Contains("f1"));
 }

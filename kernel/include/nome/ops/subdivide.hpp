@@ -35,8 +35,8 @@ Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options);
 // asked for, which builds its edges and fans the same way.
 class Refinement {
  public:
-  // The topology pass. Throws InvalidInputError unless levels >= 1.
-  Refinement(const Mesh& base, int levels);
+  // The topology pass, on up to `threads` threads. Throws InvalidInputError unless levels >= 1.
+  Refinement(const Mesh& base, int levels, int threads = 1);
   Refinement(Refinement&&) noexcept;
   Refinement& operator=(Refinement&&) noexcept;
   ~Refinement();
@@ -56,7 +56,7 @@ class Refinement {
 
   // The last level as a full Mesh with the given positions (from refine_positions), built from the
   // level before it without any search; faces keep the colours and components of their ancestors.
-  Mesh mesh(const Mesh& base, std::vector<Vec3> positions) const;
+  Mesh mesh(const Mesh& base, std::vector<Vec3> positions, int threads = 1) const;
 
   struct Level;
 

@@ -1,0 +1,146 @@
+// Catmull-Clark, position-only re-evaluation and offset, timed on this machine (issue 3's cases), with
+// OpenMesh's CatmullClarkT on the same input in the same run when it is installed.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
+#include "memory_counter.hpp"
+#include "nome/ops/offset.hpp"
+#include "nome/ops/subdivide.hpp"
+#include "support/shapes.hpp"
+
+#ifdef NOME_HAVE_OPENMESH
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
+#endif
+
+using namespace nome;
+
+namespace {
+
+// Best wall time of `runs` calls, in milliseconds.
+double best_ms(int runs, const std::function<void()>& work) {
+  double best = 1e300;
+  for (int i = 0; i < runs; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  return best;
+}
+
+struct Refined {
+  Refinement refinement;
+  std::vector<Vec3> positions;
+};
+
+// A full refine: the topology pass and the position pass, the last level without adjacency.
+Refined refine(const Mesh& base, int levels, int threads) {
+  Refined r{Refinement(base, levels, threads), {}};
+  r.positions.resize(r.refinement.num_vertices());
+  r.refinement.refine_positions(base, SubdivisionRule::classic, r.positions, threads);
+  return r;
+}
+
+#ifdef NOME_HAVE_OPENMESH
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using OmMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
+
+OmMesh to_openmesh(const Mesh& m) {
+  OmMesh om;
+  std::vector<OmMesh::VertexHandle> handles;
+  for (const Vec3& p : m.positions()) handles.push_back(om.add_vertex(OmMesh::Point(p.x, p.y, p.z)));
+  for (Index f = 0; f < m.num_faces(); ++f) {
+    std::vector<OmMesh::VertexHandle> face;
+    for (Index v : m.face_vertices(f)) face.push_back(handles[v]);
+    om.add_face(face);
+  }
+  return om;
+}
+#endif
+
+void torus_levels(int threads_available) {
+  const Mesh torus = build_mesh(test::torus(64, 32));
+  std::printf("64x32 quad torus, classic rule; full refine = topology pass + position pass, last level\n"
+              "without edges/fans; best of several runs\n\n");
+  std::printf("%5s %10s %10s %12s %9s %10s %12s %9s\n", "level", "faces", "ms (1 thr)", "Mfaces/s", "B/face",
+              "ms (2 thr)", "speed-up", "OpenMesh");
+  for (int level = 1; level <= 6; ++level) {
+    const int runs = level <= 4 ? 10 : 3;
+    double faces = 0;
+    bench::reset_peak();
+    const double one = best_ms(runs, [&] { faces = refine(torus, level, 1).refinement.num_faces(); });
+    const double peak = double(bench::peak_bytes_since_reset());
+    const double two = threads_available > 1 ? best_ms(runs, [&] { refine(torus, level, 2); }) : one;
+    std::printf("%5d %10.0f %10.2f %12.1f %9.1f %10.2f %11.2fx", level, faces, one, faces / one / 1e3, peak / faces,
+                two, one / two);
+#ifdef NOME_HAVE_OPENMESH
+    const double om_ms = best_ms(level <= 4 ? 3 : 1, [&] {
+      OmMesh om = to_openmesh(torus);
+      OpenMesh::Subdivider::Uniform::CatmullClarkT<OmMesh> cc;
+      cc.attach(om);
+      cc(size_t(level));
+      cc.detach();
+    });
+    std::printf(" %7.1fx", om_ms / one);
+#endif
+    std::printf("\n");
+  }
+#ifdef NOME_HAVE_OPENMESH
+  std::printf("(OpenMesh column: OpenMesh CatmullClarkT time / ours single-threaded, same input, same run)\n");
+#endif
+}
+
+void mobius(int threads_available) {
+  const Mesh band = build_mesh(test::mobius_band(256, 8));
+  double faces = 0;
+  const double one = best_ms(5, [&] { faces = refine(band, 4, 1).refinement.num_faces(); });
+  const double two = threads_available > 1 ? best_ms(5, [&] { refine(band, 4, 2); }) : one;
+  std::printf("\nMöbius band 256x8, level 4: %.0f faces, %.2f ms (%.1f Mfaces/s), 2 threads %.2f ms\n", faces, one,
+              faces / one / 1e3, two);
+}
+
+void position_only(int threads_available) {
+  const Mesh torus = build_mesh(test::torus(64, 32));
+  Refined r = refine(torus, 4, 1);
+  Mesh moved = torus;
+  for (Vec3& p : moved.positions()) p *= 1.01;
+  const double full = best_ms(10, [&] { refine(moved, 4, 1); });
+  const double fast =
+      best_ms(20, [&] { r.refinement.refine_positions(moved, SubdivisionRule::classic, r.positions, 1); });
+  const double fast2 = threads_available > 1 ? best_ms(20, [&] {
+    r.refinement.refine_positions(moved, SubdivisionRule::classic, r.positions, 2);
+  })
+                                             : fast;
+  std::printf("\nlevel-4 torus (%u faces): full refine %.2f ms, position pass only %.2f ms (%.1fx faster);"
+              " 2 threads %.2f ms\n",
+              r.refinement.num_faces(), full, fast, full / fast, fast2);
+}
+
+void offset_case() {
+  const Mesh torus = build_mesh(test::torus(64, 32));
+  Refined r = refine(torus, 5, 1);
+  const Mesh level5 = r.refinement.mesh(torus, r.positions);
+  double faces = 0;
+  const double ms = best_ms(3, [&] { faces = offset(level5, {0.01}).num_faces(); });
+  Mesh solid = offset(level5, {0.01});
+  const double positions_ms = best_ms(5, [&] { offset_positions(level5, 0.011, solid.positions()); });
+  std::printf("\noffset of the level-5 torus (%u faces -> %.0f faces): %.1f ms; position pass only %.1f ms\n",
+              level5.num_faces(), faces, ms, positions_ms);
+}
+
+}  // namespace
+
+int main() {
+  const int threads = 2;
+  torus_levels(threads);
+  mobius(threads);
+  position_only(threads);
+  offset_case();
+  return 0;
+}
