@@ -26,7 +26,8 @@ double best_ms(int runs, const std::function<void()>& work) {
   for (int i = 0; i < runs; ++i) {
     const auto start = std::chrono::steady_clock::now();
     work();
-    best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    best = std::min(
+        best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }
   return best;
 }
@@ -66,8 +67,9 @@ OmMesh to_openmesh(const Mesh& m) {
 
 void torus_levels(int threads_available) {
   const Mesh torus = build_mesh(test::torus(64, 32));
-  std::printf("64x32 quad torus, classic rule; full refine = topology pass + position pass, last level\n"
-              "without edges/fans; best of several runs\n\n");
+  std::printf(
+      "64x32 quad torus, classic rule; full refine = topology pass + position pass, last level\n"
+      "without edges/fans; best of several runs\n\n");
   std::printf("%5s %10s %10s %12s %9s %10s %12s %9s\n", "level", "faces", "ms (1 thr)", "Mfaces/s", "B/face",
               "ms (2 thr)", "speed-up", "OpenMesh");
   for (int level = 1; level <= 6; ++level) {
@@ -77,8 +79,8 @@ void torus_levels(int threads_available) {
     const double one = best_ms(runs, [&] { faces = refine(torus, level, 1).refinement.num_faces(); });
     const double peak = double(bench::peak_bytes_since_reset());
     const double two = threads_available > 1 ? best_ms(runs, [&] { refine(torus, level, 2); }) : one;
-    std::printf("%5d %10.0f %10.2f %12.1f %9.1f %10.2f %11.2fx", level, faces, one, faces / one / 1e3, peak / faces,
-                two, one / two);
+    std::printf("%5d %10.0f %10.2f %12.1f %9.1f %10.2f %11.2fx", level, faces, one, faces / one / 1e3,
+                peak / faces, two, one / two);
 #ifdef NOME_HAVE_OPENMESH
     const double om_ms = best_ms(level <= 4 ? 3 : 1, [&] {
       OmMesh om = to_openmesh(torus);
@@ -92,7 +94,8 @@ void torus_levels(int threads_available) {
     std::printf("\n");
   }
 #ifdef NOME_HAVE_OPENMESH
-  std::printf("(OpenMesh column: OpenMesh CatmullClarkT time / ours single-threaded, same input, same run)\n");
+  std::printf(
+      "(OpenMesh column: OpenMesh CatmullClarkT time / ours single-threaded, same input, same run)\n");
 #endif
 }
 
@@ -101,8 +104,8 @@ void mobius(int threads_available) {
   double faces = 0;
   const double one = best_ms(5, [&] { faces = refine(band, 4, 1).refinement.num_faces(); });
   const double two = threads_available > 1 ? best_ms(5, [&] { refine(band, 4, 2); }) : one;
-  std::printf("\nMöbius band 256x8, level 4: %.0f faces, %.2f ms (%.1f Mfaces/s), 2 threads %.2f ms\n", faces, one,
-              faces / one / 1e3, two);
+  std::printf("\nMöbius band 256x8, level 4: %.0f faces, %.2f ms (%.1f Mfaces/s), 2 threads %.2f ms\n", faces,
+              one, faces / one / 1e3, two);
 }
 
 void position_only(int threads_available) {
@@ -113,13 +116,15 @@ void position_only(int threads_available) {
   const double full = best_ms(10, [&] { refine(moved, 4, 1); });
   const double fast =
       best_ms(20, [&] { r.refinement.refine_positions(moved, SubdivisionRule::classic, r.positions, 1); });
-  const double fast2 = threads_available > 1 ? best_ms(20, [&] {
-    r.refinement.refine_positions(moved, SubdivisionRule::classic, r.positions, 2);
-  })
-                                             : fast;
-  std::printf("\nlevel-4 torus (%u faces): full refine %.2f ms, position pass only %.2f ms (%.1fx faster);"
-              " 2 threads %.2f ms\n",
-              r.refinement.num_faces(), full, fast, full / fast, fast2);
+  const double fast2 =
+      threads_available > 1
+          ? best_ms(20,
+                    [&] { r.refinement.refine_positions(moved, SubdivisionRule::classic, r.positions, 2); })
+          : fast;
+  std::printf(
+      "\nlevel-4 torus (%u faces): full refine %.2f ms, position pass only %.2f ms (%.1fx faster);"
+      " 2 threads %.2f ms\n",
+      r.refinement.num_faces(), full, fast, full / fast, fast2);
 }
 
 void offset_case() {
