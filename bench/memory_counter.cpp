@@ -10,14 +10,18 @@ std::atomic<std::size_t> live{0}, peak{0}, base{0};
 // Each block carries its size in a header of one max_align_t, so that delete knows what it frees.
 constexpr std::size_t header = alignof(std::max_align_t);
 
-void* allocate(std::size_t size) {
-  void* raw = std::malloc(size + header);
-  if (!raw) return nullptr;
-  *static_cast<std::size_t*>(raw) = size;
+void count(std::size_t size) {
   const std::size_t now = live.fetch_add(size) + size;
   std::size_t seen = peak.load();
   while (now > seen && !peak.compare_exchange_weak(seen, now)) {
   }
+}
+
+void* allocate(std::size_t size) {
+  void* raw = std::malloc(size + header);
+  if (!raw) return nullptr;
+  *static_cast<std::size_t*>(raw) = size;
+  count(size);
   return static_cast<char*>(raw) + header;
 }
 
@@ -60,6 +64,23 @@ void operator delete(void* p, const std::nothrow_t&) noexcept {
 }
 void operator delete[](void* p, const std::nothrow_t&) noexcept {
   release(p);
+}
+
+// Over-aligned blocks (huge-page buffers) are counted through the sized delete, which is the only one
+// the kernel's allocator calls for them.
+void* operator new(std::size_t size, std::align_val_t align) {
+  const std::size_t a = std::size_t(align);
+  void* p = std::aligned_alloc(a, (size + a - 1) / a * a);
+  if (!p) throw std::bad_alloc();
+  count(size);
+  return p;
+}
+void operator delete(void* p, std::size_t size, std::align_val_t) noexcept {
+  live.fetch_sub(size);
+  std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+  std::free(p);
 }
 
 namespace nome::bench {

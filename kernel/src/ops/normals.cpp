@@ -9,10 +9,11 @@ namespace nome {
 Vec3 face_area_normal(const Mesh& mesh, Index f) {
   const auto vs = mesh.face_vertices(f);
   Vec3 n(0.0);
-  for (size_t i = 0; i < vs.size(); ++i) {
-    const Vec3& a = mesh.position(vs[i]);
-    const Vec3& b = mesh.position(vs[(i + 1) % vs.size()]);
-    n += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  const Vec3* a = &mesh.position(vs.back());
+  for (Index v : vs) {
+    const Vec3& b = mesh.position(v);
+    n += Vec3((a->y - b.y) * (a->z + b.z), (a->z - b.z) * (a->x + b.x), (a->x - b.x) * (a->y + b.y));
+    a = &b;
   }
   return n;
 }
@@ -23,12 +24,16 @@ Normals compute_normals(const Mesh& mesh) {
   for (Index f = 0; f < mesh.num_faces(); ++f) {
     const Vec3 n = face_area_normal(mesh, f);
     const double len = glm::length(n);
-    // Relative threshold: area against the squared size of the face's bounding extent.
-    double extent = 0.0;
+    // Relative threshold: area against the squared length of the face's longest side.
+    double extent_squared = 0.0;
     const auto vs = mesh.face_vertices(f);
-    for (size_t i = 0; i < vs.size(); ++i)
-      extent = std::max(extent, glm::length(mesh.position(vs[i]) - mesh.position(vs[(i + 1) % vs.size()])));
-    if (!(len > 1e-14 * extent * extent) || extent == 0.0) {
+    const Vec3* a = &mesh.position(vs.back());
+    for (Index v : vs) {
+      const Vec3 side = mesh.position(v) - *a;
+      extent_squared = std::max(extent_squared, glm::dot(side, side));
+      a = &mesh.position(v);
+    }
+    if (!(len > 1e-14 * extent_squared) || extent_squared == 0.0) {
       out.faces[f] = Vec3(0.0);
       out.degenerate_faces.push_back(f);
     } else {

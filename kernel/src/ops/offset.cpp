@@ -70,6 +70,7 @@ class OffsetBuilder {
       for (Index l = 0; l < m_.num_boundary_loops(); ++l)
         for (Index e : m_.loop_edges(l)) a.face_colors.push_back(m_.face_colors()[m_.edge(e).faces[0]]);
     }
+    components(a);
     return assemble_mesh(std::move(a));
   }
 
@@ -177,6 +178,55 @@ class OffsetBuilder {
     for (Edge& e : a.edges) e.faces = {face_of(e.corners[0]), face_of(e.corners[1])};
   }
 
+  // Components without a walk over the (twice as large) output: orient each input component face by
+  // face across its edges (flipping at Möbius edges). A closed component that orients consistently has a
+  // double cover in two pieces, the copies on each side; any other gives one piece.
+  void components(MeshArrays& a) const {
+    std::vector<signed char> side(nf_, 0);
+    std::vector<Index> queue;
+    std::vector<Index> first_output(m_.num_components(), no_index);
+    std::vector<char> splits(m_.num_components(), 1);
+    for (Index l = 0; l < m_.num_boundary_loops(); ++l)
+      splits[m_.face_component(m_.edge(m_.loop_edges(l).front()).faces[0])] = 0;
+    queue.reserve(nf_);
+    for (Index f0 = 0; f0 < nf_; ++f0) {
+      if (side[f0] != 0) continue;
+      const Index component = m_.face_component(f0);
+      side[f0] = 1;
+      queue.assign(1, f0);
+      for (size_t q = 0; q < queue.size(); ++q) {
+        const Index f = queue[q];
+        for (Index e : m_.face_edges(f)) {
+          const Edge& edge = m_.edge(e);
+          const Index g = edge.other_face(f);
+          if (g == no_index) continue;
+          const signed char expected = static_cast<signed char>(edge.is_mobius ? -side[f] : side[f]);
+          if (side[g] == 0) {
+            side[g] = expected;
+            queue.push_back(g);
+          } else if (side[g] != expected) {
+            splits[component] = 0;
+          }
+        }
+      }
+    }
+    a.num_components = 0;
+    for (Index k = 0; k < m_.num_components(); ++k) {
+      first_output[k] = a.num_components;
+      a.num_components += splits[k] ? 2 : 1;
+    }
+    a.face_components.resize(2 * size_t(nf_) + num_border_);
+    for (Index f = 0; f < nf_; ++f) {
+      const Index k = m_.face_component(f);
+      const Index other = splits[k] ? 1 : 0;
+      a.face_components[f] = first_output[k] + (side[f] > 0 ? 0 : other);
+      a.face_components[nf_ + f] = first_output[k] + (side[f] > 0 ? other : 0);
+    }
+    for (Index l = 0; l < m_.num_boundary_loops(); ++l)
+      for (Index e : m_.loop_edges(l))
+        a.face_components[2 * nf_ + loop_of_edge_[e]] = first_output[m_.face_component(m_.edge(e).faces[0])];
+  }
+
   Index face_of(Index c) const {
     if (c < nc_) return m_.corner_face(c);
     if (c < 2 * nc_) return nf_ + m_.corner_face(c - nc_);
@@ -250,7 +300,7 @@ Mesh offset(const Mesh& mesh, const OffsetOptions& options) {
 
 Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options) {
   check_distance("offset", options.distance);
-  const Mesh solid = OffsetBuilder(mesh).build(normals, options.distance);
+  Mesh solid = OffsetBuilder(mesh).build(normals, options.distance);
   if (options.subdivision_levels == 0) return solid;
   return subdivide(solid, {options.subdivision_levels, options.rule});
 }

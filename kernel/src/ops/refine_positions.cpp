@@ -22,7 +22,7 @@ void refine_positions(const Parent& p, std::span<const Vec3> in, SubdivisionRule
     for (Index e = begin; e < end; ++e) {
       const auto& ends = p.edge_ends(e);
       const Vec3 sum = in[ends[0]] + in[ends[1]];
-      if (p.is_boundary(e) || p.is_sharp(e)) {
+      if (p.is_crease(e)) {
         out[nf + e] = sum * 0.5;
       } else {
         const Index fa = p.corner_face(p.edge_corner(e, 0)), fb = p.corner_face(p.edge_corner(e, 1));
@@ -36,25 +36,28 @@ void refine_positions(const Parent& p, std::span<const Vec3> in, SubdivisionRule
       Vec3& result = out[nf + ne + v];
       const auto edges = p.vertex_edges(v);
       Index sharp_count = 0;
-      Vec3 sharp_sum(0.0);
-      for (Index e : edges) {
-        if (!p.is_boundary(e) && !p.is_sharp(e)) continue;
-        ++sharp_count;
-        const auto& ends = p.edge_ends(e);
-        sharp_sum += in[ends[0] == v ? ends[1] : ends[0]];
-      }
+      for (Index e : edges) sharp_count += p.is_crease(e) ? 1 : 0;
       if (sharp_count >= 3 || edges.empty()) {  // corner (or isolated vertex)
         result = here;
       } else if (sharp_count == 2) {  // crease: (6v + a + b) / 8
+        Vec3 sharp_sum(0.0);
+        for (Index e : edges) {
+          if (!p.is_crease(e)) continue;
+          const auto ends = p.edge_ends(e);
+          sharp_sum += in[ends[0] == v ? ends[1] : ends[0]];
+        }
         result = (6.0 * here + sharp_sum) * 0.125;
       } else {
+        // An interior vertex: each neighbour is next to two of its corners, one in each face of the
+        // edge between them (whichever way the faces run), so the corners give twice the neighbour sum.
         Vec3 face_sum(0.0), edge_sum(0.0);
-        for (Index c : p.vertex_corners(v)) face_sum += out[p.corner_face(c)];
+        for (Index c : p.vertex_corners(v)) {
+          face_sum += out[p.corner_face(c)];
+          if (rule == SubdivisionRule::classic)
+            edge_sum += in[p.corner_vertex(p.next_corner(c))] + in[p.corner_vertex(p.prev_corner(c))];
+        }
         if (rule == SubdivisionRule::classic) {
-          for (Index e : edges) {
-            const auto& ends = p.edge_ends(e);
-            edge_sum += in[ends[0] == v ? ends[1] : ends[0]];
-          }
+          edge_sum *= 0.5;
         } else {
           for (Index e : edges) edge_sum += out[nf + e];
         }

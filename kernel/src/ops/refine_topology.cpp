@@ -45,7 +45,8 @@ void child_edges(const Parent& p, Level& child, int threads) {
   parallel_for(ne, threads, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e) {
       const Index ca = p.edge_corner(e, 0), cb = p.edge_corner(e, 1), na = p.next_corner(ca);
-      const std::uint8_t flags = (p.is_mobius(e) ? mobius_flag : 0) | (p.is_sharp(e) ? sharp_flag : 0);
+      const std::uint8_t flags = (p.is_mobius(e) ? mobius_flag : 0) | (p.is_sharp(e) ? sharp_flag : 0) |
+                                 (cb == no_index ? boundary_flag : 0);
       child.edge_flags[2 * e] = child.edge_flags[2 * e + 1] = flags;
       if (cb == no_index) {
         child.edge_corners[2 * e] = {4 * ca, no_index};

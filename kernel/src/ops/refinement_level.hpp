@@ -10,22 +10,24 @@
 
 #include "nome/mesh/mesh.hpp"
 #include "nome/ops/subdivide.hpp"
+#include "ops/large_buffer.hpp"
 
 namespace nome {
 
 inline constexpr std::uint8_t mobius_flag = 1;
 inline constexpr std::uint8_t sharp_flag = 2;
+inline constexpr std::uint8_t boundary_flag = 4;
 
 struct Refinement::Level {
   Index vertex_count = 0;
   Index num_vertices() const { return vertex_count; }
-  std::vector<Index> corner_vertices;  // 4 per face
-  std::vector<Index> corner_edges;
+  LargeBuffer<Index> corner_vertices;  // 4 per face
+  LargeBuffer<Index> corner_edges;
   // An edge's end vertices are those of its first corner and the next one (no array of their own: the
   // memory of the level before the last bounds the peak). Corner signs are left to Refinement::mesh().
-  std::vector<std::array<Index, 2>> edge_corners;  // [1] is no_index on a border edge
-  std::vector<std::uint8_t> edge_flags;
-  std::vector<Index> fan_corner_offsets, fan_corners, fan_edge_offsets, fan_edges;
+  LargeBuffer<std::array<Index, 2>> edge_corners;  // [1] is no_index on a border edge
+  LargeBuffer<std::uint8_t> edge_flags;
+  LargeBuffer<Index> fan_corner_offsets, fan_corners, fan_edge_offsets, fan_edges;
 
   Index num_faces() const { return Index(corner_vertices.size() / 4); }
   Index num_corners() const { return Index(corner_vertices.size()); }
@@ -44,7 +46,8 @@ struct Refinement::Level {
   Index edge_corner(Index e, int side) const { return edge_corners[e][side]; }
   bool is_mobius(Index e) const { return edge_flags[e] & mobius_flag; }
   bool is_sharp(Index e) const { return edge_flags[e] & sharp_flag; }
-  bool is_boundary(Index e) const { return edge_corners[e][1] == no_index; }
+  bool is_boundary(Index e) const { return edge_flags[e] & boundary_flag; }
+  bool is_crease(Index e) const { return edge_flags[e] & (sharp_flag | boundary_flag); }
   std::span<const Index> vertex_corners(Index v) const {
     return {fan_corners.data() + fan_corner_offsets[v], fan_corner_offsets[v + 1] - fan_corner_offsets[v]};
   }
@@ -73,6 +76,7 @@ class MeshLevelView {
   bool is_mobius(Index e) const { return m_.edge(e).is_mobius; }
   bool is_sharp(Index e) const { return m_.edge(e).is_sharp; }
   bool is_boundary(Index e) const { return m_.edge(e).is_boundary(); }
+  bool is_crease(Index e) const { return m_.edge(e).is_sharp || m_.edge(e).is_boundary(); }
   std::span<const Index> vertex_corners(Index v) const { return m_.vertex_corners(v); }
   std::span<const Index> vertex_edges(Index v) const { return m_.vertex_edges(v); }
 

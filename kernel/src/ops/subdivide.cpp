@@ -104,8 +104,8 @@ Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads
     edge.is_mobius = last.edge_flags[e] & mobius_flag;
     edge.is_sharp = last.edge_flags[e] & sharp_flag;
   }
-  a.corner_vertices = std::move(last.corner_vertices);
-  a.corner_edges = std::move(last.corner_edges);
+  a.corner_vertices.assign(last.corner_vertices.begin(), last.corner_vertices.end());
+  a.corner_edges.assign(last.corner_edges.begin(), last.corner_edges.end());
   // Corner signs: +1 at the first corner of each fan, flipped across every Möbius edge after it.
   a.corner_signs.resize(a.corner_vertices.size());
   for (Index v = 0; v < last.num_vertices(); ++v) {
@@ -117,10 +117,10 @@ Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads
       a.corner_signs[corners[i]] = sign;
     }
   }
-  a.fan_corner_offsets = std::move(last.fan_corner_offsets);
-  a.fan_corners = std::move(last.fan_corners);
-  a.fan_edge_offsets = std::move(last.fan_edge_offsets);
-  a.fan_edges = std::move(last.fan_edges);
+  a.fan_corner_offsets.assign(last.fan_corner_offsets.begin(), last.fan_corner_offsets.end());
+  a.fan_corners.assign(last.fan_corners.begin(), last.fan_corners.end());
+  a.fan_edge_offsets.assign(last.fan_edge_offsets.begin(), last.fan_edge_offsets.end());
+  a.fan_edges.assign(last.fan_edges.begin(), last.fan_edges.end());
   // A level-k face's level-1 ancestor is face >> 2(k-1), which is a base corner.
   const unsigned shift = 2 * unsigned(levels_.size() - 1);
   a.face_components.resize(nf);

@@ -28,6 +28,7 @@ struct Case {
   const char* name;
   PolygonSoup soup;
   long long chi;  // of the offset solid
+  size_t parts;
 };
 
 }  // namespace
@@ -35,16 +36,20 @@ struct Case {
 TEST_CASE("the offset is a closed, orientable, outward solid with chi = 2 chi(M)", "[kernel]") {
   std::mt19937 rng{42};
   const Case cases[] = {
-      {"disk (grid) -> sphere", test::grid(3, 2), 2},
-      {"annulus -> torus", test::mobius_band(12, 2, 2), 0},
-      {"mobius band -> torus", test::mobius_band(12, 2), 0},
-      {"mobius band, 3 twists -> torus", test::mobius_band(15, 1, 3), 0},
-      {"klein bottle -> torus", test::klein_bottle(12, 8), 0},
-      {"torus -> two tori", test::torus(8, 6), 0},
-      {"torus with reversed faces -> two tori", test::reverse_random_faces(test::torus(8, 6), 0.5, rng), 0},
-      {"cube -> two spheres", test::cube(), 4},
-      {"projective plane -> sphere", test::projective_plane(), 2},
-      {"mobius band with reversed faces", test::reverse_random_faces(test::mobius_band(12, 3), 0.5, rng), 0},
+      {"disk (grid) -> sphere", test::grid(3, 2), 2, 1},
+      {"annulus -> torus", test::mobius_band(12, 2, 2), 0, 1},
+      {"mobius band -> torus", test::mobius_band(12, 2), 0, 1},
+      {"mobius band, 3 twists -> torus", test::mobius_band(15, 1, 3), 0, 1},
+      {"klein bottle -> torus", test::klein_bottle(12, 8), 0, 1},
+      {"torus -> two tori", test::torus(8, 6), 0, 2},
+      {"cube and mobius band -> two spheres and a torus",
+       test::disjoint_union(test::cube(), test::mobius_band(9, 1)), 4, 3},
+      {"torus with reversed faces -> two tori", test::reverse_random_faces(test::torus(8, 6), 0.5, rng), 0,
+       2},
+      {"cube -> two spheres", test::cube(), 4, 2},
+      {"projective plane -> sphere", test::projective_plane(), 2, 1},
+      {"mobius band with reversed faces", test::reverse_random_faces(test::mobius_band(12, 3), 0.5, rng), 0,
+       1},
   };
   for (const Case& c : cases) {
     INFO(c.name);
@@ -56,6 +61,7 @@ TEST_CASE("the offset is a closed, orientable, outward solid with chi = 2 chi(M)
     const TopologyReport r = topology_report(solid);
     CHECK(r.chi == 2 * topology_report(m).chi);
     CHECK(r.chi == c.chi);
+    CHECK(r.components.size() == c.parts);
     CHECK(r.borders == 0);
     CHECK(r.orientable);
     CHECK(r.mobius_edges == 0);
