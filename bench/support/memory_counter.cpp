@@ -1,4 +1,4 @@
-#include "memory_counter.hpp"
+#include "support/memory_counter.hpp"
 
 #include <atomic>
 #include <cstdlib>

@@ -6,9 +6,9 @@
 #include <functional>
 #include <vector>
 
-#include "memory_counter.hpp"
 #include "nome/ops/offset.hpp"
 #include "nome/ops/subdivide.hpp"
+#include "support/memory_counter.hpp"
 #include "support/shapes.hpp"
 
 #ifdef NOME_HAVE_OPENMESH
