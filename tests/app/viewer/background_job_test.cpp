@@ -8,7 +8,7 @@
 using nome::viewer::BackgroundJob;
 using namespace std::chrono_literals;
 
-TEST_CASE("a newer request supersedes the work in flight, whose result is dropped", "[app]") {
+TEST_CASE("a newer request supersedes the work in flight, whose result is dropped", "[app][threads]") {
   BackgroundJob<int> job;
   std::atomic<bool> first_saw_stop{false};
   job.submit([&](std::stop_token stop) {
@@ -28,7 +28,7 @@ TEST_CASE("a newer request supersedes the work in flight, whose result is droppe
   CHECK(first_saw_stop);
 }
 
-TEST_CASE("a job's exception reaches the thread that takes its result", "[app]") {
+TEST_CASE("a job's exception reaches the thread that takes its result", "[app][threads]") {
   BackgroundJob<int> job;
   job.submit([](std::stop_token) -> int { throw std::runtime_error("a.nome:3:4: expected ')'"); });
   CHECK_THROWS_WITH(job.take(5000ms), "a.nome:3:4: expected ')'");
