@@ -25,6 +25,19 @@ std::string location_text(SourceLocation at) {
 // Thrown after a syntax error has been reported: unwinds to the statement loop that resynchronises.
 struct SyntaxError {};
 
+// Expressions are parsed and evaluated recursively: deeper ones (a million parentheses, a sum of
+// 200,000 terms) would overflow the stack, so they are refused. No real scene comes close.
+constexpr int max_expression_depth = 256;
+
+// Counts one level of recursion for as long as it lives.
+struct DepthGuard {
+  explicit DepthGuard(int& depth) : depth_(++depth) {}
+  ~DepthGuard() { --depth_; }
+  DepthGuard(const DepthGuard&) = delete;
+  DepthGuard& operator=(const DepthGuard&) = delete;
+  int& depth_;
+};
+
 // Where the parser is: which tokens start a statement here and which word closes the enclosing block.
 struct Context {
   std::vector<const char*> starters;
@@ -204,12 +217,25 @@ class Parser {
   }
 
   ExprId node(ExprOp op, SourceLocation at, ExprId a = no_index, ExprId b = no_index) {
+    int depth = 1;
+    for (ExprId child : {a, b})
+      if (child != no_index) depth = std::max(depth, expression_depth_[child] + 1);
+    if (depth > max_expression_depth) expression_too_deep(at);
     ExprNode n;
     n.op = op;
     n.location = at;
     n.args[0] = a;
     n.args[1] = b;
-    return ast_.expressions.add(std::move(n));
+    const ExprId id = ast_.expressions.add(std::move(n));
+    expression_depth_.resize(size_t(id) + 1, 0);
+    expression_depth_[id] = depth;
+    return id;
+  }
+
+  [[noreturn]] void expression_too_deep(SourceLocation at) {
+    diagnostics_.error(
+        at, "expression nested more than " + std::to_string(max_expression_depth) + " levels deep");
+    throw SyntaxError{};
   }
 
   ExprId expression() {
@@ -242,6 +268,9 @@ class Parser {
     return left;
   }
   ExprId unary() {
+    // Every recursion of the expression grammar passes here.
+    const DepthGuard guard(parse_depth_);
+    if (parse_depth_ > max_expression_depth) expression_too_deep(peek().location);
     if (peek().is_symbol("-")) {
       const Token t = take();
       return node(ExprOp::negate, t.location, unary());
@@ -677,6 +706,8 @@ class Parser {
   bool slf_ = false;                     // the SLIDE subset of .slf files
   const char* statement_end_ = nullptr;  // the word that closes the statement being parsed
   SceneAst ast_;
+  std::vector<int> expression_depth_;  // height of each expression node's subtree
+  int parse_depth_ = 0;                // expression grammar levels being parsed
 };
 
 }  // namespace

@@ -17,6 +17,8 @@ namespace {
 
 constexpr int max_ring_vertices = 100000;
 constexpr size_t max_placements = 1000000;
+// Instances are expanded recursively; a deeper hierarchy (no real scene has one) would overflow the stack.
+constexpr size_t max_instance_depth = 256;
 
 std::string at_text(SourceLocation at) {
   return std::to_string(at.line) + ":" + std::to_string(at.column);
@@ -180,6 +182,11 @@ void Scene::expand(const InstanceDecl& decl, Index group, Index statement, Index
   const Index g = it->second.index;
   if (std::find(stack.begin(), stack.end(), g) != stack.end()) {
     errors.push_back(located(decl.target.location, "group '" + decl.target.text + "' contains itself"));
+    return;
+  }
+  if (stack.size() >= max_instance_depth) {
+    errors.push_back(located(
+        decl.location, "instances nested more than " + std::to_string(max_instance_depth) + " levels deep"));
     return;
   }
   stack.push_back(g);
