@@ -34,8 +34,7 @@ TEST_CASE("expressions nested too deep are refused with their location, not a st
   const std::string too_deep = "expression nested more than 256 levels deep";
   const std::string inputs[] = {
       repeated("(", 1000000) + "1" + repeated(")", 1000000),  // the catalogue's million parentheses
-      repeated("-", 100000) + "1",
-      repeated("2^", 100000) + "1",
+      repeated("-", 100000) + "1", repeated("2^", 100000) + "1",
       "1" + repeated("+1", 200000),  // no recursion while parsing, but a tree 200,000 deep
   };
   for (const std::string& expression : inputs) {
