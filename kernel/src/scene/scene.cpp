@@ -703,8 +703,9 @@ void Scene::apply_anom(std::string_view text, const std::string& file) {
   for (const Parameter& p : parameters_) names.push_back(p.full_name);
   for (const auto& [name, value] : anom.saved_parameters) {
     const auto id = find_parameter(name.text);
-    const auto at = [&](std::string m) {
-      errors.push_back({Severity::error, file, name.location, std::move(m)});
+    // An init-capture: clang before 16 cannot capture a structured binding (the fuzz build uses clang-14).
+    const auto at = [&, location = name.location](std::string m) {
+      errors.push_back({Severity::error, file, location, std::move(m)});
     };
     if (!id) {
       at("unknown parameter '" + name.text + "'" + did_you_mean(name.text, names));
