@@ -16,7 +16,7 @@ TEST_CASE("an OBJ whose material library is /dev/zero or missing reads at once",
   const fs::path dir = fs::temp_directory_path() / ("nome_mtllib_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-  for (const std::string library : {fs::relative("/dev/zero", dir).string(), std::string("missing.mtl")}) {
+  for (const std::string& library : {fs::relative("/dev/zero", dir).string(), std::string("missing.mtl")}) {
     INFO(library);
     std::ofstream(dir / "scene.obj") << "mtllib " << library << "\nusemtl red\n" << triangle;
     const PolygonSoup soup = read_obj(dir / "scene.obj");

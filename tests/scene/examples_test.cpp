@@ -36,7 +36,7 @@ TEST_CASE("every scene of the original programs loads and builds a manifold", "[
 
 TEST_CASE("every .nome and .nom file in the repository loads", "[scene]") {
   size_t count = 0;
-  for (const std::string dir : {test::assets_dir(), test::originals_dir()})
+  for (const std::string& dir : {test::assets_dir(), test::originals_dir()})
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
       const std::string ext = entry.path().extension().string();
       if (ext != ".nome" && ext != ".nom") continue;

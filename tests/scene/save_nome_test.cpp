@@ -39,7 +39,7 @@ Scene reread(const Scene& s) {
 
 TEST_CASE("saving every example and reading it back gives the same geometry", "[scene]") {
   size_t count = 0;
-  for (const std::string dir : {test::assets_dir(), test::originals_dir()})
+  for (const std::string& dir : {test::assets_dir(), test::originals_dir()})
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
       const std::string ext = entry.path().extension().string();
       if (ext != ".nome" && ext != ".nom") continue;
