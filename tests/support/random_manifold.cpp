@@ -7,22 +7,10 @@
 #include <stdexcept>
 
 #include "support/shapes.hpp"
+#include "support/union_find.hpp"
 
 namespace nome::test {
 namespace {
-
-class UnionFind {
- public:
-  explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), size_t(0)); }
-  size_t find(size_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(size_t a, size_t b) { parent_[find(a)] = find(b); }
-
- private:
-  std::vector<size_t> parent_;
-};
 
 // Polygons with glued sides. Corner c of a face is also the side from corner c to the next corner;
 // each side lies on an edge id and runs along the edge's own direction (forward) or against it.
