@@ -92,9 +92,19 @@ gallery: release
 	@for f in $$(git ls-files assets | sort); do \
 	  name=$$(basename $$f | sed 's/\./_/g'); \
 	  $(RELEASE)/app/nome render $$f -o docs/gallery/$$name.png --wire --size $(GALLERY_SIZE) || exit 1; \
-	  { echo "## $$(basename $$f)"; echo; echo '```'; $(RELEASE)/app/nome info $$f | head -2; echo '```'; \
+	  { echo "## $$(basename $$f)"; echo; echo '```'; $(RELEASE)/app/nome info $$f | grep -E "^(vertices|components)"; echo '```'; \
 	    echo; echo "![$$(basename $$f)](gallery/$$name.png)"; echo; } >> docs/gallery.md; \
 	done
+	@{ echo "# Thickened into solids"; echo; \
+	   echo "Catmull-Clark, then the offset: each one-sided surface becomes a closed, orientable solid (all gold)."; \
+	   echo; } >> docs/gallery.md
+	@while read -r name f view options; do \
+	  $(RELEASE)/app/nome render $$f -o docs/gallery/$$name.png --view $$view $$options --size $(GALLERY_SIZE) \
+	    || exit 1; \
+	  { echo "## $$name"; echo; echo "\`nome render $$f --view $$view $$options\`"; echo; echo '```'; \
+	    $(RELEASE)/app/nome info $$f $$options | grep -E "^(vertices|components)"; echo '```'; \
+	    echo; echo "![$$name](gallery/$$name.png)"; echo; } >> docs/gallery.md; \
+	done < docs/gallery_solids.txt
 	@echo "Wrote docs/gallery.md and $$(ls docs/gallery | wc -l) pictures in docs/gallery/"
 
 bench: deps
