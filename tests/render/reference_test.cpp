@@ -34,7 +34,8 @@ const ReferenceCase reference_cases[] = {
     {"projective_plane_flat", "assets/projective_plane.obj", "--flat --wire --mobius-edges"},
     {"torus_mixed", "assets/torus_mixed.obj", "--wire --mobius-edges"},
     {"cube_transparent_cull", "assets/cube.obj", "--transparent --backface-color cull --view -40,30"},
-    // The pipeline's later stages: a Möbius band thickened into a torus-shaped solid, a Klein bottle smoothed.
+    // The pipeline's later stages: a Möbius band thickened into a torus-shaped solid, a Klein bottle
+    // smoothed.
     {"mobius_band_offset", "assets/mobius_band.obj", "--subdiv 2 --offset 0.05"},
     {"klein_bottle_subdivided", "assets/klein_bottle.obj", "--subdiv 2"},
 };
