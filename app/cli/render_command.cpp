@@ -98,12 +98,13 @@ int render_command(const std::vector<std::string>& args) {
       {"--backface-color", "", "COLOR", "back face colour; 'same' as the front, 'cull' to hide back faces"},
       {"--background", "", "COLOR", "background colour (default white)"},
       {"--transparent", "", "", "transparent background (PNG alpha)"},
-      {"--backend", "", "egl|osmesa", "force the offscreen GL backend (default: EGL, else OSMesa)"},
+      {"--backend", "", "egl|egl-device|osmesa",
+       "force the offscreen GL backend (default: EGL surfaceless, else an EGL device, else OSMesa)"},
       {"--verbose", "-v", "", "print the GL backend, vendor, renderer and timings"}};
   for (OptionSpec& s : input_options()) specs.push_back(std::move(s));
   Arguments parsed("render",
                    "nome render FILE... -o OUT.png [--size WxH] [--view AZ,EL] [--wire] [--flat] "
-                   "[--backend egl|osmesa] [pipeline options]",
+                   "[--backend egl|egl-device|osmesa] [pipeline options]",
                    specs);
   parsed.parse(args);
   if (parsed.has("--help")) {
@@ -120,9 +121,11 @@ int render_command(const std::vector<std::string>& args) {
   const render::SnapshotOptions options = snapshot_options(parsed);
   render::Backend backend = render::Backend::automatic;
   if (const auto name = parsed.value("--backend")) {
-    if (*name != "egl" && *name != "osmesa")
-      throw UsageError("--backend expects egl or osmesa, found '" + *name + "'");
-    backend = render::parse_backend(*name);
+    try {
+      backend = render::parse_backend(*name);
+    } catch (const InvalidInputError& e) {
+      throw UsageError(std::string("--backend: ") + e.what());
+    }
   }
   const Stage stage = parsed.has("--stage") ? parse_stage(*parsed.value("--stage")) : Stage::offset;
   const bool verbose = parsed.has("--verbose");

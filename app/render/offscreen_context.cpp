@@ -46,8 +46,9 @@ std::string egl_error(const char* call) {
 
 Backend parse_backend(const std::string& name) {
   if (name == "egl") return Backend::egl;
+  if (name == "egl-device") return Backend::egl_device;
   if (name == "osmesa") return Backend::osmesa;
-  throw InvalidInputError("unknown backend '" + name + "' (expected egl or osmesa)");
+  throw InvalidInputError("unknown backend '" + name + "' (expected egl, egl-device or osmesa)");
 }
 
 struct OffscreenContext::State {
@@ -149,13 +150,15 @@ OffscreenContext::OffscreenContext(Backend backend) : state_(std::make_unique<St
     const char* platform;
     bool (State::*start)(std::string&);
     Backend backend;
+    bool forced_only = false;  // tried only when asked for by name
   };
   const Attempt attempts[] = {{"EGL surfaceless", &State::start_egl_surfaceless, Backend::egl},
                               {"EGL device", &State::start_egl_device, Backend::egl},
+                              {"EGL device", &State::start_egl_device, Backend::egl_device, true},
                               {"OSMesa", &State::start_osmesa, Backend::osmesa}};
   std::string failures;
   for (const Attempt& attempt : attempts) {
-    if (backend != Backend::automatic && backend != attempt.backend) continue;
+    if (backend == Backend::automatic ? attempt.forced_only : backend != attempt.backend) continue;
     std::string failure;
     if ((state_.get()->*attempt.start)(failure)) {
       state_->platform = attempt.platform;

@@ -5,9 +5,10 @@
 
 namespace nome::render {
 
-enum class Backend { automatic, egl, osmesa };
+// egl: surfaceless, else a device; egl_device: only the device platform (the fallback, forced to test it).
+enum class Backend { automatic, egl, egl_device, osmesa };
 
-// "egl" or "osmesa"; throws InvalidInputError otherwise.
+// "egl", "egl-device" or "osmesa"; throws InvalidInputError otherwise.
 Backend parse_backend(const std::string& name);
 
 // A current OpenGL 3.3 core context with no window, no display and no GPU needed, with glad loaded.

@@ -43,18 +43,26 @@ TEST_CASE("OSMesa gives a GL 3.3 core context", "[render]") {
   require_core_33();
 }
 
-TEST_CASE("EGL and OSMesa draw the same picture", "[render]") {
+TEST_CASE("the EGL device fallback gives a GL 3.3 core context", "[render]") {
+  const render::OffscreenContext context(render::Backend::egl_device);
+  CHECK(context.platform() == "EGL device");
+  require_core_33();
+}
+
+TEST_CASE("every backend draws the same picture", "[render]") {
   const Mesh band = build_mesh(test::mobius_band(24, 3));
   const render::Image egl = render_with(render::Backend::egl, band);
-  const render::Image osmesa = render_with(render::Backend::osmesa, band);
-  const render::ImageDifference d = render::compare_images(egl, osmesa, 8);
-  REQUIRE(d.same_size);
-  CHECK(d.differing_fraction < 0.002);
   CHECK(test::count_sides(egl).front > 500);
+  for (const render::Backend other : {render::Backend::egl_device, render::Backend::osmesa}) {
+    const render::ImageDifference d = render::compare_images(egl, render_with(other, band), 8);
+    REQUIRE(d.same_size);
+    CHECK(d.differing_fraction < 0.002);
+  }
 }
 
 TEST_CASE("backend names", "[render]") {
   CHECK(render::parse_backend("egl") == render::Backend::egl);
   CHECK(render::parse_backend("osmesa") == render::Backend::osmesa);
+  CHECK(render::parse_backend("egl-device") == render::Backend::egl_device);
   CHECK_THROWS_AS(render::parse_backend("vulkan"), InvalidInputError);
 }
