@@ -1,7 +1,4 @@
 #include <catch2/catch.hpp>
-
-#include <filesystem>
-
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "scene/scene_support.hpp"
@@ -35,16 +32,12 @@ TEST_CASE("every scene of the original programs loads and builds a manifold", "[
 }
 
 TEST_CASE("every .nome and .nom file in the repository loads", "[scene]") {
-  size_t count = 0;
-  for (const std::string& dir : {test::assets_dir(), test::originals_dir()})
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-      const std::string ext = entry.path().extension().string();
-      if (ext != ".nome" && ext != ".nom") continue;
-      INFO(entry.path());
-      CHECK_NOTHROW(build_mesh(test::load_scene_file(entry.path().string()).combined_soup()));
-      ++count;
-    }
-  CHECK(count >= 12);
+  const std::vector<std::string> files = test::scene_files();
+  for (const std::string& file : files) {
+    INFO(file);
+    CHECK_NOTHROW(build_mesh(test::load_scene_file(file).combined_soup()));
+  }
+  CHECK(files.size() >= 12);
 }
 
 TEST_CASE("the assets' scenes have the topology they are made for", "[scene]") {

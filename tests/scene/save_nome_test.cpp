@@ -38,17 +38,13 @@ Scene reread(const Scene& s) {
 }  // namespace
 
 TEST_CASE("saving every example and reading it back gives the same geometry", "[scene]") {
-  size_t count = 0;
-  for (const std::string& dir : {test::assets_dir(), test::originals_dir()})
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-      const std::string ext = entry.path().extension().string();
-      if (ext != ".nome" && ext != ".nom") continue;
-      INFO(entry.path());
-      const Scene s = read_scene(entry.path());
-      check_same_geometry(s, reread(s));
-      ++count;
-    }
-  CHECK(count >= 12);
+  const std::vector<std::string> files = test::scene_files();
+  for (const std::string& file : files) {
+    INFO(file);
+    const Scene s = read_scene(file);
+    check_same_geometry(s, reread(s));
+  }
+  CHECK(files.size() >= 12);
 }
 
 TEST_CASE("an edited scene saves its slider values, consolidated faces and deletions", "[scene]") {

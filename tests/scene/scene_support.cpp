@@ -1,5 +1,6 @@
 #include "scene/scene_support.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -11,6 +12,16 @@ std::string assets_dir() {
 
 std::string originals_dir() {
   return std::string(NOME_SOURCE_DIR) + "/tests/data/original/";
+}
+
+std::vector<std::string> scene_files() {
+  std::vector<std::string> files;
+  for (const std::string& dir : {assets_dir(), originals_dir()})
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      const std::string ext = entry.path().extension().string();
+      if (ext == ".nome" || ext == ".nom") files.push_back(entry.path().string());
+    }
+  return files;
 }
 
 std::string read_text(const std::string& path) {
