@@ -333,7 +333,26 @@ void Window::apply_face_colors() {
 }
 
 bool Window::can_edit() const {
-  return session_ && shown_ && (settings_.stage == Stage::scene || settings_.stage == Stage::merged);
+  return session_ && shown_ && is_editable(settings_.stage);
+}
+
+void Window::set_subdivision(double levels) {
+  if (!(levels >= 0 && levels <= 6 && levels == std::floor(levels)))
+    throw InvalidInputError("subdiv: expected a level from 0 to 6, found " + std::to_string(levels));
+  settings_.subdivision_levels = int(levels);
+  // The offset stages subdivide before offsetting: they stay; otherwise the subdivision is shown.
+  if (is_editable(settings_.stage)) settings_.stage = Stage::subdivided;
+}
+
+void Window::set_offset(double distance) {
+  if (!(distance >= 0 && std::isfinite(distance)))
+    throw InvalidInputError("offset: expected a distance of 0 or more, found " + std::to_string(distance));
+  if (distance == 0) {
+    settings_.stage = Stage::subdivided;
+    return;
+  }
+  settings_.offset_distance = distance;
+  if (settings_.stage != Stage::subdivided_offset) settings_.stage = Stage::offset;
 }
 
 bool Window::run_action(const std::string& action) {
@@ -357,7 +376,8 @@ bool Window::run_action(const std::string& action) {
   } else if (action == "clear") {
     outcome = session_->clear_temporary();
   } else if (!can_edit()) {
-    log_.error(action + ": edits work on the scene or merged stage");
+    log_.error(action + ": the " + to_string(settings_.stage) +
+               " stage is computed from the scene; switch to the scene or merged stage to edit");
     return false;
   } else if (action == "add-polygon") {
     outcome = session_->add_polygon(*shown_mesh(), selection_.vertices());
@@ -451,6 +471,9 @@ void Window::click(glm::dvec2 pixel) {
       }
       break;
   }
+  if (!hint.empty() && !is_editable(settings_.stage))
+    hint += std::string(" in the ") + to_string(settings_.stage) +
+            " stage (to look; edits need the scene or merged stage)";
   if (!hint.empty()) log_.info(hint);
   refresh_selection();
 }
@@ -582,9 +605,11 @@ bool Window::run_command(const ScriptCommand& c) {
       log_.info("saved " + c.words[0]);
       return true;
     case Kind::subdiv:
+      set_subdivision(c.numbers[0]);
+      return true;
     case Kind::offset:
-      throw InvalidInputError(std::string(c.kind == Kind::subdiv ? "subdiv" : "offset") +
-                              ": this build has no subdivision or offset stage");
+      set_offset(c.numbers[0]);
+      return true;
   }
   return false;
 }

@@ -69,6 +69,9 @@ class Window {
   void double_click(glm::dvec2 pixel);
   // editing (report 7.3.3)
   bool can_edit() const;
+  // The script's `subdiv` and `offset` (the control panel sets the same settings directly).
+  void set_subdivision(double levels);
+  void set_offset(double distance);
   // "add-polygon", "accept", "clear", "delete", "zip", "merge", "undo", "redo": from buttons, keys and
   // scripts. Returns false when the action was refused (the log says why).
   bool run_action(const std::string& action);

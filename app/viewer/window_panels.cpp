@@ -114,7 +114,7 @@ void Window::draw_menu() {
 
 void Window::draw_control_panel() {
   ImGui::SetNextWindowPos(ImVec2(8, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(350, 0), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Controls")) {
     ImGui::End();
     return;
@@ -135,7 +135,8 @@ void Window::draw_control_panel() {
   }
   if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen)) {
     int stage = int(settings_.stage);
-    const char* stages[] = {to_string(Stage::scene), to_string(Stage::merged)};
+    const char* stages[] = {to_string(Stage::scene), to_string(Stage::merged), to_string(Stage::subdivided),
+                            to_string(Stage::offset), to_string(Stage::subdivided_offset)};
     if (ImGui::Combo("show", &stage, stages, IM_ARRAYSIZE(stages))) settings_.stage = Stage(stage);
     if (ImGui::Button("Merge")) settings_.stage = Stage::merged;
     ImGui::SameLine();
@@ -144,8 +145,26 @@ void Window::draw_control_panel() {
     if (ImGui::InputFloat("tolerance", &tolerance, 0.0f, 0.0f, "%.5f", ImGuiInputTextFlags_EnterReturnsTrue))
       settings_.merge_tolerance = std::max(0.0f, tolerance);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: a thousandth of the scene's size");
+    ImGui::Checkbox("subdivide the merged mesh", &settings_.subdivide_merged);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("off: the scene's pieces are subdivided each on its own");
+    ImGui::SetNextItemWidth(120);
+    ImGui::SliderInt("subdivision", &settings_.subdivision_levels, 0, 6);
+    ImGui::SameLine();
+    int rule = int(settings_.rule);
+    const char* rules[] = {"classic", "report"};
+    ImGui::SetNextItemWidth(80);
+    if (ImGui::Combo("##rule", &rule, rules, IM_ARRAYSIZE(rules))) settings_.rule = SubdivisionRule(rule);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("smooth-vertex rule: Catmull-Clark's or the 2016 report's");
+    float distance = float(settings_.offset_distance);
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::SliderFloat("offset", &distance, 0.001f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic))
+      settings_.offset_distance = std::max(distance, 1e-6f);
+    ImGui::SetNextItemWidth(120);
+    ImGui::SliderInt("subdivision after offset", &settings_.subdivision_after, 0, 4);
   }
   if (ImGui::CollapsingHeader("Edit", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (!is_editable(settings_.stage))
+      ImGui::TextDisabled("%s is computed: edit on scene or merged", to_string(settings_.stage));
     ImGui::BeginDisabled(!can_edit());
     if (ImGui::Button("Add polygon")) run_action("add-polygon");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("through the selected vertices, in click order (Enter)");

@@ -6,6 +6,7 @@
 
 #include "app/viewer_support.hpp"
 #include "nome/io/read_polygons.hpp"
+#include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "nome/query/pick.hpp"
 #include "render/image.hpp"
@@ -212,4 +213,43 @@ TEST_CASE("a session deletes a face, undoes and redoes it, then fills the hole a
   CHECK(filled.num_faces() == 6);
   CHECK(filled.face_degree(5) == 3);
   CHECK_THAT(r.err, Catch::Contains("accept: "));
+}
+
+TEST_CASE("subdiv and offset show the later stages, which export writes: the Möbius band becomes a torus",
+          "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_offset");
+  const std::string script =
+      write_script(dir, "subdiv 2\nexport " + dir + "/smooth.obj\noffset 0.05\nexport " + dir +
+                            "/solid.obj\noffset 0\nsubdiv 1\nexport " + dir + "/once.obj\nquit\n");
+  const auto r = run_viewer(assets + "mobius_band.obj --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const Mesh band = build_mesh(read_polygons(assets + "mobius_band.obj"));
+  const Mesh smooth = build_mesh(read_polygons(dir + "/smooth.obj"));
+  CHECK(smooth.num_faces() == 16 * band.num_faces());
+  const TopologyReport smooth_report = topology_report(smooth);
+  CHECK_FALSE(smooth_report.orientable);
+  CHECK(smooth_report.borders == 1);
+  const TopologyReport solid = topology_report(build_mesh(read_polygons(dir + "/solid.obj")));
+  CHECK(solid.orientable);
+  CHECK(solid.borders == 0);
+  CHECK(solid.chi == 0);
+  // `offset 0` goes back to the subdivided stage, which follows the level.
+  CHECK(build_mesh(read_polygons(dir + "/once.obj")).num_faces() == 4 * band.num_faces());
+}
+
+TEST_CASE("a computed stage picks faces but refuses edits, and a bad level is refused", "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_derived_pick");
+  const std::string script = write_script(dir,
+                                          "view 30 25\nsubdiv 1\nmode face\nclick 640 400\naction delete\n"
+                                          "subdiv 7\nexport " +
+                                              dir + "/cube.obj\nquit\n");
+  const auto r = run_viewer(assets + "cube.obj --script " + script);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("selected in the subdivided stage"));
+  CHECK_THAT(r.err, Catch::Contains("delete: the subdivided stage is computed from the scene; switch to the "
+                                    "scene or merged stage to edit"));
+  CHECK_THAT(r.err, Catch::Contains("subdiv: expected a level from 0 to 6"));
+  // Nothing was deleted and the level stayed at 1.
+  CHECK(build_mesh(read_polygons(dir + "/cube.obj")).num_faces() == 24);
 }

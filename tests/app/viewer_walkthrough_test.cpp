@@ -31,6 +31,25 @@ std::string instance_of(const std::string& vertex) {
   return vertex.substr(0, vertex.rfind('_'));
 }
 
+// The script lines that end both walkthroughs (report Fig. 11d, 12d): the merged mesh `merged.obj` is
+// subdivided and thickened, shown in `png` and exported as `solid.stl`.
+std::string subdivide_and_offset(const std::string& dir, const std::string& png) {
+  return "action merge\nexport " + dir + "/merged.obj\nsubdiv 2\noffset 0.05\nscreenshot " + dir + "/" + png +
+         "\nexport " + dir + "/solid.stl\n";
+}
+
+// The thickened surface is a closed orientable solid's skin, twice the merged surface's Euler
+// characteristic (two sheets joined along rim strips of characteristic 0; one-sided surfaces give their
+// orientable double cover).
+void check_solid(const std::string& dir) {
+  const TopologyReport merged = topology_report(build_mesh(read_polygons(dir + "/merged.obj")));
+  const TopologyReport solid = topology_report(build_mesh(read_polygons(dir + "/solid.stl")));
+  CHECK(solid.borders == 0);
+  CHECK(solid.orientable);
+  CHECK(solid.chi == 2 * merged.chi);
+  CHECK(solid.components.size() == merged.components.size());
+}
+
 }  // namespace
 
 TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated polygon that is saved",
@@ -124,8 +143,9 @@ TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, un
   std::ofstream(script_path) << "view 30 25\nmode border\n"
                              << click_line(rims[pair.first].click) << click_line(rims[pair.second].click)
                              << "action zip\naction merge\nexport " << dir << "/zipped.obj\nscreenshot "
-                             << dir << "/klein_bottle.png\naction undo\nexport " << dir
-                             << "/undone.obj\nquit\n";
+                             << dir << "/klein_bottle.png\naction undo\nexport " << dir << "/undone.obj\n"
+                             << "action redo\n"
+                             << subdivide_and_offset(dir, "klein_bottle_solid.png") << "quit\n";
   const auto r = run_viewer(file + " --script " + script_path);
   INFO(r.err);
   REQUIRE(r.status == 0);
@@ -134,6 +154,22 @@ TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, un
   const Index zipped = topology_report(build_mesh(read_polygons(dir + "/zipped.obj"))).borders;
   const Index undone = topology_report(build_mesh(read_polygons(dir + "/undone.obj"))).borders;
   CHECK(zipped + 2 == undone);
+  check_solid(dir);
+  CHECK(topology_report(build_mesh(read_polygons(dir + "/merged.obj"))).borders == zipped);
+}
+
+TEST_CASE("funnel cube walkthrough, last step: the eight consolidated corners merged, subdivided and offset",
+          "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("walkthrough_funnel_cube_solid");
+  const std::string script_path = dir + "/script.txt";
+  std::ofstream(script_path) << "view 30 25\n"
+                             << subdivide_and_offset(dir, "funnel_cube_solid.png") << "quit\n";
+  const auto r = run_viewer(examples + "funnel_cube_consolidated.nome --script " + script_path);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  check_solid(dir);
+  // The corners join the funnels' inner rims: only the six outer rims stay open (report Fig. 11d).
+  CHECK(topology_report(build_mesh(read_polygons(dir + "/merged.obj"))).borders == 6);
 }
 
 TEST_CASE("a script moves sliders by name and an unknown slider fails the session", "[app]") {
