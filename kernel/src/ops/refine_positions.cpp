@@ -72,7 +72,5 @@ void refine_positions(const Parent& p, std::span<const Vec3> in, SubdivisionRule
 
 template void refine_positions(const MeshLevelView&, std::span<const Vec3>, SubdivisionRule, std::span<Vec3>,
                                int);
-template void refine_positions(const Refinement::Level&, std::span<const Vec3>, SubdivisionRule,
-                               std::span<Vec3>, int);
 
 }  // namespace nome

@@ -15,7 +15,7 @@ Index half_edge_child(const Parent& p, Index e, Index v) {
 // Each parent corner c becomes child quad c: (vertex point, edge point of the edge leaving c, face
 // point, edge point of the edge arriving at c), which keeps the parent face's orientation.
 template <class Parent>
-void child_corners(const Parent& p, Level& child, bool full, int threads) {
+void child_corners(const Parent& p, Level& child, bool with_edges, int threads) {
   const Index nf = p.num_faces(), ne = p.num_edges();
   parallel_for(p.num_corners(), threads, [&](Index begin, Index end) {
     for (Index c = begin; c < end; ++c) {
@@ -26,7 +26,7 @@ void child_corners(const Parent& p, Level& child, bool full, int threads) {
       q[1] = nf + out;
       q[2] = p.corner_face(c);
       q[3] = nf + in;
-      if (!full) continue;
+      if (!with_edges) continue;
       Index* qe = child.corner_edges.data() + 4 * size_t(c);
       qe[0] = half_edge_child(p, out, v);
       qe[1] = 2 * ne + c;
@@ -150,26 +150,28 @@ void child_fans(const Parent& p, Level& child, int threads) {
 }  // namespace
 
 template <class Parent>
-void refine_topology(const Parent& p, Level& child, bool full, int threads) {
+void refine_topology(const Parent& p, Level& child, LevelDetail detail, int threads) {
   const size_t nc = p.num_corners();
-  const size_t ne = 2 * size_t(p.num_edges()) + nc;
+  const bool full = detail == LevelDetail::full;
+  const bool with_corner_edges = detail != LevelDetail::quads;
   child.vertex_count = p.num_faces() + p.num_edges() + p.num_vertices();
+  child.edge_count = Index(2 * size_t(p.num_edges()) + nc);
   child.corner_vertices.resize(4 * nc);
-  child.corner_edges.resize(full ? 4 * nc : 0);
-  child_corners(p, child, full, threads);
+  child.corner_edges.resize(with_corner_edges ? 4 * nc : 0);
+  child_corners(p, child, with_corner_edges, threads);
   if (!full) {
     child.edge_corners = {};
     child.edge_flags = {};
     child.fan_corner_offsets = child.fan_corners = child.fan_edge_offsets = child.fan_edges = {};
     return;
   }
-  child.edge_corners.resize(ne);
-  child.edge_flags.resize(ne);
+  child.edge_corners.resize(child.edge_count);
+  child.edge_flags.resize(child.edge_count);
   child_edges(p, child, threads);
   child_fans(p, child, threads);
 }
 
-template void refine_topology(const MeshLevelView&, Level&, bool, int);
-template void refine_topology(const Level&, Level&, bool, int);
+template void refine_topology(const MeshLevelView&, Level&, LevelDetail, int);
+template void refine_topology(const Level&, Level&, LevelDetail, int);
 
 }  // namespace nome

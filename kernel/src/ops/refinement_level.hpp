@@ -18,20 +18,26 @@ inline constexpr std::uint8_t mobius_flag = 1;
 inline constexpr std::uint8_t sharp_flag = 2;
 inline constexpr std::uint8_t boundary_flag = 4;
 
+// How much of a level refine_topology builds. The position pass into level k reads the full topology of
+// level k-2 only (refine_child_positions), so the last level needs only its quads and the one before it
+// only its corners (to number the last level's quads): the two largest levels never get edges or fans.
+enum class LevelDetail { quads, corners, full };
+
 struct Refinement::Level {
-  Index vertex_count = 0;
+  Index vertex_count = 0, edge_count = 0;
   Index num_vertices() const { return vertex_count; }
   LargeBuffer<Index> corner_vertices;  // 4 per face
-  LargeBuffer<Index> corner_edges;
-  // An edge's end vertices are those of its first corner and the next one (no array of their own: the
-  // memory of the level before the last bounds the peak). Corner signs are left to Refinement::mesh().
+  LargeBuffer<Index> corner_edges;     // with LevelDetail::corners or full
+  // With LevelDetail::full only. An edge's end vertices are those of its first corner and the next one
+  // (no array of their own, to bound the peak memory). Corner signs are left to Refinement::mesh().
   LargeBuffer<std::array<Index, 2>> edge_corners;  // [1] is no_index on a border edge
   LargeBuffer<std::uint8_t> edge_flags;
   LargeBuffer<Index> fan_corner_offsets, fan_corners, fan_edge_offsets, fan_edges;
+  LargeBuffer<Vec3> positions;  // of every level but the last, reused by each position pass
 
   Index num_faces() const { return Index(corner_vertices.size() / 4); }
   Index num_corners() const { return Index(corner_vertices.size()); }
-  Index num_edges() const { return Index(edge_corners.size()); }
+  Index num_edges() const { return edge_count; }
   Index face_begin(Index f) const { return 4 * f; }
   Index face_end(Index f) const { return 4 * f + 4; }
   Index corner_face(Index c) const { return c >> 2; }
@@ -84,14 +90,21 @@ class MeshLevelView {
   const Mesh& m_;
 };
 
-// The topology pass from `parent` (a Level or a MeshLevelView) into `child`. With `full` false only the
-// child's corner vertices are built (the last level of a refinement). Runs on `threads` threads.
+// The topology pass from `parent` (a Level or a MeshLevelView) into `child`, with the arrays `detail`
+// asks for. Runs on `threads` threads.
 template <class Parent>
-void refine_topology(const Parent& parent, Refinement::Level& child, bool full, int threads);
+void refine_topology(const Parent& parent, Refinement::Level& child, LevelDetail detail, int threads);
 
-// The position pass: child positions (face points, edge points, vertex points) from parent positions.
+// The position pass into the level after `parent`: its face points, edge points and vertex points from
+// the parent's positions. Used from the base mesh into level 1.
 template <class Parent>
 void refine_positions(const Parent& parent, std::span<const Vec3> in, SubdivisionRule rule,
                       std::span<Vec3> out, int threads);
+
+// The same pass from a child level P (positions `in`) into the level after it, reading only the topology
+// of P's parent `grandparent`: the same results bit for bit, from arrays four times smaller.
+template <class Grandparent>
+void refine_child_positions(const Grandparent& grandparent, std::span<const Vec3> in, SubdivisionRule rule,
+                            std::span<Vec3> out, int threads);
 
 }  // namespace nome

@@ -26,13 +26,14 @@ Refinement::Refinement(const Mesh& base, int levels, int threads)
   if (levels < 1)
     throw InvalidInputError("Refinement: levels must be at least 1, got " + std::to_string(levels));
   levels_.resize(size_t(levels));
-  level_positions_.resize(size_t(levels) - 1);
   for (int k = 0; k < levels; ++k) {
-    const bool full = k + 1 < levels;
+    const LevelDetail detail = k + 1 == levels   ? LevelDetail::quads
+                               : k + 2 == levels ? LevelDetail::corners
+                                                 : LevelDetail::full;
     if (k == 0)
-      refine_topology(MeshLevelView(base), levels_[0], full, threads);
+      refine_topology(MeshLevelView(base), levels_[0], detail, threads);
     else
-      refine_topology(levels_[k - 1], levels_[k], full, threads);
+      refine_topology(levels_[k - 1], levels_[k], detail, threads);
   }
 }
 
@@ -69,13 +70,15 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
   for (size_t k = 0; k < levels_.size(); ++k) {
     std::span<Vec3> target = out;
     if (k + 1 < levels_.size()) {
-      level_positions_[k].resize(levels_[k].vertex_count);
-      target = level_positions_[k];
+      levels_[k].positions.resize(levels_[k].vertex_count);
+      target = levels_[k].positions;
     }
     if (k == 0)
       nome::refine_positions(MeshLevelView(base), in, rule, target, threads);
+    else if (k == 1)
+      refine_child_positions(MeshLevelView(base), in, rule, target, threads);
     else
-      nome::refine_positions(levels_[k - 1], in, rule, target, threads);
+      refine_child_positions(levels_[k - 2], in, rule, target, threads);
     in = target;
   }
 }
@@ -84,11 +87,19 @@ Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads
   if (!fits(base)) throw InvalidInputError("Refinement::mesh: the base mesh's topology changed");
   if (positions.size() != num_vertices())
     throw InvalidInputError("Refinement::mesh: expected " + std::to_string(num_vertices()) + " positions");
-  Level last;
-  if (levels_.size() == 1)
-    refine_topology(MeshLevelView(base), last, true, threads);
-  else
-    refine_topology(levels_[levels_.size() - 2], last, true, threads);
+  // The last two levels were built without edges and fans: build them again, in full.
+  const size_t k = levels_.size();
+  Level before_last, last;
+  if (k == 1) {
+    refine_topology(MeshLevelView(base), last, LevelDetail::full, threads);
+  } else {
+    if (k == 2)
+      refine_topology(MeshLevelView(base), before_last, LevelDetail::full, threads);
+    else
+      refine_topology(levels_[k - 3], before_last, LevelDetail::full, threads);
+    refine_topology(before_last, last, LevelDetail::full, threads);
+    before_last = {};  // freed before the mesh's arrays are made
+  }
 
   MeshArrays a;
   const Index nf = last.num_faces();

@@ -210,3 +210,28 @@ TEST_CASE("the position pass alone reproduces a full refinement after the base m
   const Mesh full = big.mesh(torus, two);
   CHECK(std::equal(quads.begin(), quads.end(), full.corner_vertices().begin(), full.corner_vertices().end()));
 }
+
+TEST_CASE("refining several levels at once gives the bits of refining one level at a time", "[kernel]") {
+  // From level 2 on, the position pass reads the topology two levels up (refine_child_positions); one
+  // level at a time always runs the plain pass over the parent's own fans.
+  PolygonSoup creased = jittered(test::grid(3, 3), 0.2);
+  creased.sharp_edges = {{5, 6}, {6, 7}, {6, 10}};
+  const std::vector<PolygonSoup> soups = {
+      jittered(test::mobius_band(12, 3), 0.05), creased,
+      jittered(test::disjoint_union(test::tetrahedron(), test::cube()), 0.1), test::klein_bottle(8, 6),
+      test::projective_plane()};
+  for (const PolygonSoup& soup : soups)
+    for (SubdivisionRule rule : {SubdivisionRule::classic, SubdivisionRule::report}) {
+      Mesh stepwise = build_mesh(soup);
+      for (int level = 1; level <= 3; ++level) {
+        stepwise = subdivide(stepwise, {1, rule});
+        const Mesh at_once = subdivide(build_mesh(soup), {level, rule});
+        CHECK(at_once.positions() == stepwise.positions());
+        CHECK(at_once.corner_vertices() == stepwise.corner_vertices());
+      }
+      Refinement refinement(build_mesh(soup), 3);
+      std::vector<Vec3> two_threads(refinement.num_vertices());
+      refinement.refine_positions(build_mesh(soup), rule, two_threads, 2);
+      CHECK(two_threads == stepwise.positions());
+    }
+}

@@ -61,8 +61,7 @@ class Refinement {
   struct Level;
 
  private:
-  std::vector<Level> levels_;                       // levels 1..k; the last one holds only its corners
-  std::vector<std::vector<Vec3>> level_positions_;  // levels 1..k-1 (reused by every position pass)
+  std::vector<Level> levels_;  // levels 1..k: only the last two lack edges and fans
   Index base_vertices_ = 0, base_faces_ = 0, base_corners_ = 0, base_edges_ = 0;
   std::vector<Index> base_sharp_edges_;
 };
