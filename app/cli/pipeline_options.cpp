@@ -15,7 +15,9 @@ std::vector<OptionSpec> pipeline_option_specs() {
        "smooth-vertex rule: classic (Catmull-Clark, default) or report (the 2016 report's)"},
       {"--offset", "", "D", "thicken into a closed solid, D on each side of the surface (D > 0)"},
       {"--subdiv-after", "", "M", "Catmull-Clark levels after --offset, to round the rims (default 0)"},
-      {"--force", "", "", "compute results whose estimated size exceeds the memory budget (4 GB)"},
+      {"--force", "", "",
+       "compute results whose estimated size exceeds the memory budget (4 GB), expand scenes of more than "
+       "1000000 instances"},
   };
 }
 

@@ -75,7 +75,11 @@ InputFiles read_input_files(const Arguments& args) {
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (is_scene_file(file)) {
-      input.scenes.push_back(read_scene(file));
+      try {
+        input.scenes.push_back(read_scene(file, {.force = args.has("--force")}));
+      } catch (const BudgetError& e) {
+        throw BudgetError(std::string(e.what()) + "; use --force to expand it anyway");
+      }
     } else if (ext == ".anom") {
       if (input.scenes.empty())
         throw UsageError(file + ": an .anom file applies to an open scene: give the .nome file before it");

@@ -2,8 +2,11 @@
 
 #include <string>
 
+#include "nome/error.hpp"
 #include "scene/scene_support.hpp"
 
+using nome::scene::Scene;
+using nome::scene::SceneOptions;
 using nome::test::scene_errors;
 
 namespace {
@@ -25,6 +28,27 @@ std::string nested_groups(int depth) {
     text += "group g" + std::to_string(i) + "\n instance x " +
             (i + 1 < depth ? "g" + std::to_string(i + 1) : std::string("m")) + " endinstance\nendgroup\n";
   return text + "instance r g0 endinstance\n";
+}
+
+// Groups g1..g{depth}, each instancing the previous one twice (g0 holds a funnel): 2^depth funnels.
+// One instance of g{k} expands to s(k) = 2 + 2 s(k-1) placements below it, s(0) = 1.
+std::string doubling_groups(int depth) {
+  std::string text = "funnel f (4 1 0.5 1) endfunnel\ngroup g0\n instance a f endinstance\nendgroup\n";
+  for (int k = 1; k <= depth; ++k) {
+    const std::string previous = "g" + std::to_string(k - 1);
+    text += "group g" + std::to_string(k) + "\n instance a " + previous + " endinstance\n instance b " +
+            previous + " translate (1 0 0) endinstance\nendgroup\n";
+  }
+  return text + "instance r g" + std::to_string(depth) + " endinstance\n";
+}
+
+std::string budget_error(const std::string& text, const SceneOptions& options) {
+  try {
+    Scene::from_text(text, "t.nome", options);
+  } catch (const nome::BudgetError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace
@@ -52,4 +76,47 @@ TEST_CASE("instances nested too deep are refused with their location, not a stac
   const auto errors = scene_errors(nested_groups(20000));
   REQUIRE(errors.size() == 1);
   CHECK_THAT(errors[0], Catch::Contains("instances nested more than 256 levels deep"));
+}
+
+TEST_CASE("a scene whose instance tree exceeds the budget is refused before it is expanded", "[scene]") {
+  // 2^40 funnels: counting is instant where expanding would exhaust memory.
+  const std::string huge = doubling_groups(40);
+  const std::string line = std::to_string(5 + 4 * 40);
+  CHECK(budget_error(huge, {}) ==
+        "t.nome:" + line +
+            ":1: the scene would expand to about 3298534883327 instances, over the budget of 1000000");
+  // Forcing cannot go past what 32-bit placement ids number.
+  const auto errors = [&] {
+    try {
+      Scene::from_text(huge, "t.nome", {.force = true});
+    } catch (const nome::scene::SceneError& e) {
+      return e.diagnostics();
+    }
+    return std::vector<nome::scene::Diagnostic>{};
+  }();
+  REQUIRE(errors.size() == 1);
+  CHECK(errors[0].to_string() ==
+        "t.nome:" + line +
+            ":1: the scene would expand to about 3298534883327 instances, more than Nome can number");
+
+  // The count is exact: 1 + s(3) = 23 placements.
+  const std::string small = doubling_groups(3);
+  CHECK(budget_error(small, {.instance_budget = 23}).empty());
+  CHECK_THAT(budget_error(small, {.instance_budget = 22}), Catch::Contains("about 23 instances"));
+  // Forced, a scene over the budget is expanded in full: 2^10 funnels of 4 faces.
+  const Scene forced =
+      Scene::from_text(doubling_groups(10), "t.nome", {.instance_budget = 100, .force = true});
+  CHECK(forced.combined_soup().num_faces() == 4 * 1024);
+}
+
+TEST_CASE("the instance budget adds up every top-level instance and is located at the one crossing it",
+          "[scene]") {
+  std::string text = doubling_groups(3);  // r: 23 placements
+  text += "instance s g3 endinstance\ninstance t g3 endinstance\n";
+  const std::string message = budget_error(text, {.instance_budget = 50});
+  CHECK_THAT(message, Catch::StartsWith("t.nome:" + std::to_string(5 + 4 * 3 + 2) + ":1: ") &&
+                          Catch::Contains("about 69 instances"));
+  // Cycles are still reported as such, not counted forever.
+  CHECK_THAT(scene_errors("group a\n instance x a endinstance\nendgroup\ninstance r a endinstance\n").at(0),
+             Catch::Contains("group 'a' contains itself"));
 }

@@ -31,13 +31,13 @@ bool is_scene_file(const std::filesystem::path& path) {
   return ext == ".nome" || ext == ".nom" || ext == ".slf";
 }
 
-scene::Scene read_scene(const std::filesystem::path& path) {
+scene::Scene read_scene(const std::filesystem::path& path, const scene::SceneOptions& options) {
   const std::string text = read_text_file(path);
-  if (lower_extension(path) != ".slf") return scene::Scene::from_text(text, path.string());
+  if (lower_extension(path) != ".slf") return scene::Scene::from_text(text, path.string(), options);
   scene::Diagnostics diagnostics(path.string());
   scene::SceneAst ast = scene::parse_slf(text, diagnostics);
   diagnostics.throw_if_errors();
-  return scene::Scene::from_ast(std::move(ast), diagnostics.all());
+  return scene::Scene::from_ast(std::move(ast), diagnostics.all(), options);
 }
 
 }  // namespace nome

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <unordered_set>
 
@@ -16,7 +17,6 @@ namespace nome::scene {
 namespace {
 
 constexpr int max_ring_vertices = 100000;
-constexpr size_t max_placements = 1000000;
 // Instances are expanded recursively; a deeper hierarchy (no real scene has one) would overflow the stack.
 constexpr size_t max_instance_depth = 256;
 
@@ -48,16 +48,17 @@ Diagnostic Scene::located(SourceLocation at, std::string message) const {
   return {Severity::error, ast_.file, at, std::move(message)};
 }
 
-Scene Scene::from_text(std::string_view text, const std::string& file) {
+Scene Scene::from_text(std::string_view text, const std::string& file, const SceneOptions& options) {
   Diagnostics diagnostics(file);
   SceneAst ast = parse_nome(text, diagnostics);
   diagnostics.throw_if_errors();
-  return from_ast(std::move(ast), diagnostics.all());
+  return from_ast(std::move(ast), diagnostics.all(), options);
 }
 
-Scene Scene::from_ast(SceneAst ast, std::vector<Diagnostic> warnings) {
+Scene Scene::from_ast(SceneAst ast, std::vector<Diagnostic> warnings, const SceneOptions& options) {
   Scene scene;
   scene.ast_ = std::move(ast);
+  scene.options_ = options;
   scene.warnings_ = std::move(warnings);
   std::vector<Diagnostic> errors;
 
@@ -163,12 +164,6 @@ void Scene::expand(const InstanceDecl& decl, Index group, Index statement, Index
     errors.push_back(located(decl.target.location, message));
     return;
   }
-  if (placements_.size() >= max_placements) {
-    if (placements_.size() == max_placements)
-      errors.push_back(located(
-          decl.location, "the scene expands to more than " + std::to_string(max_placements) + " instances"));
-    return;
-  }
   Placement p;
   p.path = parent == no_index ? decl.name.text : placements_[parent].path + "_" + decl.name.text;
   p.parent = parent;
@@ -200,9 +195,69 @@ void Scene::expand(const InstanceDecl& decl, Index group, Index statement, Index
   stack.pop_back();
 }
 
+// Counted without recursion: a chain of groups may be far deeper than the stack allows (expand refuses
+// it later). A group on a cycle counts what it reaches before the cycle, which expand reports.
+std::vector<double> Scene::group_expansion_sizes() const {
+  const size_t groups = ast_.groups.size();
+  std::vector<double> size(groups, 0);
+  std::vector<char> state(groups, 0);          // 0: not reached, 1: being counted, 2: counted
+  std::vector<std::pair<Index, Index>> stack;  // a group and its next instance statement
+  const auto group_target = [&](const InstanceDecl& decl) {
+    const auto it = definitions_.find(decl.target.text);
+    return it != definitions_.end() && it->second.kind == DefinitionKind::group ? it->second.index : no_index;
+  };
+  for (Index root = 0; root < groups; ++root) {
+    if (state[root]) continue;
+    state[root] = 1;
+    stack.push_back({root, 0});
+    while (!stack.empty()) {
+      const auto [g, next] = stack.back();
+      const std::vector<InstanceDecl>& statements = ast_.groups[g].instances;
+      if (next == statements.size()) {
+        state[g] = 2;
+        stack.pop_back();
+        if (!stack.empty()) size[stack.back().first] += size[g];
+        continue;
+      }
+      ++stack.back().second;
+      size[g] += 1;
+      const Index target = group_target(statements[next]);
+      if (target == no_index || state[target] == 1) continue;
+      if (state[target] == 2) {
+        size[g] += size[target];
+      } else {
+        state[target] = 1;
+        stack.push_back({target, 0});
+      }
+    }
+  }
+  return size;
+}
+
+bool Scene::within_instance_budget(double placements, const InstanceDecl& crossing,
+                                   std::vector<Diagnostic>& errors) const {
+  const double budget = double(options_.instance_budget);
+  // Placements are numbered by 32-bit ids.
+  const double id_limit = double(no_index) - 1;
+  if (placements <= (options_.force ? id_limit : std::min(budget, id_limit))) return true;
+  char count[32];
+  std::snprintf(count, sizeof count, placements < 1e15 ? "%.0f" : "%.3g", placements);
+  const std::string expands = std::string("the scene would expand to about ") + count + " instances";
+  if (options_.force || budget >= id_limit) {
+    errors.push_back(located(crossing.location, expands + ", more than Nome can number"));
+    return false;
+  }
+  throw BudgetError(
+      located(crossing.location, expands + ", over the budget of " + std::to_string(options_.instance_budget))
+          .to_string());
+}
+
 void Scene::build(std::vector<Diagnostic>& errors) {
   placements_.clear();
   instances_.clear();
+  // The whole tree is counted before any of it is expanded, so that refusing it costs nothing.
+  const std::vector<double> group_sizes = group_expansion_sizes();
+  double placements = 0;
   std::unordered_map<std::string, SourceLocation> seen;
   for (Index i = 0; i < ast_.instances.size(); ++i) {
     const InstanceDecl& decl = ast_.instances[i];
@@ -212,6 +267,11 @@ void Scene::build(std::vector<Diagnostic>& errors) {
       continue;
     }
     seen[decl.name.text] = decl.name.location;
+    const auto target = definitions_.find(decl.target.text);
+    placements += 1;
+    if (target != definitions_.end() && target->second.kind == DefinitionKind::group)
+      placements += group_sizes[target->second.index];
+    if (!within_instance_budget(placements, decl, errors)) return;
     std::vector<Index> stack;
     instances_.push_back({decl.name.text, {}, 0, 0});
     expand(decl, no_index, i, no_index, Index(instances_.size() - 1), stack, errors);

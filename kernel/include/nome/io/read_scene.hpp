@@ -7,8 +7,9 @@
 namespace nome {
 
 // Reads a scene file by its extension: .nome or .nom (the scene language) or .slf (the SLIDE subset).
-// Throws SceneError listing every located error, IoError when the file cannot be read.
-scene::Scene read_scene(const std::filesystem::path& path);
+// Throws SceneError listing every located error, IoError when the file cannot be read, BudgetError when
+// its instances exceed the budget of `options`.
+scene::Scene read_scene(const std::filesystem::path& path, const scene::SceneOptions& options = {});
 
 // True for the extensions read_scene reads.
 bool is_scene_file(const std::filesystem::path& path);

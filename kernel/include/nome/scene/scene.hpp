@@ -39,6 +39,14 @@ struct SceneInstance {
   std::uint64_t topology_version = 0;
 };
 
+// What evaluating a scene may cost. The instance tree is counted before it is expanded: a scene over
+// the budget is refused with the count (BudgetError, located at the top-level instance that crosses it)
+// unless forced; even forced, a tree beyond 32-bit placement ids is an error.
+struct SceneOptions {
+  std::uint64_t instance_budget = 1000000;
+  bool force = false;
+};
+
 // An evaluated scene (report sections 3 and 6): the parsed text, the slider values, and the geometry of
 // every top-level instance, kept up to date incrementally. Every instance statement of the expanded
 // hierarchy is a placement; a placement of geometry (not of a group) records the parameters its
@@ -48,9 +56,10 @@ struct SceneInstance {
 class Scene {
  public:
   // Parses and evaluates a .nome text. Throws SceneError listing every error found.
-  static Scene from_text(std::string_view text, const std::string& file);
+  static Scene from_text(std::string_view text, const std::string& file, const SceneOptions& options = {});
   // Evaluates a parsed scene (the .slf reader builds one). `warnings` are kept with the scene.
-  static Scene from_ast(SceneAst ast, std::vector<Diagnostic> warnings = {});
+  static Scene from_ast(SceneAst ast, std::vector<Diagnostic> warnings = {},
+                        const SceneOptions& options = {});
 
   // Applies an .anom text (saved slider values and working mesh) on top of this scene.
   void apply_anom(std::string_view text, const std::string& file);
@@ -111,6 +120,10 @@ class Scene {
 
   Scene() = default;
   void build(std::vector<Diagnostic>& errors);
+  std::vector<double> group_expansion_sizes() const;
+  // False (with the error) when `placements` cannot be numbered; throws BudgetError when over the budget.
+  bool within_instance_budget(double placements, const InstanceDecl& crossing,
+                              std::vector<Diagnostic>& errors) const;
   void expand(const InstanceDecl& decl, Index group, Index statement, Index parent, Index top,
               std::vector<Index>& stack, std::vector<Diagnostic>& errors);
   const InstanceDecl* statement(const Placement& p) const;
@@ -129,6 +142,7 @@ class Scene {
   Diagnostic located(SourceLocation at, std::string message) const;
 
   SceneAst ast_;
+  SceneOptions options_;
   std::vector<Diagnostic> warnings_;
   std::vector<Bank> banks_;
   std::vector<Parameter> parameters_;
