@@ -7,6 +7,8 @@
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
 #include "nome/ops/normals.hpp"
+#include "nome/ops/offset.hpp"
+#include "nome/ops/subdivide.hpp"
 #include "support/brute_force_topology.hpp"
 
 namespace nome::fuzz {
@@ -38,6 +40,22 @@ void check_downstream(const Mesh& mesh) {
   const MergeResult merged = merge_boundaries(mesh);
   check_mesh(merged.mesh);
   require(test::brute_force_topology(to_soup(merged.mesh)).is_manifold);
+
+  // Catmull-Clark keeps every part's topology; the offset is a closed, orientable, consistently
+  // oriented solid with twice the surface's chi.
+  const TopologyReport before = topology_report(mesh);
+  const Mesh smooth = subdivide(mesh, {1, SubdivisionRule::classic});
+  check_mesh(smooth);
+  const TopologyReport after = topology_report(smooth);
+  require(after.components.size() == before.components.size());
+  for (size_t i = 0; i < after.components.size(); ++i)
+    require(after.components[i].chi == before.components[i].chi &&
+            after.components[i].orientable == before.components[i].orientable &&
+            after.components[i].borders == before.components[i].borders);
+  const Mesh solid = offset(smooth, OffsetOptions{0.01});
+  check_mesh(solid);
+  const TopologyReport shell = topology_report(solid);
+  require(shell.borders == 0 && shell.orientable && shell.mobius_edges == 0 && shell.chi == 2 * after.chi);
 }
 
 void build_and_check(PolygonSoup soup) {

@@ -5,8 +5,10 @@
 namespace nome::fuzz {
 
 // Everything downstream of a reader that must hold for any mesh build_mesh accepted: the topology
-// report and normals run, the soup round trip rebuilds the same counts, and a boundary merge gives a
-// 2-manifold that passes the same checks. Aborts on a violation (libFuzzer records the input).
+// report and normals run, the soup round trip rebuilds the same counts, a boundary merge gives a
+// 2-manifold that passes the same checks, one Catmull-Clark level keeps every part's chi, orientability
+// and borders, and its offset is a closed, orientable solid with twice its chi. Aborts on a violation
+// (libFuzzer records the input).
 void check_downstream(const Mesh& mesh);
 
 // build_mesh on a soup from untrusted input: refusal by TopologyError or InvalidInputError is fine;
