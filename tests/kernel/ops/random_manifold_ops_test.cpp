@@ -23,8 +23,10 @@ PolygonSoup redescribed(const PolygonSoup& soup, const std::vector<Index>& perm,
   std::bernoulli_distribution reverse(0.4);
   for (Index f = 0; f < soup.num_faces(); ++f) {
     std::vector<Index> vs;
-    for (Index c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c) vs.push_back(perm[soup.face_vertices[c]]);
-    std::rotate(vs.begin(), vs.begin() + std::uniform_int_distribution<size_t>(0, vs.size() - 1)(rng), vs.end());
+    for (Index c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c)
+      vs.push_back(perm[soup.face_vertices[c]]);
+    std::rotate(vs.begin(), vs.begin() + std::uniform_int_distribution<size_t>(0, vs.size() - 1)(rng),
+                vs.end());
     if (reverse(rng)) std::reverse(vs.begin(), vs.end());
     out.add_face(vs);
   }
