@@ -10,6 +10,7 @@ RELEASE := build/release
 TESTDIR := build/test
 FUZZDIR := build/fuzz
 FUZZ_SECONDS ?= 60
+FUZZ_JOBS ?= 1
 # Any sanitizer report fails the run: abort (never exit status 1, which a test of a refused input
 # expects), leaks included. Child processes (the CLI under test) inherit these.
 SANITIZER_ENV := ASAN_OPTIONS=abort_on_error=1:halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1 \
@@ -61,7 +62,7 @@ tsan: deps
 	cd build/tsan && TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 tests/nome_kernel_tests
 	cd build/tsan && TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 tests/nome_app_tests "$(TSAN_TESTS)"
 
-# libFuzzer targets (clang-14): each runs FUZZ_SECONDS, keeps its corpus in $(FUZZDIR)/corpus and
+# libFuzzer targets (clang-14): each runs FUZZ_SECONDS (FUZZ_JOBS at a time), keeps its corpus in $(FUZZDIR)/corpus and
 # writes crashes to $(FUZZDIR)/artifacts (turn each into a test: tests/data/fuzz/README.md).
 fuzz-build: deps
 	cmake -S . -B $(FUZZDIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang-14 \
@@ -69,7 +70,7 @@ fuzz-build: deps
 	cmake --build $(FUZZDIR) -j$(JOBS)
 
 fuzz: fuzz-build
-	tests/fuzz/run_fuzzers.sh $(FUZZDIR) $(FUZZ_SECONDS)
+	FUZZ_JOBS=$(FUZZ_JOBS) tests/fuzz/run_fuzzers.sh $(FUZZDIR) $(FUZZ_SECONDS)
 
 format-check: deps
 	@clang-format --dry-run --Werror $(SOURCES) && echo "clang-format: $(words $(SOURCES)) files clean"

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs every libFuzzer target in BUILD_DIR for SECONDS each and prints its execution count.
+# Runs every libFuzzer target in BUILD_DIR for SECONDS each and prints its execution count; FUZZ_JOBS
+# targets at a time (default 1).
 # Seeds: the example files in assets/, the bad-input catalogue, tests/data/fuzz/seeds/<format>/ and the
 # checked-in regressions in tests/data/fuzz/<target>/. The corpus grows in BUILD_DIR/corpus/<target>;
 # crashes, hangs (-timeout, default 1 s) and leaks land in BUILD_DIR/artifacts/<target>/.
@@ -7,9 +8,12 @@ set -uo pipefail
 build=${1:?usage: run_fuzzers.sh BUILD_DIR SECONDS}
 seconds=${2:-60}
 timeout=${FUZZ_TIMEOUT:-1}
+jobs=${FUZZ_JOBS:-1}
 root=$(cd "$(dirname "$0")/../.." && pwd)
-failed=0
-for fuzzer in "$build"/tests/fuzz/*_fuzzer; do
+
+# Prints one line for the target (and the first lines of any report); exit status: the fuzzer's.
+run_one() {
+  local fuzzer=$1 name format corpus seeds artifacts max_len log status runs
   name=$(basename "$fuzzer")
   format=${name%_fuzzer}
   corpus=$build/corpus/$name
@@ -29,9 +33,15 @@ for fuzzer in "$build"/tests/fuzz/*_fuzzer; do
   status=$?
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
   echo "$name: ${runs:-?} executions in ${seconds} s, corpus $(ls "$corpus" | wc -l) files, exit $status"
-  if [ "$status" -ne 0 ]; then
-    failed=1
-    grep -m3 -E 'ERROR|SUMMARY|Test unit written' "$log"
-  fi
+  [ "$status" -eq 0 ] || grep -m3 -E 'ERROR|SUMMARY|Test unit written' "$log"
+  return "$status"
+}
+
+failed_mark=$build/.fuzz_failed
+rm -f "$failed_mark"
+for fuzzer in "$build"/tests/fuzz/*_fuzzer; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+  { run_one "$fuzzer" || touch "$failed_mark"; } &
 done
-exit $failed
+wait
+[ ! -e "$failed_mark" ]

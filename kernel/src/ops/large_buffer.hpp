@@ -30,13 +30,12 @@ struct LargeBufferAllocator {
     madvise(p, rounded, MADV_HUGEPAGE);  // advice only: without huge pages it still works
     return static_cast<T*>(p);
   }
+  // Unsized deletes: clang-14 (the fuzz build) has no sized deallocation by default.
   void deallocate(T* p, std::size_t n) noexcept {
-    const std::size_t bytes = n * sizeof(T);
-    if (bytes < huge_page) {
-      ::operator delete(p, bytes);
-      return;
-    }
-    ::operator delete(p, (bytes + huge_page - 1) / huge_page * huge_page, std::align_val_t(huge_page));
+    if (n * sizeof(T) < huge_page)
+      ::operator delete(p);
+    else
+      ::operator delete(p, std::align_val_t(huge_page));
   }
   template <class U>
   void construct(U* p) noexcept {
