@@ -10,7 +10,6 @@
 #include "nome/mesh/mesh.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/query/border_lookup.hpp"
-#include "nome/query/triangle_bvh.hpp"
 #include "render/mesh_display_data.hpp"
 #include "viewer/session.hpp"
 
@@ -39,11 +38,11 @@ struct StageSettings {
 };
 
 // Everything a frame needs of a new displayed mesh, computed off the UI thread: the mesh, its GPU-ready
-// arrays and the picking structures. Only the upload to GL is left to the UI thread.
+// arrays and its borders. Only the upload to GL is left to the UI thread, and the picking BVH to the
+// first pick (a slider drag shows many meshes and picks on none).
 struct StageResult {
   std::shared_ptr<const Mesh> mesh;
   render::MeshDisplayData display;
-  std::shared_ptr<const TriangleBvh> bvh;
   std::shared_ptr<const BorderLookup> borders;
   std::vector<std::string> warnings;
   std::vector<std::string> notes;  // what the stages did, for the log

@@ -144,6 +144,7 @@ void Window::open(const std::filesystem::path& path) {
     recent_.add(path);
     selection_.clear();
     shown_.reset();
+    picking_bvh_.reset();
     has_request_ = false;
     update_stage();
     // The first picture of a file waits for its geometry, so that it can be framed.
@@ -309,9 +310,15 @@ void Window::show_result(StageResult result) {
   for (const std::string& note : result.notes) log_.info(note);
   buffers_ = std::make_unique<render::MeshBuffers>(result.display);
   topology_.reset();
+  picking_bvh_.reset();
   shown_ = std::move(result);
   apply_face_colors();
   refresh_selection();
+}
+
+const TriangleBvh& Window::picking_bvh() {
+  if (!picking_bvh_) picking_bvh_.emplace(*shown_mesh());
+  return *picking_bvh_;
 }
 
 void Window::apply_face_colors() {
@@ -436,7 +443,7 @@ void Window::refresh_selection() {
 void Window::click(glm::dvec2 pixel) {
   if (!shown_mesh()) return;
   const Mesh& mesh = *shown_mesh();
-  const TriangleBvh& bvh = *shown_->bvh;
+  const TriangleBvh& bvh = picking_bvh();
   const ScreenProjection p = projection();
   std::string hint;
   auto is_in = [](const std::vector<Index>& items, Index i) {
@@ -481,7 +488,7 @@ void Window::click(glm::dvec2 pixel) {
 void Window::double_click(glm::dvec2 pixel) {
   // The orbit centre moves to the picked point; the eye stays where it is.
   if (!shown_) return;
-  const auto hit = shown_->bvh->cast_nearest(ray_through_pixel(projection(), pixel));
+  const auto hit = picking_bvh().cast_nearest(ray_through_pixel(projection(), pixel));
   if (!hit) return;
   const glm::dvec3 eye = camera_.eye();
   camera_.target = hit->point;

@@ -83,6 +83,8 @@ class Window {
   void update_stage();
   void show_result(StageResult result);
   const Mesh* shown_mesh() const { return shown_ ? shown_->mesh.get() : nullptr; }
+  // The BVH of the shown mesh, built at the first pick after the mesh changed.
+  const TriangleBvh& picking_bvh();
   void refresh_selection();
   ScreenProjection projection() const;
   glm::dvec2 window_size() const;
@@ -131,6 +133,7 @@ class Window {
   StageSettings requested_settings_;
   bool has_request_ = false;
   std::optional<StageResult> shown_;
+  std::optional<TriangleBvh> picking_bvh_;  // of shown_, once a pick needed it
   ZipperOptions zipper_options_;
   glm::vec3 consolidated_color_{0.62f, 0.42f, 0.86f};
   glm::vec3 temporary_color_{0.30f, 0.76f, 0.42f};
