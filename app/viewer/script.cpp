@@ -57,10 +57,12 @@ const Syntax syntaxes[] = {
     {"screenshot", ScriptCommand::Kind::screenshot, 1, 0, "screenshot PATH.png"},
     {"save", ScriptCommand::Kind::save, 1, 0, "save PATH.nome"},
     {"export", ScriptCommand::Kind::export_file, 1, 0, "export PATH.stl|PATH.obj"},
+    {"recover", ScriptCommand::Kind::recover, 1, 0, "recover restore|discard"},
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 
 const char* const modes[] = {"vertex", "face", "border", "border-partial"};
+const char* const recovery_answers[] = {"restore", "discard"};
 const char* const actions[] = {"add-polygon", "accept", "clear", "delete", "zip", "merge", "undo", "redo"};
 
 template <typename List>
@@ -85,6 +87,7 @@ const char* script_synopsis() {
          "  screenshot PATH.png       save the window as a PNG\n"
          "  save PATH.nome            save the scene, slider values and edits\n"
          "  export PATH.stl|.obj      write the stage on screen\n"
+         "  recover restore|discard   answer the offer to restore unsaved changes after a crash\n"
          "  quit\n";
 }
 
@@ -107,7 +110,7 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     if (!syntax) {
       fail(words[0].column,
            "expected a command (set, mode, click, key, action, subdiv, offset, view, "
-           "screenshot, save, export, quit), found '" +
+           "screenshot, save, export, recover, quit), found '" +
                words[0].text + "'");
       continue;
     }
@@ -142,6 +145,10 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     if (command.kind == ScriptCommand::Kind::action && !is_one_of(command.words[0], actions)) {
       fail(words[1].column, "expected add-polygon, accept, clear, delete, zip, merge, undo or redo, found '" +
                                 command.words[0] + "'");
+      continue;
+    }
+    if (command.kind == ScriptCommand::Kind::recover && !is_one_of(command.words[0], recovery_answers)) {
+      fail(words[1].column, "expected restore or discard, found '" + command.words[0] + "'");
       continue;
     }
     commands.push_back(std::move(command));

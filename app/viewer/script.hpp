@@ -20,6 +20,7 @@ struct ScriptCommand {
     screenshot,
     save,
     export_file,
+    recover,
     quit
   };
   Kind kind = Kind::quit;

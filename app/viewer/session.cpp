@@ -41,6 +41,13 @@ Session Session::open(const std::filesystem::path& path) {
   return session;
 }
 
+Session Session::restore(const std::filesystem::path& document, const std::filesystem::path& recovery) {
+  Session session = open(recovery);
+  session.path_ = document;
+  session.is_modified_ = true;
+  return session;
+}
+
 void Session::update_soup() {
   std::vector<Mesh> parts;
   GluedFaces scene = document_.scene_mesh(), consolidated = document_.consolidated_mesh(),
@@ -56,6 +63,7 @@ void Session::update_soup() {
 EditOutcome Session::changed(EditOutcome outcome) {
   if (outcome.applied) {
     is_modified_ = true;
+    ++accepted_edits_;
     update_soup();
   }
   return outcome;
@@ -117,7 +125,7 @@ void Session::set_parameter(const std::string& name, double value) {
   set_parameter(*id, value);
 }
 
-void Session::save(const std::filesystem::path& path) {
+scene::Scene Session::saved_scene() const {
   if (!scene_)
     throw InvalidInputError("save: only scene files are saved as .nome (export writes .obj and .stl)");
   // The file's own consolidated faces and deletions, then this session's.
@@ -129,6 +137,11 @@ void Session::save(const std::filesystem::path& path) {
   scene::Scene saved = *scene_;
   saved.set_consolidated_faces(std::move(consolidated));
   saved.set_deleted_faces(std::move(deleted));
+  return saved;
+}
+
+void Session::save(const std::filesystem::path& path) {
+  scene::Scene saved = saved_scene();
   scene::write_nome(saved, path);
   // The saved file now holds the accepted edits: start from it, keeping the temporary faces' intent lost
   // only when the user had not accepted them (as the report's program did).

@@ -29,6 +29,9 @@ class Session {
   // Reads a scene (.nome .nom .slf) or flat geometry (.obj .stl .sif). Throws nome::Error (a SceneError
   // lists every `file:line:col: message`) when it cannot.
   static Session open(const std::filesystem::path& path);
+  // The state a crashed viewer left in a recovery file (a saved scene, see Autosave), as unsaved changes
+  // to `document`: saving writes the document.
+  static Session restore(const std::filesystem::path& document, const std::filesystem::path& recovery);
 
   const std::filesystem::path& path() const { return path_; }
   // What the scene stage shows: the scene without its deleted faces, then the consolidated and the
@@ -39,6 +42,8 @@ class Session {
   std::uint64_t version() const { return version_; }
   // Unsaved changes (edits since the last save or load).
   bool is_modified() const { return is_modified_; }
+  // How many edits (undo and redo included) have been accepted since the session began.
+  std::uint64_t accepted_edits() const { return accepted_edits_; }
   const Document& document() const { return document_; }
   // The scene of a scene file; none for flat geometry (no sliders, no .nome saving).
   const scene::Scene* scene() const { return scene_ ? &*scene_ : nullptr; }
@@ -52,6 +57,8 @@ class Session {
   // Saves the scene with its slider values and the consolidated faces and deletions as .nome
   // (atomically); the saved file becomes the session's file. Temporary faces are not saved.
   void save(const std::filesystem::path& path);
+  // The scene as save() writes it. Throws InvalidInputError for flat geometry.
+  scene::Scene saved_scene() const;
 
   // Edits of report 7.3.3, on vertices and faces of `displayed` (the scene or merged stage). Each returns
   // what happened; a refused edit changes nothing.
@@ -78,6 +85,7 @@ class Session {
   FaceParts parts_;
   std::uint64_t version_ = 0;
   bool is_modified_ = false;
+  std::uint64_t accepted_edits_ = 0;
 };
 
 }  // namespace nome::viewer

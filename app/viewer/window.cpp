@@ -51,7 +51,8 @@ Window::Window(GLFWwindow* window, const ViewerOptions& options)
       renderer_(std::make_unique<render::Renderer>()),
       cubes_(std::make_unique<render::CubeSet>()),
       border_lines_(std::make_unique<render::LineSet>()),
-      recent_(RecentFiles::default_store()) {
+      recent_(RecentFiles::default_store()),
+      autosave_(Autosave::default_folder()) {
   register_keys();
   camera_.set_view(default_azimuth, default_elevation);
   log_.set_echo(options.script.has_value());
@@ -139,6 +140,7 @@ void Window::open(const std::filesystem::path& path) {
   try {
     Session session = Session::open(path);
     session_.emplace(std::move(session));
+    recovery_offer_ = autosave_.pending_recovery(path);
     std::error_code ec;
     file_time_ = std::filesystem::last_write_time(path, ec);
     recent_.add(path);
@@ -166,7 +168,7 @@ void Window::save(const std::optional<std::filesystem::path>& path) {
   }
   const std::filesystem::path target = path ? *path : session_->path();
   try {
-    session_->save(target);
+    save_session(target);
     std::error_code ec;
     file_time_ = std::filesystem::last_write_time(target, ec);
     recent_.add(target);
@@ -174,6 +176,12 @@ void Window::save(const std::optional<std::filesystem::path>& path) {
   } catch (const std::exception& e) {
     log_.error(e.what());
   }
+}
+
+void Window::save_session(const std::filesystem::path& target) {
+  const std::filesystem::path previous = session_->path();
+  session_->save(target);
+  if (previous != target) autosave_.discard(previous);  // its changes went to the new file
 }
 
 void Window::set_slider(Index parameter, double value) {
@@ -596,6 +604,10 @@ bool Window::run_command(const ScriptCommand& c) {
     case Kind::export_file:
       export_mesh(c.words[0]);
       return true;
+    case Kind::recover:
+      if (!recovery_offer_) throw InvalidInputError("recover: no unsaved changes are offered for restoring");
+      answer_recovery(c.words[0] == "restore");
+      return true;
     case Kind::quit:
       should_close_ = true;
       return true;
@@ -608,7 +620,7 @@ bool Window::run_command(const ScriptCommand& c) {
     case Kind::save:
       if (!session_ || !session_->scene())
         throw InvalidInputError("save: only scene files (.nome) are saved");
-      session_->save(c.words[0]);
+      save_session(c.words[0]);
       log_.info("saved " + c.words[0]);
       return true;
     case Kind::subdiv:
@@ -631,8 +643,12 @@ bool Window::frame() {
   run_script_step();
   draw_scene();
   draw_panels();
+  draw_recovery_prompt();
+  update_autosave();
   ImGui::Render();
   ++frames_drawn_;
+  // A clean end takes the recovery file along, unless it is still on offer.
+  if (should_close_ && session_ && !recovery_offer_) autosave_.discard(session_->path());
   return !should_close_;
 }
 

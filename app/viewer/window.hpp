@@ -19,6 +19,7 @@
 #include "render/line_set.hpp"
 #include "render/mesh_buffers.hpp"
 #include "render/renderer.hpp"
+#include "viewer/autosave.hpp"
 #include "viewer/background_job.hpp"
 #include "viewer/file_browser.hpp"
 #include "viewer/key_registry.hpp"
@@ -103,12 +104,18 @@ class Window {
   void draw_control_panel();
   void draw_slider_panels();
   void save(const std::optional<std::filesystem::path>& path);
+  // Saves the scene (throwing on failure); the recovery file of the file it came from goes.
+  void save_session(const std::filesystem::path& target);
   void set_slider(Index parameter, double value);
   void draw_topology_panel();
   void draw_log_panel();
   void draw_status_bar();
   void draw_help_overlay();
   void draw_quit_prompt();
+  // crash recovery (window_recovery.cpp)
+  void update_autosave();
+  void draw_recovery_prompt();
+  void answer_recovery(bool restore);
   void draw_progress();
   void poll_file_changes();
 
@@ -143,6 +150,8 @@ class Window {
   MessageLog log_;
   KeyRegistry keys_;
   RecentFiles recent_;
+  Autosave autosave_;
+  std::optional<std::filesystem::path> recovery_offer_;  // left by a viewer that did not end cleanly
   FileBrowser browser_;
   enum class BrowserPurpose { open, save, export_mesh } browser_purpose_ = BrowserPurpose::open;
 
