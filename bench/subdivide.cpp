@@ -43,14 +43,14 @@ double best_ms(int runs, const std::function<void()>& work, Clock clock = Clock:
 
 struct Refined {
   Refinement refinement;
-  std::vector<Vec3> positions;
+  std::span<const Vec3> positions;
 };
 
-// A full refine: the topology pass and the position pass, the last level without adjacency.
+// A full refine: the topology pass and the position pass, the last level without adjacency, its
+// positions in the refinement's own buffer.
 Refined refine(const Mesh& base, int levels, int threads) {
   Refined r{Refinement(base, levels, threads), {}};
-  r.positions.resize(r.refinement.num_vertices());
-  r.refinement.refine_positions(base, SubdivisionRule::classic, r.positions, threads);
+  r.positions = r.refinement.refine_positions(base, SubdivisionRule::classic, threads);
   return r;
 }
 
@@ -82,7 +82,7 @@ void torus_levels(int threads_available) {
   std::printf("%5s %10s %10s %12s %9s %10s %12s %9s\n", "level", "faces", "ms (1 thr)", "Mfaces/s", "B/face",
               "ms (2 thr)", "speed-up", "OpenMesh");
   for (int level = 1; level <= 6; ++level) {
-    const int runs = level <= 4 ? 10 : 3;
+    const int runs = level <= 4 ? 10 : 5;
     double faces = 0;
     bench::reset_peak();
     const double one = best_ms(runs, [&] { faces = refine(torus, level, 1).refinement.num_faces(); });
@@ -127,12 +127,10 @@ void position_only(int threads_available) {
   Mesh moved = torus;
   for (Vec3& p : moved.positions()) p *= 1.01;
   const double full = best_ms(10, [&] { refine(moved, 4, 1); });
-  const double fast =
-      best_ms(20, [&] { r.refinement.refine_positions(moved, SubdivisionRule::classic, r.positions, 1); });
+  const double fast = best_ms(20, [&] { r.refinement.refine_positions(moved, SubdivisionRule::classic, 1); });
   const double fast2 =
       threads_available > 1
-          ? best_ms(20,
-                    [&] { r.refinement.refine_positions(moved, SubdivisionRule::classic, r.positions, 2); })
+          ? best_ms(20, [&] { r.refinement.refine_positions(moved, SubdivisionRule::classic, 2); })
           : fast;
   std::printf(
       "\nlevel-4 torus (%u faces): full refine %.2f ms, position pass only %.2f ms (%.1fx faster);"
@@ -143,7 +141,7 @@ void position_only(int threads_available) {
 void offset_case() {
   const Mesh torus = build_mesh(test::torus(64, 32));
   Refined r = refine(torus, 5, 1);
-  const Mesh level5 = r.refinement.mesh(torus, r.positions);
+  const Mesh level5 = r.refinement.mesh(torus, {r.positions.begin(), r.positions.end()});
   double faces = 0;
   const double ms = best_ms(3, [&] { faces = offset(level5, {0.01}).num_faces(); });
   Mesh solid = offset(level5, {0.01});

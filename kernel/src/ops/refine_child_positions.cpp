@@ -56,10 +56,9 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
     }
   });
 
-  // The smooth rule from the sums over a fan of n faces (classic: twice the neighbour sum).
-  auto smooth = [](const Vec3& here, Vec3 edge_sum, const Vec3& face_sum, bool classic_rule, double n) {
-    if (classic_rule) edge_sum *= 0.5;
-    return ((n - 2.0) * here + (edge_sum + face_sum) / n) / n;
+  // The classic rule's corner sums count each neighbour twice.
+  auto smooth = [classic](const Vec3& here, const Vec3& edge_sum, const Vec3& face_sum, double n) {
+    return smooth_vertex_point(here, classic ? edge_sum * 0.5 : edge_sum, face_sum, n);
   };
 
   // phase: vertex points of P's face points. Fan: quads b..b+n-1; P corner 4c+2 sits between ep(edge of c)
@@ -74,7 +73,7 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
       }
       if (!classic)
         for (Index i = 0; i < n; ++i) edge_sum += out[out_interior + b + (i == 0 ? n - 1 : i - 1)];
-      out[out_vp + f] = smooth(in[f], edge_sum, face_sum, classic, double(n));
+      out[out_vp + f] = smooth(in[f], edge_sum, face_sum, double(n));
     }
   });
 
@@ -117,7 +116,7 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
         edge_sum += out[out_ep + 2 * e + 1];
         edge_sum += out[out_interior + cb];
       }
-      result = smooth(here, edge_sum, face_sum, classic, 4.0);
+      result = smooth(here, edge_sum, face_sum, 4.0);
     }
   });
 
@@ -145,7 +144,7 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
         }
         if (!classic)
           for (Index e : edges) edge_sum += out[out_ep + 2 * e + (g.edge_ends(e)[0] == v ? 0 : 1)];
-        result = smooth(here, edge_sum, face_sum, classic, double(edges.size()));
+        result = smooth(here, edge_sum, face_sum, double(edges.size()));
       }
     }
   });

@@ -61,10 +61,7 @@ void refine_positions(const Parent& p, std::span<const Vec3> in, SubdivisionRule
         } else {
           for (Index e : edges) edge_sum += out[nf + e];
         }
-        // classic: ((n-3) v + 2 avg(midpoints) + avg(faces)) / n = ((n-2) v + avg(neighbours) + avg(faces)) /
-        // n
-        const double n = double(edges.size());
-        result = ((n - 2.0) * here + (edge_sum + face_sum) / n) / n;
+        result = smooth_vertex_point(here, edge_sum, face_sum, double(edges.size()));
       }
     }
   });

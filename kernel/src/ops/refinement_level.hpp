@@ -33,7 +33,7 @@ struct Refinement::Level {
   LargeBuffer<std::array<Index, 2>> edge_corners;  // [1] is no_index on a border edge
   LargeBuffer<std::uint8_t> edge_flags;
   LargeBuffer<Index> fan_corner_offsets, fan_corners, fan_edge_offsets, fan_edges;
-  LargeBuffer<Vec3> positions;  // of every level but the last, reused by each position pass
+  LargeBuffer<Vec3> positions;  // reused by each position pass (the last level's on request)
 
   Index num_faces() const { return Index(corner_vertices.size() / 4); }
   Index num_corners() const { return Index(corner_vertices.size()); }
@@ -89,6 +89,14 @@ class MeshLevelView {
  private:
   const Mesh& m_;
 };
+
+// The smooth vertex rule on a fan of n faces from the sums of its neighbours (or, for the report rule, of
+// its new edge points) and of its face points: classic ((n-3) v + 2 avg(midpoints) + avg(faces)) / n =
+// ((n-2) v + avg(neighbours) + avg(faces)) / n. One reciprocal instead of six divisions.
+inline Vec3 smooth_vertex_point(const Vec3& here, const Vec3& edge_sum, const Vec3& face_sum, double n) {
+  const double inverse = 1.0 / n;
+  return ((n - 2.0) * here + (edge_sum + face_sum) * inverse) * inverse;
+}
 
 // The topology pass from `parent` (a Level or a MeshLevelView) into `child`, with the arrays `detail`
 // asks for. Runs on `threads` threads.

@@ -83,6 +83,12 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
   }
 }
 
+std::span<const Vec3> Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, int threads) {
+  levels_.back().positions.resize(num_vertices());
+  refine_positions(base, rule, levels_.back().positions, threads);
+  return levels_.back().positions;
+}
+
 Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads) const {
   if (!fits(base)) throw InvalidInputError("Refinement::mesh: the base mesh's topology changed");
   if (positions.size() != num_vertices())

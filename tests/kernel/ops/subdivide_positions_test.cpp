@@ -206,6 +206,8 @@ TEST_CASE("the position pass alone reproduces a full refinement after the base m
   big.refine_positions(torus, SubdivisionRule::classic, one, 1);
   big.refine_positions(torus, SubdivisionRule::classic, two, 2);
   CHECK(one == two);
+  const std::span<const Vec3> own = big.refine_positions(torus, SubdivisionRule::classic, 2);
+  CHECK(std::equal(own.begin(), own.end(), one.begin(), one.end()));
   const auto quads = big.quad_vertices();
   const Mesh full = big.mesh(torus, two);
   CHECK(std::equal(quads.begin(), quads.end(), full.corner_vertices().begin(), full.corner_vertices().end()));

@@ -53,6 +53,9 @@ class Refinement {
   // The position pass: gathers every level from the one before into reused buffers and writes the
   // last level into `out` (num_vertices() entries). `base` must fit. Uses up to `threads` threads.
   void refine_positions(const Mesh& base, SubdivisionRule rule, std::span<Vec3> out, int threads = 1);
+  // The same into the refinement's own buffer, reused by every call (no fresh pages, no zero-fill pass):
+  // valid until the next call.
+  std::span<const Vec3> refine_positions(const Mesh& base, SubdivisionRule rule, int threads = 1);
 
   // The last level as a full Mesh with the given positions (from refine_positions), built from the
   // level before it without any search; faces keep the colours and components of their ancestors.
