@@ -1,5 +1,7 @@
 #include "nome/mesh/topology_report.hpp"
 
+#include "nome/mesh/face_orientation.hpp"
+
 namespace nome {
 
 TopologyReport topology_report(const Mesh& mesh) {
@@ -23,31 +25,9 @@ TopologyReport topology_report(const Mesh& mesh) {
   for (Index l = 0; l < mesh.num_boundary_loops(); ++l)
     ++parts[mesh.face_component(mesh.edge(mesh.loop_edges(l).front()).faces[0])].borders;
 
-  // Orientability: propagate an orientation sign face to face; a face reached with both signs means
-  // no consistent orientation exists (the given orientation does not matter, only the Möbius parity).
-  std::vector<signed char> sign(mesh.num_faces(), 0);
-  std::vector<Index> queue;
-  for (Index f0 = 0; f0 < mesh.num_faces(); ++f0) {
-    if (sign[f0] != 0) continue;
-    ComponentTopology& part = parts[mesh.face_component(f0)];
-    sign[f0] = 1;
-    queue.assign(1, f0);
-    for (size_t q = 0; q < queue.size(); ++q) {
-      const Index f = queue[q];
-      for (Index e : mesh.face_edges(f)) {
-        const Edge& edge = mesh.edge(e);
-        const Index g = edge.other_face(f);
-        if (g == no_index) continue;
-        const signed char expected = static_cast<signed char>(edge.is_mobius ? -sign[f] : sign[f]);
-        if (sign[g] == 0) {
-          sign[g] = expected;
-          queue.push_back(g);
-        } else if (sign[g] != expected) {
-          part.orientable = false;
-        }
-      }
-    }
-  }
+  // Orientability: only the Möbius parity of the face-to-face walks matters, not the given orientation.
+  const FaceOrientation orientation = face_orientation(mesh);
+  for (Index k = 0; k < mesh.num_components(); ++k) parts[k].orientable = orientation.component_orientable[k];
 
   for (ComponentTopology& part : parts) {
     part.chi = static_cast<long long>(part.vertices) - part.edges + part.faces;

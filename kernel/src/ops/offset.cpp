@@ -4,6 +4,7 @@
 #include <string>
 
 #include "nome/error.hpp"
+#include "nome/mesh/face_orientation.hpp"
 #include "nome/ops/normals.hpp"
 
 namespace nome {
@@ -178,38 +179,14 @@ class OffsetBuilder {
     for (Edge& e : a.edges) e.faces = {face_of(e.corners[0]), face_of(e.corners[1])};
   }
 
-  // Components without a walk over the (twice as large) output: orient each input component face by
-  // face across its edges (flipping at Möbius edges). A closed component that orients consistently has a
-  // double cover in two pieces, the copies on each side; any other gives one piece.
+  // Components without a walk over the (twice as large) output: a closed component that orients
+  // consistently has a double cover in two pieces, the copies on each side; any other gives one piece.
   void components(MeshArrays& a) const {
-    std::vector<signed char> side(nf_, 0);
-    std::vector<Index> queue;
-    std::vector<Index> first_output(m_.num_components(), no_index);
-    std::vector<char> splits(m_.num_components(), 1);
+    const FaceOrientation orientation = face_orientation(m_);
+    std::vector<char> splits = orientation.component_orientable;
     for (Index l = 0; l < m_.num_boundary_loops(); ++l)
       splits[m_.face_component(m_.edge(m_.loop_edges(l).front()).faces[0])] = 0;
-    queue.reserve(nf_);
-    for (Index f0 = 0; f0 < nf_; ++f0) {
-      if (side[f0] != 0) continue;
-      const Index component = m_.face_component(f0);
-      side[f0] = 1;
-      queue.assign(1, f0);
-      for (size_t q = 0; q < queue.size(); ++q) {
-        const Index f = queue[q];
-        for (Index e : m_.face_edges(f)) {
-          const Edge& edge = m_.edge(e);
-          const Index g = edge.other_face(f);
-          if (g == no_index) continue;
-          const signed char expected = static_cast<signed char>(edge.is_mobius ? -side[f] : side[f]);
-          if (side[g] == 0) {
-            side[g] = expected;
-            queue.push_back(g);
-          } else if (side[g] != expected) {
-            splits[component] = 0;
-          }
-        }
-      }
-    }
+    std::vector<Index> first_output(m_.num_components(), no_index);
     a.num_components = 0;
     for (Index k = 0; k < m_.num_components(); ++k) {
       first_output[k] = a.num_components;
@@ -219,8 +196,9 @@ class OffsetBuilder {
     for (Index f = 0; f < nf_; ++f) {
       const Index k = m_.face_component(f);
       const Index other = splits[k] ? 1 : 0;
-      a.face_components[f] = first_output[k] + (side[f] > 0 ? 0 : other);
-      a.face_components[nf_ + f] = first_output[k] + (side[f] > 0 ? other : 0);
+      const bool positive = orientation.face_signs[f] > 0;
+      a.face_components[f] = first_output[k] + (positive ? 0 : other);
+      a.face_components[nf_ + f] = first_output[k] + (positive ? other : 0);
     }
     for (Index l = 0; l < m_.num_boundary_loops(); ++l)
       for (Index e : m_.loop_edges(l))

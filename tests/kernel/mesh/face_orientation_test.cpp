@@ -1,0 +1,32 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+
+#include "nome/mesh/face_orientation.hpp"
+#include "support/shapes.hpp"
+
+using namespace nome;
+
+TEST_CASE("face signs undo random reversals of an orientable surface's faces", "[kernel]") {
+  std::mt19937 rng{42};
+  const PolygonSoup reversed = test::reverse_random_faces(test::torus(12, 8), 0.5, rng);
+  const FaceOrientation o = face_orientation(build_mesh(reversed));
+  REQUIRE(o.component_orientable == std::vector<char>{1});
+  // Reverse again every face of sign -1: no Möbius edge is left.
+  PolygonSoup fixed = reversed;
+  for (Index f = 0; f < fixed.num_faces(); ++f)
+    if (o.face_signs[f] < 0)
+      std::reverse(fixed.face_vertices.begin() + fixed.face_offsets[f],
+                   fixed.face_vertices.begin() + fixed.face_offsets[f + 1]);
+  const Mesh m = build_mesh(fixed);
+  CHECK(std::none_of(m.edges().begin(), m.edges().end(), [](const Edge& e) { return e.is_mobius; }));
+}
+
+TEST_CASE("each component is judged on its own", "[kernel]") {
+  const Mesh m = build_mesh(test::disjoint_union(test::mobius_band(9, 3), test::cube()));
+  const FaceOrientation o = face_orientation(m);
+  REQUIRE(o.component_orientable.size() == 2);
+  CHECK(o.component_orientable[m.face_component(0)] == 0);
+  CHECK(o.component_orientable[m.face_component(m.num_faces() - 1)] == 1);
+}
