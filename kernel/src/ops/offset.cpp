@@ -57,22 +57,25 @@ class OffsetBuilder {
     }
   }
 
-  Mesh build(const Normals& normals, double distance) {
+  Mesh build(const Normals& normals, double distance) const {
     MeshArrays a;
     a.positions.resize(2 * size_t(nv_out_));
     write_offset_positions(m_, normals, distance, a.positions);
-    faces(a);
+    faces(a.face_offsets, a.corner_vertices);
     edges(a);
     fans(a);
-    if (!m_.face_colors().empty()) {
-      a.face_colors.reserve(2 * size_t(nf_) + num_border_);
-      for (int copy = 0; copy < 2; ++copy)
-        a.face_colors.insert(a.face_colors.end(), m_.face_colors().begin(), m_.face_colors().end());
-      for (Index l = 0; l < m_.num_boundary_loops(); ++l)
-        for (Index e : m_.loop_edges(l)) a.face_colors.push_back(m_.face_colors()[m_.edge(e).faces[0]]);
-    }
+    a.face_colors = face_colors();
     components(a);
     return assemble_mesh(std::move(a));
+  }
+
+  PolygonSoup polygons(const Normals& normals, double distance) const {
+    PolygonSoup s;
+    s.positions.resize(2 * size_t(nv_out_));
+    write_offset_positions(m_, normals, distance, s.positions);
+    faces(s.face_offsets, s.face_vertices);
+    s.face_colors = face_colors();
+    return s;
   }
 
  private:
@@ -97,18 +100,18 @@ class OffsetBuilder {
     return edge.vertices[0] == v ? edge.corners[0] : m_.next_corner(edge.corners[0]);
   }
 
-  void faces(MeshArrays& a) const {
-    a.face_offsets.resize(2 * size_t(nf_) + num_border_ + 1);
+  void faces(std::vector<Index>& face_offsets, std::vector<Index>& corner_vertices) const {
+    face_offsets.resize(2 * size_t(nf_) + num_border_ + 1);
     for (Index f = 0; f <= nf_; ++f) {
-      a.face_offsets[f] = m_.face_offsets()[f];
-      a.face_offsets[nf_ + f] = nc_ + m_.face_offsets()[f];
+      face_offsets[f] = m_.face_offsets()[f];
+      face_offsets[nf_ + f] = nc_ + m_.face_offsets()[f];
     }
-    for (Index j = 0; j <= num_border_; ++j) a.face_offsets[2 * nf_ + j] = 2 * nc_ + 4 * j;
-    a.corner_vertices.resize(2 * size_t(nc_) + 4 * size_t(num_border_));
+    for (Index j = 0; j <= num_border_; ++j) face_offsets[2 * nf_ + j] = 2 * nc_ + 4 * j;
+    corner_vertices.resize(2 * size_t(nc_) + 4 * size_t(num_border_));
     for (Index c = 0; c < nc_; ++c) {
       const Index v = m_.corner_vertex(c);
-      a.corner_vertices[c] = out_vertex(v, positive_side(c));
-      a.corner_vertices[negative_corner_at_vertex(c)] = out_vertex(v, 1 - positive_side(c));
+      corner_vertices[c] = out_vertex(v, positive_side(c));
+      corner_vertices[negative_corner_at_vertex(c)] = out_vertex(v, 1 - positive_side(c));
     }
     // Border quad (b+, a+, a-, b-) for border edge a -> b of its face: it runs against both copies.
     for (Index l = 0; l < m_.num_boundary_loops(); ++l)
@@ -116,12 +119,24 @@ class OffsetBuilder {
         const Edge& edge = m_.edge(e);
         const Index j = loop_of_edge_[e], ca = edge.corners[0], cb = m_.next_corner(ca);
         const Index va = edge.vertices[0], vb = edge.vertices[1];
-        Index* q = a.corner_vertices.data() + ribbon_corner(j, 0);
+        Index* q = corner_vertices.data() + ribbon_corner(j, 0);
         q[0] = out_vertex(vb, positive_side(cb));
         q[1] = out_vertex(va, positive_side(ca));
         q[2] = out_vertex(va, 1 - positive_side(ca));
         q[3] = out_vertex(vb, 1 - positive_side(cb));
       }
+  }
+
+  // A border quad takes the colour of its edge's face.
+  std::vector<Color> face_colors() const {
+    std::vector<Color> colors;
+    if (m_.face_colors().empty()) return colors;
+    colors.reserve(2 * size_t(nf_) + num_border_);
+    for (int copy = 0; copy < 2; ++copy)
+      colors.insert(colors.end(), m_.face_colors().begin(), m_.face_colors().end());
+    for (Index l = 0; l < m_.num_boundary_loops(); ++l)
+      for (Index e : m_.loop_edges(l)) colors.push_back(m_.face_colors()[m_.edge(e).faces[0]]);
+    return colors;
   }
 
   // Input edge e gives edge 2e (in the positive copy of its first face) and 2e+1 (in the negative copy);
@@ -281,6 +296,11 @@ Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& optio
   Mesh solid = OffsetBuilder(mesh).build(normals, options.distance);
   if (options.subdivision_levels == 0) return solid;
   return subdivide(solid, {options.subdivision_levels, options.rule});
+}
+
+PolygonSoup offset_polygons(const Mesh& mesh, const Normals& normals, double distance) {
+  check_distance("offset_polygons", distance);
+  return OffsetBuilder(mesh).polygons(normals, distance);
 }
 
 void offset_positions(const Mesh& mesh, double distance, std::span<Vec3> out) {

@@ -108,6 +108,25 @@ TEST_CASE("offset_positions moves the vertices of a kept offset topology", "[ker
   CHECK(solid.positions() == offset(moved, {0.05}).positions());
 }
 
+TEST_CASE("offset_polygons gives offset()'s positions, polygons and colours without the adjacency",
+          "[kernel]") {
+  PolygonSoup band = test::mobius_band(10, 2);
+  for (Index f = 0; f < band.num_faces(); ++f)
+    band.face_colors.push_back(Color(0.1f * float(f % 7), 0.5f, 1.0f));
+  const PolygonSoup shapes[] = {band, test::klein_bottle(8, 6), test::grid(3, 2)};
+  for (const PolygonSoup& shape : shapes) {
+    const Mesh m = build_mesh(shape);
+    const Mesh solid = offset(m, {0.05});
+    const PolygonSoup polygons = offset_polygons(m, compute_normals(m), 0.05);
+    CHECK(polygons.positions == solid.positions());
+    CHECK(polygons.face_offsets == solid.face_offsets());
+    CHECK(polygons.face_vertices == solid.corner_vertices());
+    CHECK(polygons.face_colors == solid.face_colors());
+  }
+  CHECK_THROWS_AS(offset_polygons(build_mesh(band), compute_normals(build_mesh(band)), 0.0),
+                  InvalidInputError);
+}
+
 TEST_CASE("offset refuses a distance that is not positive and finite", "[kernel]") {
   const Mesh cube = build_mesh(test::cube());
   for (double d : {0.0, -0.1, std::numeric_limits<double>::infinity(), std::nan("")}) {

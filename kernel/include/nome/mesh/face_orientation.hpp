@@ -10,7 +10,7 @@ namespace nome {
 // across edges that flips the sign at every Möbius edge. A component is orientable when no face is
 // reached with both signs; then flipping its faces of sign -1 orients it consistently.
 struct FaceOrientation {
-  std::vector<signed char> face_signs;      // +1 or -1
+  std::vector<signed char> face_signs;     // +1 or -1
   std::vector<char> component_orientable;  // per component of the mesh
 };
 

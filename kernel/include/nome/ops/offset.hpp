@@ -28,6 +28,11 @@ Mesh offset(const Mesh& mesh, const OffsetOptions& options);
 // The same with the mesh's normals already computed (a caller that also wants their warnings).
 Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options);
 
+// The same solid as positions and polygons only, numbered as offset() numbers them, without the edges,
+// fans and components a Mesh carries: what export and drawing need, in a fraction of offset()'s time and
+// memory. Throws as offset() does.
+PolygonSoup offset_polygons(const Mesh& mesh, const Normals& normals, double distance);
+
 // The position pass alone: writes the positions offset(mesh, {distance}) would have into `out`
 // (2 per vertex that has faces), for a caller that keeps the topology and moves only the vertices.
 void offset_positions(const Mesh& mesh, double distance, std::span<Vec3> out);
