@@ -6,50 +6,74 @@
 
 namespace nome {
 
+namespace {
+
+// Newell's term of the polygon side a -> b.
+Vec3 newell_term(const Vec3& a, const Vec3& b) {
+  return Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+}
+
+}  // namespace
+
 Vec3 face_area_normal(const Mesh& mesh, Index f) {
   const auto vs = mesh.face_vertices(f);
   Vec3 n(0.0);
   const Vec3* a = &mesh.position(vs.back());
   for (Index v : vs) {
-    const Vec3& b = mesh.position(v);
-    n += Vec3((a->y - b.y) * (a->z + b.z), (a->z - b.z) * (a->x + b.x), (a->x - b.x) * (a->y + b.y));
-    a = &b;
+    n += newell_term(*a, mesh.position(v));
+    a = &mesh.position(v);
   }
   return n;
 }
 
 Normals compute_normals(const Mesh& mesh) {
+  // Raw arrays in the loops: these run over every face and vertex of meshes of millions of faces.
+  const Vec3* p = mesh.positions().data();
+  const Index* offsets = mesh.face_offsets().data();
+  const Index* corners = mesh.corner_vertices().data();
+  const signed char* signs = mesh.corner_signs().data();
   Normals out;
   out.faces.resize(mesh.num_faces());
+  out.vertices.assign(mesh.num_vertices(), Vec3(0.0));
+  // One pass over the faces, in corner order: each face's normal is added to its vertices' sums with its
+  // corner's sign right away (streaming reads; gathering over the fans instead reads three arrays at
+  // random per corner).
   for (Index f = 0; f < mesh.num_faces(); ++f) {
-    const Vec3 n = face_area_normal(mesh, f);
-    const double len = glm::length(n);
-    // Relative threshold: area against the squared length of the face's longest side.
+    // Newell's normal and the longest side in one walk round the face. The degeneracy threshold is
+    // relative: area against the squared length of the longest side.
+    Vec3 n(0.0);
     double extent_squared = 0.0;
-    const auto vs = mesh.face_vertices(f);
-    const Vec3* a = &mesh.position(vs.back());
-    for (Index v : vs) {
-      const Vec3 side = mesh.position(v) - *a;
+    const Vec3* a = &p[corners[offsets[f + 1] - 1]];
+    for (Index c = offsets[f]; c < offsets[f + 1]; ++c) {
+      const Vec3& b = p[corners[c]];
+      n += newell_term(*a, b);
+      const Vec3 side = b - *a;
       extent_squared = std::max(extent_squared, glm::dot(side, side));
-      a = &mesh.position(v);
+      a = &b;
     }
+    const double len = glm::length(n);
     if (!(len > 1e-14 * extent_squared) || extent_squared == 0.0) {
       out.faces[f] = Vec3(0.0);
       out.degenerate_faces.push_back(f);
-    } else {
-      out.faces[f] = n / len;
+      continue;
+    }
+    n /= len;
+    out.faces[f] = n;
+    for (Index c = offsets[f]; c < offsets[f + 1]; ++c) {
+      Vec3& sum = out.vertices[corners[c]];
+      if (signs[c] > 0)
+        sum += n;
+      else
+        sum -= n;
     }
   }
-  out.vertices.resize(mesh.num_vertices());
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
-    Vec3 sum(0.0);
-    for (Index c : mesh.vertex_corners(v))
-      sum += double(mesh.corner_sign(c)) * out.faces[mesh.corner_face(c)];
-    const double len = glm::length(sum);
+    Vec3& n = out.vertices[v];
+    const double len = glm::length(n);
     if (len > 1e-12) {
-      out.vertices[v] = sum / len;
+      n /= len;
     } else {
-      out.vertices[v] = Vec3(0.0);
+      n = Vec3(0.0);
       if (!mesh.is_isolated_vertex(v)) out.degenerate_vertices.push_back(v);
     }
   }
