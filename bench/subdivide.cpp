@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "nome/ops/offset.hpp"
+#include "nome/ops/pipeline.hpp"
 #include "nome/ops/subdivide.hpp"
 #include "support/memory_counter.hpp"
 #include "support/shapes.hpp"
@@ -136,6 +137,20 @@ void position_only(int threads_available) {
       "\nlevel-4 torus (%u faces): full refine %.2f ms, position pass only %.2f ms (%.1fx faster);"
       " 2 threads %.2f ms\n",
       r.refinement.num_faces(), full, fast, full / fast, fast2);
+  // The same through the pipeline, as a slider drives it: a new topology rebuilds the refinement and the
+  // level-4 Mesh with its adjacency; moved vertices re-run only the position pass into the cached Mesh.
+  PipelineOptions options;
+  options.subdivision_levels = 4;
+  const double rebuild = best_ms(5, [&] { Pipeline().run(moved, options); });
+  Pipeline pipeline;
+  pipeline.run(torus, options);
+  bool at_torus = true;
+  const double slide = best_ms(20, [&] {
+    pipeline.run(at_torus ? moved : torus, options);
+    at_torus = !at_torus;
+  });
+  std::printf("pipeline, level 4: rebuild %.2f ms, moved vertices %.2f ms (%.1fx faster)\n", rebuild, slide,
+              rebuild / slide);
 }
 
 void offset_case() {

@@ -153,12 +153,11 @@ template <class Parent>
 void refine_topology(const Parent& p, Level& child, LevelDetail detail, int threads) {
   const size_t nc = p.num_corners();
   const bool full = detail == LevelDetail::full;
-  const bool with_corner_edges = detail != LevelDetail::quads;
   child.vertex_count = p.num_faces() + p.num_edges() + p.num_vertices();
   child.edge_count = Index(2 * size_t(p.num_edges()) + nc);
-  child.corner_vertices.resize(4 * nc);
-  child.corner_edges.resize(with_corner_edges ? 4 * nc : 0);
-  child_corners(p, child, with_corner_edges, threads);
+  child.corner_vertices.resize(detail == LevelDetail::counts ? 0 : 4 * nc);
+  child.corner_edges.resize(full ? 4 * nc : 0);
+  if (detail != LevelDetail::counts) child_corners(p, child, full, threads);
   if (!full) {
     child.edge_corners = {};
     child.edge_flags = {};
@@ -171,7 +170,38 @@ void refine_topology(const Parent& p, Level& child, LevelDetail detail, int thre
   child_fans(p, child, threads);
 }
 
+// Grandparent corner c gives child quad c (child_corners), whose corner 4c+k gives grandchild quad
+// 4c+k: (vertex point of the child quad's k-th vertex, edge point of its k-th edge, face point of child
+// quad c, edge point of its edge k-1). The 16 corners of c are written in one go, in order.
+template <class Grandparent>
+void refine_grandchild_quads(const Grandparent& g, Level& grandchild, int threads) {
+  const Index nf = g.num_faces(), ne = g.num_edges(), nc = g.num_corners();
+  const Index child_edges = 2 * ne + nc;
+  const Index ep = nc, vp = nc + child_edges;  // the grandchild's edge and vertex points
+  grandchild.vertex_count = vp + nf + ne + g.num_vertices();
+  grandchild.edge_count = 2 * child_edges + 4 * nc;
+  grandchild.corner_vertices.resize(16 * size_t(nc));
+  parallel_for(nc, threads, [&](Index begin, Index end) {
+    for (Index c = begin; c < end; ++c) {
+      const Index v = g.corner_vertex(c), pc = g.prev_corner(c);
+      const Index leaving = g.corner_edge(c), arriving = g.corner_edge(pc);
+      const Index vertices[4] = {nf + ne + v, nf + leaving, g.corner_face(c), nf + arriving};
+      const Index edges[4] = {half_edge_child(g, leaving, v), 2 * ne + c, 2 * ne + pc,
+                              half_edge_child(g, arriving, v)};
+      Index* q = grandchild.corner_vertices.data() + 16 * size_t(c);
+      for (int k = 0; k < 4; ++k) {
+        q[4 * k] = vp + vertices[k];
+        q[4 * k + 1] = ep + edges[k];
+        q[4 * k + 2] = c;
+        q[4 * k + 3] = ep + edges[(k + 3) & 3];
+      }
+    }
+  });
+}
+
 template void refine_topology(const MeshLevelView&, Level&, LevelDetail, int);
 template void refine_topology(const Level&, Level&, LevelDetail, int);
+template void refine_grandchild_quads(const MeshLevelView&, Level&, int);
+template void refine_grandchild_quads(const Level&, Level&, int);
 
 }  // namespace nome

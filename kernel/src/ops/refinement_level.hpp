@@ -19,15 +19,16 @@ inline constexpr std::uint8_t sharp_flag = 2;
 inline constexpr std::uint8_t boundary_flag = 4;
 
 // How much of a level refine_topology builds. The position pass into level k reads the full topology of
-// level k-2 only (refine_child_positions), so the last level needs only its quads and the one before it
-// only its corners (to number the last level's quads): the two largest levels never get edges or fans.
-enum class LevelDetail { quads, corners, full };
+// level k-2 only (refine_child_positions), and the last level's quads come from the level two before it
+// (refine_grandchild_quads): so the level before the last needs only its counts, and the two largest
+// levels never get edges or fans.
+enum class LevelDetail { counts, quads, full };
 
 struct Refinement::Level {
   Index vertex_count = 0, edge_count = 0;
   Index num_vertices() const { return vertex_count; }
-  LargeBuffer<Index> corner_vertices;  // 4 per face
-  LargeBuffer<Index> corner_edges;     // with LevelDetail::corners or full
+  LargeBuffer<Index> corner_vertices;  // 4 per face, unless only counts were asked for
+  LargeBuffer<Index> corner_edges;     // with LevelDetail::full only
   // With LevelDetail::full only. An edge's end vertices are those of its first corner and the next one
   // (no array of their own, to bound the peak memory). Corner signs are left to Refinement::mesh().
   LargeBuffer<std::array<Index, 2>> edge_corners;  // [1] is no_index on a border edge
@@ -89,6 +90,10 @@ class MeshLevelView {
  private:
   const Mesh& m_;
 };
+
+// The quads of the level after P (P = the child of `grandparent`) straight from the grandparent's topology.
+template <class Grandparent>
+void refine_grandchild_quads(const Grandparent& grandparent, Refinement::Level& grandchild, int threads);
 
 // The smooth vertex rule on a fan of n faces from the sums of its neighbours (or, for the report rule, of
 // its new edge points) and of its face points: classic ((n-3) v + 2 avg(midpoints) + avg(faces)) / n =

@@ -26,12 +26,20 @@ Refinement::Refinement(const Mesh& base, int levels, int threads)
   if (levels < 1)
     throw InvalidInputError("Refinement: levels must be at least 1, got " + std::to_string(levels));
   levels_.resize(size_t(levels));
-  for (int k = 0; k < levels; ++k) {
-    const LevelDetail detail = k + 1 == levels   ? LevelDetail::quads
-                               : k + 2 == levels ? LevelDetail::corners
-                                                 : LevelDetail::full;
+  const MeshLevelView view(base);
+  for (size_t k = 0; k < levels_.size(); ++k) {
+    if (k >= 1 && k + 1 == levels_.size()) {
+      if (k == 1)
+        refine_grandchild_quads(view, levels_[k], threads);
+      else
+        refine_grandchild_quads(levels_[k - 2], levels_[k], threads);
+      continue;
+    }
+    const LevelDetail detail = k + 1 == levels_.size()   ? LevelDetail::quads
+                               : k + 2 == levels_.size() ? LevelDetail::counts
+                                                         : LevelDetail::full;
     if (k == 0)
-      refine_topology(MeshLevelView(base), levels_[0], detail, threads);
+      refine_topology(view, levels_[0], detail, threads);
     else
       refine_topology(levels_[k - 1], levels_[k], detail, threads);
   }

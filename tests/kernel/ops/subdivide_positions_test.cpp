@@ -215,7 +215,7 @@ TEST_CASE("the position pass alone reproduces a full refinement after the base m
 
 TEST_CASE("refining several levels at once gives the bits of refining one level at a time", "[kernel]") {
   // From level 2 on, the position pass reads the topology two levels up (refine_child_positions); one
-  // level at a time always runs the plain pass over the parent's own fans.
+  // level at a time always runs the plain pass over the parent's own fans and builds every level in full.
   PolygonSoup creased = jittered(test::grid(3, 3), 0.2);
   creased.sharp_edges = {{5, 6}, {6, 7}, {6, 10}};
   const std::vector<PolygonSoup> soups = {
@@ -230,6 +230,11 @@ TEST_CASE("refining several levels at once gives the bits of refining one level 
         const Mesh at_once = subdivide(build_mesh(soup), {level, rule});
         CHECK(at_once.positions() == stepwise.positions());
         CHECK(at_once.corner_vertices() == stepwise.corner_vertices());
+        // The last level's quads alone come from the level two before it (refine_grandchild_quads).
+        const Refinement refinement(build_mesh(soup), level);
+        const auto quads = refinement.quad_vertices();
+        CHECK(std::equal(quads.begin(), quads.end(), stepwise.corner_vertices().begin(),
+                         stepwise.corner_vertices().end()));
       }
       Refinement refinement(build_mesh(soup), 3);
       std::vector<Vec3> two_threads(refinement.num_vertices());
