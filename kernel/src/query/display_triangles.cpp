@@ -32,13 +32,15 @@ std::vector<Vec2> project(const Mesh& mesh, std::span<const Index> vertices, con
   return points;
 }
 
-bool is_convex(const std::vector<Vec2>& points) {
-  const size_t n = points.size();
+// Every corner turns the same way around the normal: the sign of the turn in the plane of the normal
+// (what the projection would give), found without projecting (most faces are convex: no allocation).
+bool is_convex(const Mesh& mesh, std::span<const Index> vertices, const Vec3& normal) {
+  const size_t n = vertices.size();
   for (size_t i = 0; i < n; ++i) {
-    const Vec2& a = points[(i + n - 1) % n];
-    const Vec2& b = points[i];
-    const Vec2& c = points[(i + 1) % n];
-    if (cross(b - a, c - b) < 0.0) return false;
+    const Vec3& a = mesh.position(vertices[(i + n - 1) % n]);
+    const Vec3& b = mesh.position(vertices[i]);
+    const Vec3& c = mesh.position(vertices[(i + 1) % n]);
+    if (glm::dot(glm::cross(b - a, c - b), normal) < 0.0) return false;
   }
   return true;
 }
@@ -80,22 +82,16 @@ DisplayTriangles display_triangles(const Mesh& mesh) {
   out.corners.reserve(count);
   out.faces.reserve(count);
   std::vector<std::array<Index, 3>> local;
-  std::vector<Vec2> points;
   for (Index f = 0; f < mesh.num_faces(); ++f) {
     const Index first = mesh.face_first_corner(f);
     const Index degree = mesh.face_degree(f);
     local.clear();
     const Vec3 normal = face_area_normal(mesh, f);
     const double length = glm::length(normal);
-    bool is_fan = degree == 3 || !(length > 0.0);
-    if (!is_fan) {
-      points = project(mesh, mesh.face_vertices(f), normal / length);
-      is_fan = is_convex(points);
-    }
-    if (is_fan) {
+    if (degree == 3 || !(length > 0.0) || is_convex(mesh, mesh.face_vertices(f), normal)) {
       for (Index i = 1; i + 1 < degree; ++i) local.push_back({0, i, i + 1});
     } else {
-      clip_ears(points, local);
+      clip_ears(project(mesh, mesh.face_vertices(f), normal / length), local);
     }
     for (const auto& t : local) {
       out.corners.push_back({first + t[0], first + t[1], first + t[2]});

@@ -1,22 +1,23 @@
 #include "nome/query/triangle_bvh.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
-#include <numeric>
+#include <optional>
 #include <thread>
 #include <utility>
 
 namespace nome {
 namespace {
 
-// Build-time boxes in float (half the memory traffic of double), rounded outward so that they still
-// contain the double-precision triangles; node boxes are stored in double.
+// An axis-aligned box in double, as the nodes store it: it holds its triangles exactly.
 struct Box {
-  glm::vec3 lower{std::numeric_limits<float>::infinity()};
-  glm::vec3 upper{-std::numeric_limits<float>::infinity()};
+  Vec3 lower{std::numeric_limits<double>::infinity()};
+  Vec3 upper{-std::numeric_limits<double>::infinity()};
 
-  void grow(const glm::vec3& p) {
+  void grow(const Vec3& p) {
     lower = glm::min(lower, p);
     upper = glm::max(upper, p);
   }
@@ -24,26 +25,19 @@ struct Box {
     lower = glm::min(lower, b.lower);
     upper = glm::max(upper, b.upper);
   }
-  float half_area() const {
-    const glm::vec3 d = upper - lower;
-    return d.x < 0.0f ? 0.0f : d.x * d.y + d.y * d.z + d.z * d.x;
-  }
 };
 
-float round_down(double x) {
-  const float f = static_cast<float>(x);
-  return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-float round_up(double x) {
-  const float f = static_cast<float>(x);
-  return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
+// A triangle's corner positions, looked up where needed: storing a box per triangle costs more in
+// page faults for a million triangles than the lookups do.
+struct TrianglePoints {
+  const std::vector<Vec3>& positions;
+  const std::vector<Index>& corner_vertices;
+  const DisplayTriangles& triangles;
 
-// One triangle during the build: partitions move these records, so each pass reads memory in order.
-struct BuildItem {
-  Box box;
-  Index triangle;
-  glm::vec3 centroid() const { return 0.5f * (box.lower + box.upper); }
+  const Vec3& operator()(Index t, int corner) const {
+    return positions[corner_vertices[triangles.corners[t][corner]]];
+  }
+  Vec3 centroid(Index t) const { return ((*this)(t, 0) + (*this)(t, 1) + (*this)(t, 2)) / 3.0; }
 };
 
 // Slab test widened by PBRT's 1 + 2 gamma(3) so rounding never drops a triangle lying on a box face.
@@ -66,137 +60,102 @@ inline bool ray_hits_box(const Vec3& lower, const Vec3& upper, const Vec3& origi
   return true;
 }
 
-// Median splits below this depth keep the whole tree under max_sah_depth + 32 levels (2^32 triangles).
-constexpr Index max_sah_depth = 64;
+// Morton codes: 10 bits per axis of the triangle's centroid in a box around all of them, so that
+// sorting by code puts triangles near each other in space next to each other in memory (Karras 2012).
+constexpr int morton_bits = 10;
+
+std::uint32_t spread_bits(std::uint32_t x) {
+  x = (x | (x << 16)) & 0x030000FFu;
+  x = (x | (x << 8)) & 0x0300F00Fu;
+  x = (x | (x << 4)) & 0x030C30C3u;
+  x = (x | (x << 2)) & 0x09249249u;
+  return x;
+}
+
+std::uint32_t morton_code(const Vec3& centroid, const Box& grid) {
+  const Vec3 extent = grid.upper - grid.lower;
+  std::uint32_t code = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double cells = double(1 << morton_bits);
+    const double x = extent[axis] > 0.0 ? (centroid[axis] - grid.lower[axis]) / extent[axis] * cells : 0.0;
+    const auto cell = std::uint32_t(std::clamp(x, 0.0, cells - 1.0));
+    code |= spread_bits(cell) << (2 - axis);
+  }
+  return code;
+}
+
+// Keys are (code << 32 | triangle); a stable LSD radix sort on the code's bits keeps equal codes in
+// triangle order, so the tree does not depend on the sort.
+void sort_by_code(std::vector<std::uint64_t>& keys) {
+  constexpr int digit_bits = morton_bits;
+  constexpr std::uint64_t digit_mask = (1u << digit_bits) - 1;
+  std::vector<std::uint64_t> sorted(keys.size());
+  for (int shift = 32; shift < 32 + 3 * morton_bits; shift += digit_bits) {
+    std::vector<Index> offsets((1u << digit_bits) + 1, 0);
+    for (const std::uint64_t k : keys) ++offsets[((k >> shift) & digit_mask) + 1];
+    for (std::size_t d = 1; d < offsets.size(); ++d) offsets[d] += offsets[d - 1];
+    for (const std::uint64_t k : keys) sorted[offsets[(k >> shift) & digit_mask]++] = k;
+    keys.swap(sorted);
+  }
+}
+
+// Builds a subtree over keys[begin, end) (sorted by code) into `nodes`, its root first and each node's
+// children adjacent. A node splits where the highest bit that differs between its first and last code
+// changes (a spatial median), or in the middle when all its codes are equal. Returns the node's box.
+class SubtreeBuilder {
+ public:
+  SubtreeBuilder(const std::vector<std::uint64_t>& keys, const TrianglePoints& points, Index max_leaf_size,
+                 std::vector<BvhNode>& nodes)
+      : keys_(keys), points_(points), max_leaf_size_(std::max<Index>(1, max_leaf_size)), nodes_(nodes) {}
+
+  Box build(Index begin, Index end) {
+    nodes_.reserve(nodes_.size() + 2 * ((end - begin) / max_leaf_size_) + 1);
+    nodes_.push_back(BvhNode{});
+    return build_node(Index(nodes_.size() - 1), begin, end);
+  }
+
+  // Where a node over keys[begin, end) splits, or none for a leaf.
+  static std::optional<Index> split(const std::vector<std::uint64_t>& keys, Index begin, Index end,
+                                    Index max_leaf_size) {
+    if (end - begin <= max_leaf_size) return std::nullopt;
+    const std::uint64_t differing = (keys[begin] ^ keys[end - 1]) >> 32;
+    if (differing == 0) return begin + (end - begin) / 2;
+    const int bit = 63 - std::countl_zero(differing) + 32;
+    const auto first_set = std::partition_point(keys.begin() + begin, keys.begin() + end,
+                                                [bit](std::uint64_t k) { return ((k >> bit) & 1u) == 0; });
+    return Index(first_set - keys.begin());
+  }
+
+ private:
+  Box build_node(Index node, Index begin, Index end) {
+    Box box;
+    const auto mid = split(keys_, begin, end, max_leaf_size_);
+    if (!mid) {
+      for (Index i = begin; i < end; ++i)
+        for (int corner = 0; corner < 3; ++corner) box.grow(points_(Index(keys_[i]), corner));
+      nodes_[node].first = begin;
+      nodes_[node].count = end - begin;
+    } else {
+      const Index left = Index(nodes_.size());
+      nodes_.push_back(BvhNode{});
+      nodes_.push_back(BvhNode{});
+      box = build_node(left, begin, *mid);
+      box.grow(build_node(left + 1, *mid, end));
+      nodes_[node].first = left;
+      nodes_[node].count = 0;
+    }
+    nodes_[node].lower = box.lower;
+    nodes_[node].upper = box.upper;
+    return box;
+  }
+
+  const std::vector<std::uint64_t>& keys_;
+  const TrianglePoints& points_;
+  Index max_leaf_size_;
+  std::vector<BvhNode>& nodes_;
+};
+
 constexpr int traversal_stack_size = 128;
-
-// One node to build: its triangles items[begin, end), bounds, and centroid range (from the parent's
-// bins, so that every level costs one binning pass and one partition over its triangles).
-struct BuildTask {
-  Index node, begin, end, depth;
-  Box bounds, centroid_bounds;
-};
-
-struct BinScratch {
-  explicit BinScratch(Index bins)
-      : bins(std::max<Index>(2, bins)),
-        boxes(this->bins),
-        left(this->bins),
-        right(this->bins),
-        counts(this->bins) {}
-  Index bins;
-  std::vector<Box> boxes, left, right;
-  std::vector<Index> counts;
-};
-
-// Splits a task into two children (binned SAH, Wald 2007, along the axis of largest centroid extent;
-// median split when SAH finds nothing or the tree is already deep); false when it is a leaf.
-bool split_task(std::vector<BuildItem>& items, const BuildTask& task, const BvhOptions& options,
-                BinScratch& scratch, BuildTask children[2]) {
-  const Index count = task.end - task.begin;
-  if (count <= options.max_leaf_size) return false;
-  const glm::vec3 extent = task.centroid_bounds.upper - task.centroid_bounds.lower;
-  int axis = 0;
-  if (extent.y > extent[axis]) axis = 1;
-  if (extent.z > extent[axis]) axis = 2;
-  Index mid = task.begin + count / 2;
-  Box child_bounds[2], child_centroids[2];
-  bool is_split = false;
-  const Index bins = scratch.bins;
-  if (extent[axis] > 0.0f && task.depth < max_sah_depth) {
-    const float scale = float(bins) / extent[axis];
-    const float origin = task.centroid_bounds.lower[axis];
-    auto bin_of = [&](const BuildItem& it) {
-      const float x = (it.centroid()[axis] - origin) * scale;
-      return x >= 0.0f ? std::min<Index>(bins - 1, Index(std::min(x, float(bins)))) : Index{0};
-    };
-    std::fill(scratch.boxes.begin(), scratch.boxes.end(), Box{});
-    std::fill(scratch.counts.begin(), scratch.counts.end(), 0);
-    for (Index i = task.begin; i < task.end; ++i) {
-      const Index b = bin_of(items[i]);
-      scratch.boxes[b].grow(items[i].box);
-      ++scratch.counts[b];
-    }
-    Box right, left;
-    for (Index b = bins - 1; b > 0; --b) {
-      right.grow(scratch.boxes[b]);
-      scratch.right[b] = right;
-    }
-    Index left_count = 0, best_split = 0;
-    float best_cost = std::numeric_limits<float>::infinity();
-    for (Index b = 0; b + 1 < bins; ++b) {
-      left.grow(scratch.boxes[b]);
-      scratch.left[b] = left;
-      left_count += scratch.counts[b];
-      const float cost =
-          left.half_area() * float(left_count) + scratch.right[b + 1].half_area() * float(count - left_count);
-      if (left_count > 0 && left_count < count && cost < best_cost) {
-        best_cost = cost;
-        best_split = b + 1;
-      }
-    }
-    if (best_split > 0) {
-      const auto split = std::partition(items.begin() + task.begin, items.begin() + task.end,
-                                        [&](const BuildItem& it) { return bin_of(it) < best_split; });
-      mid = Index(split - items.begin());
-      child_bounds[0] = scratch.left[best_split - 1];
-      child_bounds[1] = scratch.right[best_split];
-      // The children's centroid ranges: the parent's, cut at the split plane. A centroid rounded
-      // across the plane only lands in an end bin of the child: binning stays a heuristic, while node
-      // boxes are exact.
-      const float plane = origin + float(best_split) / scale;
-      child_centroids[0] = child_centroids[1] = task.centroid_bounds;
-      child_centroids[0].upper[axis] = std::min(plane, task.centroid_bounds.upper[axis]);
-      child_centroids[1].lower[axis] = std::max(plane, task.centroid_bounds.lower[axis]);
-      is_split = true;
-    }
-  }
-  if (!is_split) {
-    std::nth_element(
-        items.begin() + task.begin, items.begin() + mid, items.begin() + task.end,
-        [&](const BuildItem& a, const BuildItem& b) { return a.centroid()[axis] < b.centroid()[axis]; });
-    for (Index i = task.begin; i < task.end; ++i) {
-      const int side = i < mid ? 0 : 1;
-      child_bounds[side].grow(items[i].box);
-      child_centroids[side].grow(items[i].centroid());
-    }
-  }
-  children[0] = {no_index, task.begin, mid, task.depth + 1, child_bounds[0], child_centroids[0]};
-  children[1] = {no_index, mid, task.end, task.depth + 1, child_bounds[1], child_centroids[1]};
-  return true;
-}
-
-// Builds the subtree of `root` into `nodes`, root first; a node's children are adjacent.
-void build_subtree(std::vector<BuildItem>& items, BuildTask root, const BvhOptions& options,
-                   std::vector<BvhNode>& nodes) {
-  BinScratch scratch(options.sah_bins);
-  nodes.reserve(2 * ((root.end - root.begin) / std::max<Index>(1, options.max_leaf_size)) + 1);
-  nodes.push_back(BvhNode{});
-  root.node = 0;
-  std::vector<BuildTask> stack{root};
-  BuildTask children[2];
-  while (!stack.empty()) {
-    const BuildTask task = stack.back();
-    stack.pop_back();
-    BvhNode& node = nodes[task.node];
-    node.lower = Vec3(task.bounds.lower);
-    node.upper = Vec3(task.bounds.upper);
-    if (!split_task(items, task, options, scratch, children)) {
-      node.first = task.begin;
-      node.count = task.end - task.begin;
-      continue;
-    }
-    const Index left_child = static_cast<Index>(nodes.size());
-    node.first = left_child;
-    node.count = 0;
-    nodes.push_back(BvhNode{});
-    nodes.push_back(BvhNode{});
-    children[0].node = left_child;
-    children[1].node = left_child + 1;
-    stack.push_back(children[1]);
-    stack.push_back(children[0]);
-  }
-}
 
 bool hit_before(const RayHit& a, const RayHit& b) {
   if (a.depth != b.depth) return a.depth < b.depth;
@@ -229,35 +188,30 @@ TriangleBvh::TriangleBvh(const Mesh& mesh, const BvhOptions& options)
   for (Index c = 0; c < mesh.num_corners(); ++c) corner_next_[c] = mesh.next_corner(c);
 
   const Index n = num_triangles();
-  std::vector<BuildItem> items(n);
-  Box root_bounds, root_centroids;
-  for (Index t = 0; t < n; ++t) {
-    Vec3 lower(std::numeric_limits<double>::infinity()), upper(-std::numeric_limits<double>::infinity());
-    for (Index c : triangles_.corners[t]) {
-      lower = glm::min(lower, positions_[corner_vertices_[c]]);
-      upper = glm::max(upper, positions_[corner_vertices_[c]]);
-    }
-    items[t].box.lower = {round_down(lower.x), round_down(lower.y), round_down(lower.z)};
-    items[t].box.upper = {round_up(upper.x), round_up(upper.y), round_up(upper.z)};
-    items[t].triangle = t;
-    root_bounds.grow(items[t].box);
-    root_centroids.grow(items[t].centroid());
-  }
   if (n == 0) return;
-  const BuildTask root{0, 0, n, 0, root_bounds, root_centroids};
-  BinScratch scratch(options.sah_bins);
-  BuildTask children[2];
+  const TrianglePoints points{positions_, corner_vertices_, triangles_};
+  // The Morton grid spans the vertices' box, which holds every centroid (one pass, over contiguous data).
+  Box bounds;
+  for (const Vec3& p : positions_) bounds.grow(p);
+  std::vector<std::uint64_t> keys(n);
+  for (Index t = 0; t < n; ++t) keys[t] = std::uint64_t(morton_code(points.centroid(t), bounds)) << 32 | t;
+  sort_by_code(keys);
+
   // The two halves of a large mesh are built on two threads (the machine we target has two cores).
-  if (n >= options.parallel_build_threshold && split_task(items, root, options, scratch, children)) {
+  const auto mid = SubtreeBuilder::split(keys, 0, n, options.max_leaf_size);
+  if (n >= options.parallel_build_threshold && mid) {
     std::vector<BvhNode> left, right;
-    std::thread worker([&] { build_subtree(items, children[1], options, right); });
-    build_subtree(items, children[0], options, left);
+    Box right_box;
+    std::thread worker(
+        [&] { right_box = SubtreeBuilder(keys, points, options.max_leaf_size, right).build(*mid, n); });
+    Box box = SubtreeBuilder(keys, points, options.max_leaf_size, left).build(0, *mid);
     worker.join();
+    box.grow(right_box);
     // Root, the two subtree roots, then the rest of each subtree; inner nodes' child ids shift.
     nodes_.reserve(1 + left.size() + right.size());
     BvhNode top;
-    top.lower = Vec3(root.bounds.lower);
-    top.upper = Vec3(root.bounds.upper);
+    top.lower = box.lower;
+    top.upper = box.upper;
     top.first = 1;
     nodes_.push_back(top);
     const Index left_shift = 2, right_shift = 2 + Index(left.size()) - 1;
@@ -270,10 +224,10 @@ TriangleBvh::TriangleBvh(const Mesh& mesh, const BvhOptions& options)
     for (std::size_t i = 1; i < left.size(); ++i) nodes_.push_back(shifted(left[i], left_shift));
     for (std::size_t i = 1; i < right.size(); ++i) nodes_.push_back(shifted(right[i], right_shift));
   } else {
-    build_subtree(items, root, options, nodes_);
+    SubtreeBuilder(keys, points, options.max_leaf_size, nodes_).build(0, n);
   }
   order_.resize(n);
-  for (Index i = 0; i < n; ++i) order_[i] = items[i].triangle;
+  for (Index i = 0; i < n; ++i) order_[i] = Index(keys[i]);
 }
 
 bool TriangleBvh::intersect(const ShearedRay& ray, Index t, TriangleHit& hit) const {

@@ -36,7 +36,6 @@ struct BvhNode {
 
 struct BvhOptions {
   Index max_leaf_size = 4;
-  Index sah_bins = 16;
   // From this many triangles on, the two halves of the tree are built on two threads.
   Index parallel_build_threshold = Index{1} << 16;
 };
@@ -46,7 +45,8 @@ struct BvhOptions {
 std::vector<RayHit> sorted_unique_hits(std::vector<RayHit> hits);
 
 // A bounding volume hierarchy over the triangles a mesh is drawn with (display_triangles, shared with the
-// renderer, so a pick lands on the triangle the user sees), binned SAH build, for CPU picking.
+// renderer, so a pick lands on the triangle the user sees), for CPU picking. Built over the triangles sorted
+// by Morton code (a linear BVH, Karras 2012): a million triangles in well under the 300 ms budget.
 // It copies the positions it needs, so it stays valid while the mesh it came from changes or dies;
 // rebuild it when the displayed geometry changes.
 class TriangleBvh {
