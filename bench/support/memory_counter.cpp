@@ -66,21 +66,24 @@ void operator delete[](void* p, const std::nothrow_t&) noexcept {
   release(p);
 }
 
-// Over-aligned blocks (huge-page buffers) are counted through the sized delete, which is the only one
-// the kernel's allocator calls for them.
+// Over-aligned blocks (huge-page buffers) carry their size in a header of one alignment unit too, since
+// the kernel's allocator frees them with the unsized delete.
 void* operator new(std::size_t size, std::align_val_t align) {
   const std::size_t a = std::size_t(align);
-  void* p = std::aligned_alloc(a, (size + a - 1) / a * a);
-  if (!p) throw std::bad_alloc();
+  char* raw = static_cast<char*>(std::aligned_alloc(a, a + (size + a - 1) / a * a));
+  if (!raw) throw std::bad_alloc();
+  *reinterpret_cast<std::size_t*>(raw) = size;
   count(size);
-  return p;
+  return raw + a;
 }
-void operator delete(void* p, std::size_t size, std::align_val_t) noexcept {
-  live.fetch_sub(size);
-  std::free(p);
+void operator delete(void* p, std::align_val_t align) noexcept {
+  if (!p) return;
+  char* raw = static_cast<char*>(p) - std::size_t(align);
+  live.fetch_sub(*reinterpret_cast<std::size_t*>(raw));
+  std::free(raw);
 }
-void operator delete(void* p, std::align_val_t) noexcept {
-  std::free(p);
+void operator delete(void* p, std::size_t, std::align_val_t align) noexcept {
+  operator delete(p, align);
 }
 
 namespace nome::bench {
