@@ -48,6 +48,7 @@ const Syntax syntaxes[] = {
     {"set", ScriptCommand::Kind::set, 1, 1, "set BANK_PARAM VALUE"},
     {"mode", ScriptCommand::Kind::mode, 1, 0, "mode vertex|face|border|border-partial"},
     {"click", ScriptCommand::Kind::click, 0, 2, "click X Y (window pixels)"},
+    {"double-click", ScriptCommand::Kind::double_click, 0, 2, "double-click X Y (window pixels)"},
     {"key", ScriptCommand::Kind::key, 1, 0, "key LABEL (W, Ctrl+Z, F1, ...)"},
     {"action", ScriptCommand::Kind::action, 1, 0,
      "action add-polygon|accept|clear|delete|zip|merge|undo|redo"},
@@ -58,6 +59,7 @@ const Syntax syntaxes[] = {
     {"save", ScriptCommand::Kind::save, 1, 0, "save PATH.nome"},
     {"export", ScriptCommand::Kind::export_file, 1, 0, "export PATH.stl|PATH.obj"},
     {"recover", ScriptCommand::Kind::recover, 1, 0, "recover restore|discard"},
+    {"drop", ScriptCommand::Kind::drop, 1, 0, "drop PATH"},
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 
@@ -79,6 +81,7 @@ const char* script_synopsis() {
          "  set BANK_PARAM VALUE      move a slider\n"
          "  mode vertex|face|border|border-partial\n"
          "  click X Y                 left click at window pixel (X, Y), origin top-left\n"
+         "  double-click X Y          move the orbit centre to the surface under pixel (X, Y)\n"
          "  key LABEL                 press a key of the help overlay (W, S, X, Ctrl+Z, ...)\n"
          "  action add-polygon|accept|clear|delete|zip|merge|undo|redo\n"
          "  subdiv LEVEL              subdivision level 0-6\n"
@@ -88,6 +91,7 @@ const char* script_synopsis() {
          "  save PATH.nome            save the scene, slider values and edits\n"
          "  export PATH.stl|.obj      write the stage on screen\n"
          "  recover restore|discard   answer the offer to restore unsaved changes after a crash\n"
+         "  drop PATH                 open PATH as if dropped on the window\n"
          "  quit\n";
 }
 
@@ -109,8 +113,8 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
       if (words[0].text == s.word) syntax = &s;
     if (!syntax) {
       fail(words[0].column,
-           "expected a command (set, mode, click, key, action, subdiv, offset, view, "
-           "screenshot, save, export, recover, quit), found '" +
+           "expected a command (set, mode, click, double-click, key, action, subdiv, offset, view, "
+           "screenshot, save, export, recover, drop, quit), found '" +
                words[0].text + "'");
       continue;
     }

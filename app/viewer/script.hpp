@@ -12,6 +12,7 @@ struct ScriptCommand {
     set,
     mode,
     click,
+    double_click,
     key,
     action,
     subdiv,
@@ -21,6 +22,7 @@ struct ScriptCommand {
     save,
     export_file,
     recover,
+    drop,
     quit
   };
   Kind kind = Kind::quit;

@@ -24,8 +24,7 @@ namespace {
 Window* drop_target = nullptr;
 
 void on_drop(GLFWwindow*, int count, const char** paths) {
-  // Several files dropped at once: the last one wins (one document per window).
-  if (drop_target && count > 0) drop_target->open(paths[count - 1]);
+  if (drop_target) drop_target->drop(std::vector<std::filesystem::path>(paths, paths + count));
 }
 
 // glfwTerminate() unloads Mesa's *_dri.so; the sanitizer's leak check then cannot name the driver's

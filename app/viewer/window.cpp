@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "render/gl.hpp"
 
@@ -135,6 +136,12 @@ void Window::register_keys() {
 }
 
 // ---------------------------------------------------------------------------------------------- files
+
+void Window::drop(const std::vector<std::filesystem::path>& paths) {
+  if (paths.empty()) return;
+  if (paths.size() > 1) log_.info("several files dropped: opening the last, " + paths.back().string());
+  open(paths.back());
+}
 
 void Window::open(const std::filesystem::path& path) {
   try {
@@ -493,11 +500,18 @@ void Window::click(glm::dvec2 pixel) {
   refresh_selection();
 }
 
-void Window::double_click(glm::dvec2 pixel) {
+bool Window::double_click(glm::dvec2 pixel) {
   // The orbit centre moves to the picked point; the eye stays where it is.
-  if (!shown_) return;
+  if (!shown_) return false;
   const auto hit = picking_bvh().cast_nearest(ray_through_pixel(projection(), pixel));
-  if (!hit) return;
+  if (!hit) {
+    log_.info("double-click: no surface under the cursor, the orbit centre stays");
+    return false;
+  }
+  char where[96];
+  std::snprintf(where, sizeof where, "orbit centre at (%.6g, %.6g, %.6g)", hit->point.x, hit->point.y,
+                hit->point.z);
+  log_.info(where);
   const glm::dvec3 eye = camera_.eye();
   camera_.target = hit->point;
   camera_.distance = std::max(glm::length(eye - hit->point), 1e-9);
@@ -505,9 +519,10 @@ void Window::double_click(glm::dvec2 pixel) {
   // Keep the up direction as close as possible to the current one while looking at the new centre.
   const glm::dvec3 up_now = camera_.orientation * glm::dvec3(0.0, 1.0, 0.0);
   glm::dvec3 right = glm::cross(up_now, back);
-  if (glm::dot(right, right) < 1e-18) return;
+  if (glm::dot(right, right) < 1e-18) return true;
   right = glm::normalize(right);
   camera_.orientation = glm::normalize(glm::quat_cast(glm::dmat3(right, glm::cross(back, right), back)));
+  return true;
 }
 
 // ---------------------------------------------------------------------------------------------- input
@@ -592,6 +607,11 @@ bool Window::run_command(const ScriptCommand& c) {
     case Kind::click:
       click({c.numbers[0], c.numbers[1]});
       return true;
+    case Kind::double_click:
+      return double_click({c.numbers[0], c.numbers[1]});
+    case Kind::drop:
+      drop({c.words[0]});
+      return session_ && session_->path() == c.words[0];
     case Kind::key:
       if (keys_.press(c.words[0])) return true;
       throw InvalidInputError("no key '" + c.words[0] + "' (press ? in the viewer for the list)");
@@ -669,10 +689,12 @@ void Window::after_draw() {
 }
 
 void Window::request_quit() {
-  if (session_ && session_->is_modified())
+  if (session_ && session_->is_modified()) {
     is_quit_requested_ = true;
-  else
+    log_.info("quit: the scene has unsaved changes (save and quit, quit without saving, or cancel)");
+  } else {
     should_close_ = true;
+  }
 }
 
 void Window::draw_scene() {

@@ -59,6 +59,9 @@ class Window {
 
   // Opens a file (drag and drop, File > Open, Open Recent); on error logs it and keeps the current one.
   void open(const std::filesystem::path& path);
+  // Files dropped on the window (GLFW's drop callback and the script's `drop`): the last one wins, as
+  // there is one document per window.
+  void drop(const std::vector<std::filesystem::path>& paths);
 
  private:
   // setup
@@ -67,7 +70,8 @@ class Window {
   void handle_mouse();
   void handle_keys();
   void click(glm::dvec2 pixel);
-  void double_click(glm::dvec2 pixel);
+  // False when no surface is under the pixel (the orbit centre stays).
+  bool double_click(glm::dvec2 pixel);
   // editing (report 7.3.3)
   bool can_edit() const;
   // The script's `subdiv` and `offset` (the control panel sets the same settings directly).

@@ -253,3 +253,37 @@ TEST_CASE("a computed stage picks faces but refuses edits, and a bad level is re
   // Nothing was deleted and the level stayed at 1.
   CHECK(build_mesh(read_polygons(dir + "/cube.obj")).num_faces() == 24);
 }
+
+TEST_CASE("a double-click moves the orbit centre onto the surface, and a dropped file replaces the open one",
+          "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_drop");
+  const std::string script = write_script(dir, "view 30 25\ndouble-click 640 400\ndrop " + assets +
+                                                   "tetrahedron.obj\nexport " + dir + "/dropped.obj\nquit\n");
+  const auto r = run_viewer(assets + "cube.obj --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  // The cube spans [-1, 1]^3: the centre lies on one of its faces.
+  const auto at = r.err.find("orbit centre at (");
+  REQUIRE(at != std::string::npos);
+  double x = 0, y = 0, z = 0;
+  REQUIRE(std::sscanf(r.err.c_str() + at, "orbit centre at (%lf, %lf, %lf)", &x, &y, &z) == 3);
+  CHECK(std::max({std::abs(x), std::abs(y), std::abs(z)}) == Approx(1.0).epsilon(1e-6));
+  CHECK_THAT(r.err, Catch::Contains("opened " + assets + "tetrahedron.obj"));
+  CHECK(build_mesh(read_polygons(dir + "/dropped.obj")).num_faces() == 4);
+}
+
+TEST_CASE("quitting with unsaved changes asks first, in a prompt over the dimmed window", "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_quit_prompt");
+  const std::string script =
+      write_script(dir, "set fp_n 6\nscreenshot " + dir + "/before.png\nkey Ctrl+Q\nscreenshot " + dir +
+                            "/prompt.png\nquit\n");
+  const auto r = run_viewer(assets + "funnel_cube.nome --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("quit: the scene has unsaved changes"));
+  // Ctrl+Q did not close the window: the prompt is up, and the modal dims the white background.
+  const int white_before = count_pixels(render::read_png(dir + "/before.png"), 255, 255, 255, 0);
+  const int white_prompt = count_pixels(render::read_png(dir + "/prompt.png"), 255, 255, 255, 0);
+  CHECK(white_before > 100000);
+  CHECK(white_prompt < white_before / 10);
+}

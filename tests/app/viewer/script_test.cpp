@@ -31,6 +31,15 @@ TEST_CASE("a script is parsed one command a line, comments and blank lines skipp
   CHECK(commands[7].kind == Kind::quit);
 }
 
+TEST_CASE("double-click and drop take the window's pixel and the dropped file", "[app]") {
+  const auto commands = parse_script("double-click 12 34.5\ndrop other.nome\n", "s.txt");
+  REQUIRE(commands.size() == 2);
+  CHECK(commands[0].kind == Kind::double_click);
+  CHECK(commands[0].numbers == std::vector<double>{12.0, 34.5});
+  CHECK(commands[1].kind == Kind::drop);
+  CHECK(commands[1].words[0] == "other.nome");
+}
+
 TEST_CASE("every bad line of a script is reported with its line and column", "[app]") {
   try {
     parse_script("click 10\nmode edge\nfrobnicate\nset a b\naction fly\n", "s.txt");
