@@ -250,23 +250,30 @@ class OffsetBuilder {
       if (rank_[v] == no_index) continue;
       const auto corners = m_.vertex_corners(v);
       const auto edges = m_.vertex_edges(v);
+      // Both sides at once (each element's side is looked up once): v+ and v- are consecutive.
+      const Index w = out_vertex(v, 0);
+      Index* fc[2] = {a.fan_corners.data() + a.fan_corner_offsets[w],
+                      a.fan_corners.data() + a.fan_corner_offsets[w + 1]};
+      Index* fe[2] = {a.fan_edges.data() + a.fan_edge_offsets[w],
+                      a.fan_edges.data() + a.fan_edge_offsets[w + 1]};
+      for (size_t i = 0; i < corners.size(); ++i) {
+        const Index c = corners[i];
+        const int side = positive_side(c);
+        fc[side][i] = c;
+        fc[1 - side][i] = negative_corner_at_vertex(c);
+      }
+      for (size_t i = 0; i < edges.size(); ++i) {
+        const Index e = edges[i];
+        const int side = positive_side(first_face_corner_at(e, v));
+        fe[side][i] = 2 * e;
+        fe[1 - side][i] = 2 * e + 1;
+      }
+      if (!m_.is_boundary_vertex(v)) continue;
+      const size_t k = corners.size();
       for (int side = 0; side < 2; ++side) {
-        const Index w = out_vertex(v, side);
-        Index* fc = a.fan_corners.data() + a.fan_corner_offsets[w];
-        Index* fe = a.fan_edges.data() + a.fan_edge_offsets[w];
-        for (size_t i = 0; i < corners.size(); ++i) {
-          const Index c = corners[i];
-          fc[i] = positive_side(c) == side ? c : negative_corner_at_vertex(c);
-        }
-        for (size_t i = 0; i < edges.size(); ++i) {
-          const Index e = edges[i];
-          fe[i] = positive_side(first_face_corner_at(e, v)) == side ? 2 * e : 2 * e + 1;
-        }
-        if (!m_.is_boundary_vertex(v)) continue;
-        const size_t k = corners.size();
-        fc[k] = ribbon_corner_at(edges.back(), v, side);
-        fc[k + 1] = ribbon_corner_at(edges.front(), v, side);
-        fe[k + 1] = 2 * ne_ + loop_of_vertex_[v];
+        fc[side][k] = ribbon_corner_at(edges.back(), v, side);
+        fc[side][k + 1] = ribbon_corner_at(edges.front(), v, side);
+        fe[side][k + 1] = 2 * ne_ + loop_of_vertex_[v];
       }
     }
   }

@@ -30,3 +30,20 @@ TEST_CASE("each component is judged on its own", "[kernel]") {
   CHECK(o.component_orientable[m.face_component(0)] == 0);
   CHECK(o.component_orientable[m.face_component(m.num_faces() - 1)] == 1);
 }
+
+TEST_CASE("signs are relative to the first face of each component", "[kernel]") {
+  std::mt19937 rng{7};
+  const PolygonSoup soup = test::disjoint_union(test::reverse_random_faces(test::cube(), 0.5, rng),
+                                                test::reverse_random_faces(test::torus(6, 4), 0.5, rng));
+  const Mesh m = build_mesh(soup);
+  const FaceOrientation o = face_orientation(m);
+  std::vector<char> seen(m.num_components(), 0);
+  for (Index f = 0; f < m.num_faces(); ++f) {
+    if (seen[m.face_component(f)]) continue;
+    seen[m.face_component(f)] = 1;
+    CHECK(o.face_signs[f] == 1);
+  }
+  // Across every edge the signs agree exactly when the edge is not a Möbius edge.
+  for (const Edge& e : m.edges())
+    if (!e.is_boundary()) CHECK((o.face_signs[e.faces[0]] == o.face_signs[e.faces[1]]) == !e.is_mobius);
+}
