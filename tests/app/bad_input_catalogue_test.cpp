@@ -20,6 +20,8 @@ namespace fs = std::filesystem;
 namespace {
 
 const fs::path catalogue = fs::path(NOME_SOURCE_DIR) / "tests/data/bad";
+// An .anom file holds saved slider values and a working mesh for a scene: the bad ones are applied to this.
+const std::string anom_scene = std::string(NOME_SOURCE_DIR) + "/assets/funnel_cube.nome";
 
 struct LimitedRun {
   int status = -1;  // exit status, or 128 + signal
@@ -89,8 +91,10 @@ void check_refused(const LimitedRun& r, const std::string& expected, bool severa
   CHECK(r.max_rss_mb < 600);
 }
 
-// Every file of the given kind (by extension; "" for the rest) is refused by `nome info` and `nome export`.
-void check_catalogue(const std::vector<std::string>& extensions, bool several_errors = false) {
+// Every file of the given kind (by extension; "" for the rest) is refused by `nome info` and `nome export`,
+// given after the files `before` (the scene an .anom file applies to).
+void check_catalogue(const std::vector<std::string>& extensions, bool several_errors = false,
+                     const std::vector<std::string>& before = {}) {
   const auto expected = expected_messages();
   std::vector<std::string> files;
   for (const auto& entry : fs::directory_iterator(catalogue)) {
@@ -107,13 +111,19 @@ void check_catalogue(const std::vector<std::string>& extensions, bool several_er
     const auto it = expected.find(name);
     REQUIRE(it != expected.end());
     const std::string path = (catalogue / name).string();
-    const LimitedRun info = run_limited({"info", path}, scratch);
+    std::vector<std::string> files_args = before;
+    files_args.push_back(path);
+    std::vector<std::string> info_args{"info"}, export_args{"export"};
+    info_args.insert(info_args.end(), files_args.begin(), files_args.end());
+    export_args.insert(export_args.end(), files_args.begin(), files_args.end());
+    export_args.insert(export_args.end(), {"-o", (scratch / "out.obj").string()});
+    const LimitedRun info = run_limited(info_args, scratch);
     INFO("nome info: " << info.err);
     check_refused(info, it->second, several_errors);
     CHECK_THAT(info.err, Catch::Contains(path));
 
     // Export writes nothing at all: no output file, no temporary left behind.
-    const LimitedRun exported = run_limited({"export", path, "-o", (scratch / "out.obj").string()}, scratch);
+    const LimitedRun exported = run_limited(export_args, scratch);
     INFO("nome export: " << exported.err);
     check_refused(exported, it->second, several_errors);
     CHECK(fs::is_empty(scratch));
@@ -145,4 +155,8 @@ TEST_CASE("bad STL files and unknown formats are refused with one clear message"
 
 TEST_CASE("bad scene files (.nome, .slf, .sif) are refused with located messages", "[app]") {
   check_catalogue({".nome", ".slf", ".sif"}, true);
+}
+
+TEST_CASE("bad .anom files are refused with messages located in them", "[app]") {
+  check_catalogue({".anom"}, true, {anom_scene});
 }

@@ -51,6 +51,16 @@ TEST_CASE("nome reports scene errors as FILE:LINE:COL", "[app]") {
              Catch::Contains("hild.nom:110:58: warning: expected 'endinstance', found 'enintance'"));
 }
 
+TEST_CASE("an empty scene file is an empty scene: info and export accept it", "[app]") {
+  const std::string dir = nome::test::scratch_dir("scene_empty");
+  std::ofstream(dir + "/empty.nome").flush();
+  const auto info = run_nome("info " + dir + "/empty.nome");
+  CHECK(info.status == 0);
+  CHECK_THAT(info.out, Catch::Contains("vertices 0, edges 0, faces 0"));
+  CHECK(run_nome("export " + dir + "/empty.nome -o " + dir + "/empty.obj").status == 0);
+  CHECK_THAT(run_nome("info " + dir + "/empty.nome --json").out, Catch::Contains("\"faces\": 0"));
+}
+
 TEST_CASE("nome export writes a scene's instances", "[app]") {
   const std::string dir = nome::test::scratch_dir("scene_export");
   CHECK(run_nome("export " + assets + "klein_bottle.nome -o " + dir + "/kb.obj").status == 0);

@@ -8,7 +8,10 @@
 namespace nome::test {
 
 CommandResult run_viewer(const std::string& arguments) {
-  return run_nome_prefixed("xvfb-run -a -s \"-screen 0 1280x800x24\"", arguments);
+  // A state folder of its own: a recovery file a crashed viewer left in the user's would be offered.
+  const std::string state = private_scratch_dir("viewer_state");
+  return run_nome_prefixed("env XDG_STATE_HOME=" + state + " xvfb-run -a -s \"-screen 0 1280x800x24\"",
+                           arguments);
 }
 
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation) {

@@ -152,3 +152,19 @@ TEST_CASE("a closing word misspelt by a letter or two is read as meant, with a w
         "t.nome:2:16: warning: expected 'endinstance', found 'enintance': read as 'endinstance'");
   CHECK(s.instances().size() == 1);
 }
+
+TEST_CASE("an empty or comment-only scene file is an empty scene, not an error", "[scene]") {
+  for (const char* text : {"", "# nothing yet\n", "\n \t\n\n"}) {
+    const nome::scene::Scene s = nome::scene::Scene::from_text(text, "t.nome");
+    CHECK(s.instances().empty());
+    CHECK(s.parameters().empty());
+    CHECK(s.combined_soup().num_faces() == 0);
+  }
+}
+
+TEST_CASE("a file of garbage lists its first 20 errors, not one per byte", "[scene]") {
+  const auto errors = scene_errors(std::string(1000, '\x01'));
+  REQUIRE(errors.size() == 21);
+  CHECK(errors[19] == "t.nome:1:20: unexpected character code 1");
+  CHECK(errors[20] == "t.nome:1:21: more errors follow from here; fix those above first");
+}

@@ -40,6 +40,11 @@ std::string Diagnostic::to_string() const {
 }
 
 void Diagnostics::error(SourceLocation at, std::string message) {
+  // A file of garbage would otherwise give an error per byte.
+  constexpr size_t max_listed_errors = 20;
+  if (errors_ == max_listed_errors)
+    items_.push_back({Severity::error, file_, at, "more errors follow from here; fix those above first"});
+  if (errors_++ >= max_listed_errors) return;
   items_.push_back({Severity::error, file_, at, std::move(message)});
 }
 

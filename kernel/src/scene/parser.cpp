@@ -86,6 +86,10 @@ class Parser {
             const Token face = peek();
             expect_word("face");
             NamedFace f{vertex_blocks("endface", face), face.location};
+            if (f.vertices.size() < 3)
+              diagnostics_.error(face.location,
+                                 "a face of the working mesh needs at least 3 vertices, found " +
+                                     std::to_string(f.vertices.size()));
             anom.working_mesh.push_back(std::move(f));
           }
         } else {

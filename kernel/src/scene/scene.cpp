@@ -516,10 +516,15 @@ Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads,
     case DefinitionKind::polyline:
       add_rim(ast_.polylines[index]);
       break;
-    case DefinitionKind::consolidated:
+    case DefinitionKind::consolidated: {
+      const size_t first_error = errors.size();
       for (size_t i = 0; i < ast_.consolidated_faces.size(); ++i)
         add_face(ast_.consolidated_faces[i].vertices, "cf" + std::to_string(i), std::nullopt);
+      // The names are located in the file that gave them: the scene, or an .anom file's working mesh.
+      if (!consolidated_file_.empty())
+        for (size_t e = first_error; e < errors.size(); ++e) errors[e].file = consolidated_file_;
       break;
+    }
     case DefinitionKind::group:
       break;
   }
@@ -735,6 +740,7 @@ void Scene::set_consolidated_faces(std::vector<std::vector<std::string>> faces) 
   Scene next = *this;
   next.ast_.consolidated_faces = std::move(named);
   next.consolidated_ = std::move(faces);
+  next.consolidated_file_.clear();
   std::vector<Diagnostic> errors;
   next.vertex_suffixes_.clear();
   next.build(errors);
@@ -783,6 +789,7 @@ void Scene::apply_anom(std::string_view text, const std::string& file) {
   if (!errors.empty()) throw SceneError(std::move(errors));
   if (!anom.working_mesh.empty()) {
     next.ast_.consolidated_faces = anom.working_mesh;
+    next.consolidated_file_ = file;
     next.consolidated_.clear();
     for (const NamedFace& f : anom.working_mesh) {
       std::vector<std::string> face;
@@ -792,10 +799,7 @@ void Scene::apply_anom(std::string_view text, const std::string& file) {
   }
   next.vertex_suffixes_.clear();
   next.build(errors);
-  if (!errors.empty()) {
-    // Names in the working mesh point into the .anom file, the rest into the scene.
-    throw SceneError(std::move(errors));
-  }
+  if (!errors.empty()) throw SceneError(std::move(errors));
   *this = std::move(next);
 }
 

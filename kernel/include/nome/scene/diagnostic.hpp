@@ -41,6 +41,7 @@ class Diagnostics {
  private:
   std::string file_;
   std::vector<Diagnostic> items_;
+  size_t errors_ = 0;  // reported, listed or not
 };
 
 // Malformed scene content: one or several located errors. what() lists them one per line.

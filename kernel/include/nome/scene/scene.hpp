@@ -155,6 +155,7 @@ class Scene {
   std::vector<SceneInstance> instances_;
   std::unordered_map<std::string, std::vector<VertexRef>> vertex_suffixes_;
   std::vector<std::vector<std::string>> consolidated_;
+  std::string consolidated_file_;  // where the consolidated faces' names are located, if not in file()
   std::vector<std::string> deleted_;
   std::size_t placement_evaluations_ = 0;
 };
