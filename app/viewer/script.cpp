@@ -60,11 +60,13 @@ const Syntax syntaxes[] = {
     {"export", ScriptCommand::Kind::export_file, 1, 0, "export PATH.stl|PATH.obj"},
     {"recover", ScriptCommand::Kind::recover, 1, 0, "recover restore|discard"},
     {"drop", ScriptCommand::Kind::drop, 1, 0, "drop PATH"},
+    {"prompt", ScriptCommand::Kind::prompt, 1, 0, "prompt save|discard|cancel"},
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 
 const char* const modes[] = {"vertex", "face", "border", "border-partial"};
 const char* const recovery_answers[] = {"restore", "discard"};
+const char* const unsaved_answers[] = {"save", "discard", "cancel"};
 const char* const actions[] = {"add-polygon", "accept", "clear", "delete", "zip", "merge", "undo", "redo"};
 
 template <typename List>
@@ -92,7 +94,8 @@ const char* script_synopsis() {
          "  export PATH.stl|.obj      write the stage on screen\n"
          "  recover restore|discard   answer the offer to restore unsaved changes after a crash\n"
          "  drop PATH                 open PATH as if dropped on the window\n"
-         "  quit\n";
+         "  prompt save|discard|cancel  answer the question about unsaved changes (quit, open)\n"
+         "  quit                      end the session (without asking: key Ctrl+Q asks)\n";
 }
 
 std::vector<ScriptCommand> parse_script(const std::string& text, const std::string& file) {
@@ -114,7 +117,7 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     if (!syntax) {
       fail(words[0].column,
            "expected a command (set, mode, click, double-click, key, action, subdiv, offset, view, "
-           "screenshot, save, export, recover, drop, quit), found '" +
+           "screenshot, save, export, recover, drop, prompt, quit), found '" +
                words[0].text + "'");
       continue;
     }
@@ -153,6 +156,10 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     }
     if (command.kind == ScriptCommand::Kind::recover && !is_one_of(command.words[0], recovery_answers)) {
       fail(words[1].column, "expected restore or discard, found '" + command.words[0] + "'");
+      continue;
+    }
+    if (command.kind == ScriptCommand::Kind::prompt && !is_one_of(command.words[0], unsaved_answers)) {
+      fail(words[1].column, "expected save, discard or cancel, found '" + command.words[0] + "'");
       continue;
     }
     commands.push_back(std::move(command));

@@ -23,6 +23,7 @@ struct ScriptCommand {
     export_file,
     recover,
     drop,
+    prompt,
     quit
   };
   Kind kind = Kind::quit;

@@ -84,7 +84,7 @@ void Window::register_keys() {
   });
   for (int i = 0; i < 4; ++i)
     keys_.add(GLFW_KEY_1 + i, KeyModifier::control, "open recent file " + std::to_string(i + 1), [this, i] {
-      if (std::size_t(i) < recent_.files().size()) open(recent_.files()[i]);
+      if (std::size_t(i) < recent_.files().size()) request_open(recent_.files()[i]);
     });
   keys_.add(GLFW_KEY_S, KeyModifier::control, "save the scene (.nome)", [this] { save(std::nullopt); });
   keys_.add(GLFW_KEY_S, KeyModifier::control | KeyModifier::shift, "save the scene as (.nome)", [this] {
@@ -140,7 +140,17 @@ void Window::register_keys() {
 void Window::drop(const std::vector<std::filesystem::path>& paths) {
   if (paths.empty()) return;
   if (paths.size() > 1) log_.info("several files dropped: opening the last, " + paths.back().string());
-  open(paths.back());
+  request_open(paths.back());
+}
+
+void Window::request_open(const std::filesystem::path& path) {
+  if (!session_ || !session_->is_modified()) {
+    open(path);
+    return;
+  }
+  unsaved_prompt_ = UnsavedPrompt{path};
+  log_.info("open " + path.filename().string() + ": " + session_->path().filename().string() +
+            " has unsaved changes (save first, open without saving, or cancel)");
 }
 
 void Window::open(const std::filesystem::path& path) {
@@ -611,7 +621,13 @@ bool Window::run_command(const ScriptCommand& c) {
       return double_click({c.numbers[0], c.numbers[1]});
     case Kind::drop:
       drop({c.words[0]});
-      return session_ && session_->path() == c.words[0];
+      return unsaved_prompt_ || (session_ && session_->path() == c.words[0]);
+    case Kind::prompt:
+      if (!unsaved_prompt_) throw InvalidInputError("prompt: no question about unsaved changes is open");
+      answer_unsaved_prompt(c.words[0] == "save"      ? UnsavedAnswer::save
+                            : c.words[0] == "discard" ? UnsavedAnswer::discard
+                                                      : UnsavedAnswer::cancel);
+      return true;
     case Kind::key:
       if (keys_.press(c.words[0])) return true;
       throw InvalidInputError("no key '" + c.words[0] + "' (press ? in the viewer for the list)");
@@ -690,11 +706,30 @@ void Window::after_draw() {
 
 void Window::request_quit() {
   if (session_ && session_->is_modified()) {
-    is_quit_requested_ = true;
+    unsaved_prompt_ = UnsavedPrompt{};
     log_.info("quit: the scene has unsaved changes (save and quit, quit without saving, or cancel)");
   } else {
     should_close_ = true;
   }
+}
+
+void Window::answer_unsaved_prompt(UnsavedAnswer answer) {
+  if (!unsaved_prompt_) return;
+  const UnsavedPrompt prompt = *unsaved_prompt_;
+  unsaved_prompt_.reset();
+  if (answer == UnsavedAnswer::cancel) return;
+  if (answer == UnsavedAnswer::save) {
+    save(std::nullopt);
+    // A failed save (logged) leaves the changes where they were: nothing is lost.
+    if (session_->is_modified()) return;
+  } else if (prompt.open) {
+    // The user gave the changes up: no recovery file should offer them back.
+    autosave_.discard(session_->path());
+  }
+  if (prompt.open)
+    open(*prompt.open);
+  else
+    should_close_ = true;
 }
 
 void Window::draw_scene() {

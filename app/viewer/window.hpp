@@ -53,12 +53,15 @@ class Window {
   // True while something moves without input (a stage being computed, a script, a drag): the loop then
   // draws continuously; otherwise it sleeps until an event (or the file watcher's next look).
   bool is_animating() const;
-  // The window manager's close button: asks about unsaved changes first.
+  // The window manager's close button, Ctrl+Q, File > Quit: asks about unsaved changes first.
   void request_quit();
   int exit_status() const { return exit_status_; }
 
-  // Opens a file (drag and drop, File > Open, Open Recent); on error logs it and keeps the current one.
+  // Opens a file; on error logs it and keeps the current one.
   void open(const std::filesystem::path& path);
+  // Opens a file the user chose (drag and drop, File > Open, Open Recent): asks about unsaved changes
+  // first.
+  void request_open(const std::filesystem::path& path);
   // Files dropped on the window (GLFW's drop callback and the script's `drop`): the last one wins, as
   // there is one document per window.
   void drop(const std::vector<std::filesystem::path>& paths);
@@ -115,7 +118,10 @@ class Window {
   void draw_log_panel();
   void draw_status_bar();
   void draw_help_overlay();
-  void draw_quit_prompt();
+  void draw_unsaved_prompt();
+  // The unsaved-changes prompt's buttons (and the script's `prompt`).
+  enum class UnsavedAnswer { save, discard, cancel };
+  void answer_unsaved_prompt(UnsavedAnswer answer);
   // crash recovery (window_recovery.cpp)
   void update_autosave();
   void draw_recovery_prompt();
@@ -167,7 +173,11 @@ class Window {
 
   bool show_help_ = false;
   bool show_log_ = true;
-  bool is_quit_requested_ = false;
+  // Waiting for the answer about unsaved changes: then quit (no file) or open the file.
+  struct UnsavedPrompt {
+    std::optional<std::filesystem::path> open;
+  };
+  std::optional<UnsavedPrompt> unsaved_prompt_;
   bool should_close_ = false;
   std::optional<std::filesystem::path> pending_screenshot_;
 

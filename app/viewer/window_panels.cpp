@@ -29,11 +29,11 @@ void Window::draw_panels() {
   if (show_log_) draw_log_panel();
   draw_status_bar();
   if (show_help_) draw_help_overlay();
-  draw_quit_prompt();
+  draw_unsaved_prompt();
   draw_progress();
   if (const auto chosen = browser_.draw()) {
     if (browser_purpose_ == BrowserPurpose::open) {
-      open(*chosen);
+      request_open(*chosen);
     } else if (browser_purpose_ == BrowserPurpose::save) {
       save(*chosen);
     } else {
@@ -54,7 +54,7 @@ void Window::draw_menu() {
       for (std::size_t i = 0; i < recent_.files().size(); ++i) {
         const std::string shortcut = i < 4 ? "Ctrl+" + std::to_string(i + 1) : "";
         if (ImGui::MenuItem(recent_.files()[i].string().c_str(), shortcut.c_str())) {
-          open(recent_.files()[i]);
+          request_open(recent_.files()[i]);
           break;
         }
       }
@@ -381,28 +381,30 @@ void Window::draw_progress() {
   ImGui::End();
 }
 
-void Window::draw_quit_prompt() {
-  if (is_quit_requested_) {
-    ImGui::OpenPopup("Quit without saving?");
-    is_quit_requested_ = false;
+void Window::draw_unsaved_prompt() {
+  // One popup for both questions (its id after ###); the title says which.
+  const char* id = "###unsaved";
+  if (unsaved_prompt_ && !ImGui::IsPopupOpen(id)) ImGui::OpenPopup(id);
+  const std::string title = std::string(unsaved_prompt_ && unsaved_prompt_->open ? "Open without saving?"
+                                                                                 : "Quit without saving?") +
+                            id;
+  if (!ImGui::BeginPopupModal(title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  if (!unsaved_prompt_) {  // answered by a script
+    ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    return;
   }
-  if (!ImGui::BeginPopupModal("Quit without saving?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  const bool is_open = unsaved_prompt_->open.has_value();
   ImGui::TextUnformatted("The scene has unsaved changes.");
-  if (session_ && session_->scene() && ImGui::Button("Save and quit")) {
-    save(std::nullopt);
-    should_close_ = !session_->is_modified();
-    ImGui::CloseCurrentPopup();
-  }
+  if (is_open) ImGui::Text("Open %s instead?", unsaved_prompt_->open->filename().string().c_str());
+  if (session_ && session_->scene() && ImGui::Button(is_open ? "Save, then open" : "Save and quit"))
+    answer_unsaved_prompt(UnsavedAnswer::save);
   ImGui::SameLine();
-  if (ImGui::Button("Quit without saving")) {
-    should_close_ = true;
-    ImGui::CloseCurrentPopup();
-  }
+  if (ImGui::Button(is_open ? "Open without saving" : "Quit without saving"))
+    answer_unsaved_prompt(UnsavedAnswer::discard);
   ImGui::SameLine();
-  if (ImGui::Button("Cancel")) {
-    glfwSetWindowShouldClose(window_, GLFW_FALSE);
-    ImGui::CloseCurrentPopup();
-  }
+  if (ImGui::Button("Cancel")) answer_unsaved_prompt(UnsavedAnswer::cancel);
+  if (!unsaved_prompt_) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
 }
 

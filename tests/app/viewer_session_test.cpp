@@ -6,6 +6,7 @@
 
 #include "app/viewer_support.hpp"
 #include "nome/io/read_polygons.hpp"
+#include "nome/io/read_scene.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "nome/query/pick.hpp"
@@ -272,18 +273,38 @@ TEST_CASE("a double-click moves the orbit centre onto the surface, and a dropped
   CHECK(build_mesh(read_polygons(dir + "/dropped.obj")).num_faces() == 4);
 }
 
-TEST_CASE("quitting with unsaved changes asks first, in a prompt over the dimmed window", "[app]") {
+TEST_CASE("quitting with unsaved changes asks first, in a prompt over the dimmed window; save and quit saves",
+          "[app]") {
   const std::string dir = nome::test::private_scratch_dir("viewer_quit_prompt");
+  std::filesystem::copy_file(assets + "funnel_cube.nome", dir + "/funnel_cube.nome");
+  // No `quit`: the prompt's answer ends the session.
   const std::string script =
       write_script(dir, "set fp_n 6\nscreenshot " + dir + "/before.png\nkey Ctrl+Q\nscreenshot " + dir +
-                            "/prompt.png\nquit\n");
-  const auto r = run_viewer(assets + "funnel_cube.nome --script " + script);
+                            "/prompt.png\nprompt save\n");
+  const auto r = run_viewer(dir + "/funnel_cube.nome --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("quit: the scene has unsaved changes"));
+  const scene::Scene saved = read_scene(dir + "/funnel_cube.nome");
+  CHECK(saved.parameters()[*saved.find_parameter("fp_n")].value == 6.0);
   // Ctrl+Q did not close the window: the prompt is up, and the modal dims the white background.
   const int white_before = count_pixels(render::read_png(dir + "/before.png"), 255, 255, 255, 0);
   const int white_prompt = count_pixels(render::read_png(dir + "/prompt.png"), 255, 255, 255, 0);
   CHECK(white_before > 100000);
   CHECK(white_prompt < white_before / 10);
+}
+
+TEST_CASE("a file dropped on a scene with unsaved changes waits for the answer: cancel keeps, discard opens",
+          "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_drop_modified");
+  const std::string cube = assets + "cube.obj";
+  const std::string script =
+      write_script(dir, "set fp_n 6\ndrop " + cube + "\nprompt cancel\nexport " + dir + "/kept.obj\ndrop " +
+                            cube + "\nprompt discard\nexport " + dir + "/dropped.obj\nquit\n");
+  const auto r = run_viewer(assets + "funnel_cube.nome --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("open cube.obj: funnel_cube.nome has unsaved changes"));
+  CHECK(build_mesh(read_polygons(dir + "/kept.obj")).num_faces() == 36);  // six funnels of six quads
+  CHECK(build_mesh(read_polygons(dir + "/dropped.obj")).num_faces() == 6);
 }

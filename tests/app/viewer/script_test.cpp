@@ -31,9 +31,12 @@ TEST_CASE("a script is parsed one command a line, comments and blank lines skipp
   CHECK(commands[7].kind == Kind::quit);
 }
 
-TEST_CASE("double-click and drop take the window's pixel and the dropped file", "[app]") {
-  const auto commands = parse_script("double-click 12 34.5\ndrop other.nome\n", "s.txt");
-  REQUIRE(commands.size() == 2);
+TEST_CASE("double-click, drop and prompt take the window's pixel, the dropped file and the answer", "[app]") {
+  const auto commands = parse_script("double-click 12 34.5\ndrop other.nome\nprompt discard\n", "s.txt");
+  REQUIRE(commands.size() == 3);
+  CHECK(commands[2].kind == Kind::prompt);
+  CHECK_THROWS_WITH(parse_script("prompt maybe\n", "s.txt"),
+                    Catch::Contains("s.txt:1:8: expected save, discard or cancel, found 'maybe'"));
   CHECK(commands[0].kind == Kind::double_click);
   CHECK(commands[0].numbers == std::vector<double>{12.0, 34.5});
   CHECK(commands[1].kind == Kind::drop);
