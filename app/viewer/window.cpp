@@ -319,6 +319,13 @@ void Window::update_stage() {
     // The last good geometry stays on screen.
     log_.error(e.what());
   }
+  try {
+    take_picking_bvh(std::chrono::milliseconds(0));
+    prefetch_picking_bvh();
+  } catch (const std::exception& e) {
+    // The next pick builds it on the UI thread instead.
+    log_.warning("picking structure: " + std::string(e.what()));
+  }
 }
 
 void Window::show_result(StageResult result) {
@@ -336,14 +343,32 @@ void Window::show_result(StageResult result) {
   buffers_ = std::make_unique<render::MeshBuffers>(result.display);
   topology_.reset();
   picking_bvh_.reset();
+  shown_time_ = glfwGetTime();
   shown_ = std::move(result);
   apply_face_colors();
   refresh_selection();
 }
 
 const TriangleBvh& Window::picking_bvh() {
-  if (!picking_bvh_) picking_bvh_.emplace(*shown_mesh());
+  if (!picking_bvh_ && bvh_job_.is_busy()) take_picking_bvh(std::chrono::minutes(1));
+  if (!picking_bvh_) picking_bvh_ = std::make_shared<const TriangleBvh>(*shown_mesh());
   return *picking_bvh_;
+}
+
+void Window::prefetch_picking_bvh() {
+  constexpr double rest_seconds = 0.25;
+  if (!shown_ || picking_bvh_ || job_.is_busy() || bvh_job_.is_busy() ||
+      glfwGetTime() - shown_time_ < rest_seconds)
+    return;
+  bvh_job_.submit([mesh = shown_->mesh](std::stop_token) {
+    return PickingBvh{mesh, std::make_shared<const TriangleBvh>(*mesh)};
+  });
+}
+
+void Window::take_picking_bvh(std::chrono::milliseconds patience) {
+  // A BVH of a mesh no longer shown is dropped.
+  if (auto done = bvh_job_.take(patience); done && shown_ && done->mesh == shown_->mesh)
+    picking_bvh_ = done->bvh;
 }
 
 void Window::apply_face_colors() {

@@ -91,8 +91,12 @@ class Window {
   void update_stage();
   void show_result(StageResult result);
   const Mesh* shown_mesh() const { return shown_ ? shown_->mesh.get() : nullptr; }
-  // The BVH of the shown mesh, built at the first pick after the mesh changed.
+  // The BVH of the shown mesh, for picks: built off the UI thread once the geometry has rested for a
+  // moment (a slider drag never starts one), or at a pick that comes sooner (waiting for a build in
+  // flight rather than starting another).
   const TriangleBvh& picking_bvh();
+  void prefetch_picking_bvh();
+  void take_picking_bvh(std::chrono::milliseconds patience);
   void refresh_selection();
   ScreenProjection projection() const;
   glm::dvec2 window_size() const;
@@ -150,7 +154,13 @@ class Window {
   StageSettings requested_settings_;
   bool has_request_ = false;
   std::optional<StageResult> shown_;
-  std::optional<TriangleBvh> picking_bvh_;  // of shown_, once a pick needed it
+  double shown_time_ = 0.0;  // when shown_ came (glfwGetTime)
+  struct PickingBvh {
+    std::shared_ptr<const Mesh> mesh;  // what it was built over
+    std::shared_ptr<const TriangleBvh> bvh;
+  };
+  BackgroundJob<PickingBvh> bvh_job_;
+  std::shared_ptr<const TriangleBvh> picking_bvh_;  // of shown_, once built
   ZipperOptions zipper_options_;
   glm::vec3 consolidated_color_{0.62f, 0.42f, 0.86f};
   glm::vec3 temporary_color_{0.30f, 0.76f, 0.42f};
