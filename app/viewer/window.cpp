@@ -52,6 +52,7 @@ Window::Window(GLFWwindow* window, const ViewerOptions& options)
       renderer_(std::make_unique<render::Renderer>()),
       cubes_(std::make_unique<render::CubeSet>()),
       border_lines_(std::make_unique<render::LineSet>()),
+      rim_lines_(std::make_unique<render::LineSet>()),
       recent_(RecentFiles::default_store()),
       autosave_(Autosave::default_folder()) {
   register_keys();
@@ -283,7 +284,13 @@ ScreenProjection Window::projection() const {
 
 void Window::frame_all() {
   if (!shown_mesh()) return;
-  camera_.fit(shown_mesh()->positions(), aspect());
+  if (rim_points_.empty()) {
+    camera_.fit(shown_mesh()->positions(), aspect());
+    return;
+  }
+  std::vector<Vec3> points = shown_mesh()->positions();
+  points.insert(points.end(), rim_points_.begin(), rim_points_.end());
+  camera_.fit(points, aspect());
 }
 
 void Window::reset_view() {
@@ -301,6 +308,7 @@ void Window::update_stage() {
   if (!session_) return;
   if (!has_request_ || session_->version() != requested_version_ || settings_ != requested_settings_) {
     // A newer request supersedes the one in flight; the scene's polygons are copied for the job.
+    if (session_->version() != requested_version_ || !has_request_) refresh_rim_lines();
     requested_version_ = session_->version();
     requested_settings_ = settings_;
     has_request_ = true;
@@ -488,6 +496,22 @@ void Window::refresh_selection() {
     if (border.is_loop && n > 2) segments.insert(segments.end(), {first + n - 1, first});
   }
   border_lines_->set(points, segments);
+}
+
+void Window::refresh_rim_lines() {
+  rim_points_.clear();
+  std::vector<std::uint32_t> segments;
+  if (const scene::Scene* scene = session_->scene())
+    for (const scene::SceneInstance& instance : scene->instances())
+      for (const scene::RimLine& rim : instance.geometry.rims) {
+        const auto first = std::uint32_t(rim_points_.size());
+        const auto n = std::uint32_t(rim.vertices.size());
+        for (Index v : rim.vertices) rim_points_.push_back(instance.geometry.soup.positions[v]);
+        for (std::uint32_t i = 0; i + 1 < n; ++i) segments.insert(segments.end(), {first + i, first + i + 1});
+        if (rim.is_loop && n > 2) segments.insert(segments.end(), {first + n - 1, first});
+      }
+  const std::vector<glm::vec3> points(rim_points_.begin(), rim_points_.end());
+  rim_lines_->set(points, segments);
 }
 
 void Window::click(glm::dvec2 pixel) {
@@ -766,6 +790,7 @@ void Window::draw_scene() {
   if (!buffers_) return;
   renderer_->draw_mesh(*buffers_, frame, display_);
   renderer_->draw_cubes(*cubes_, frame);
+  renderer_->draw_lines(*rim_lines_, frame, glm::vec4(rim_color_, 1.0f), display_.highlight_width);
   renderer_->draw_lines(*border_lines_, frame, glm::vec4(display_.selection_color, 1.0f),
                         display_.highlight_width * 1.5f);
 }

@@ -98,6 +98,8 @@ class Window {
   void prefetch_picking_bvh();
   void take_picking_bvh(std::chrono::milliseconds patience);
   void refresh_selection();
+  // The scene's rim lines (`polyline`, `circle`): drawn over every stage, as they have no faces.
+  void refresh_rim_lines();
   ScreenProjection projection() const;
   glm::dvec2 window_size() const;
   double aspect() const;
@@ -143,6 +145,9 @@ class Window {
   std::unique_ptr<render::MeshBuffers> buffers_;
   std::unique_ptr<render::CubeSet> cubes_;
   std::unique_ptr<render::LineSet> border_lines_;
+  std::unique_ptr<render::LineSet> rim_lines_;
+  std::vector<Vec3> rim_points_;  // framed with the mesh
+  glm::vec3 rim_color_{0.05f, 0.45f, 0.55f};
   render::Camera camera_;
   render::DisplaySettings display_;
 

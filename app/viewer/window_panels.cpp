@@ -194,6 +194,7 @@ void Window::draw_control_panel() {
     if (ImGui::ColorEdit3("selected", &display_.selection_color.x, ImGuiColorEditFlags_NoInputs))
       refresh_selection();
     ImGui::ColorEdit3("background", &display_.background.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::ColorEdit3("rim lines", &rim_color_.x, ImGuiColorEditFlags_NoInputs);
     bool is_recoloured = ImGui::ColorEdit3("temporary", &temporary_color_.x, ImGuiColorEditFlags_NoInputs);
     is_recoloured |= ImGui::ColorEdit3("consolidated", &consolidated_color_.x, ImGuiColorEditFlags_NoInputs);
     if (is_recoloured) apply_face_colors();

@@ -308,3 +308,14 @@ TEST_CASE("a file dropped on a scene with unsaved changes waits for the answer: 
   CHECK(build_mesh(read_polygons(dir + "/kept.obj")).num_faces() == 36);  // six funnels of six quads
   CHECK(build_mesh(read_polygons(dir + "/dropped.obj")).num_faces() == 6);
 }
+
+TEST_CASE("a scene's rim lines are drawn, though they have no faces", "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_rim_lines");
+  const std::string script = write_script(dir, "view 30 25\nscreenshot " + dir + "/rim.png\nquit\n");
+  const auto r =
+      run_viewer(std::string(NOME_SOURCE_DIR) + "/tests/data/original/rimline.nom --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  // The polyline's three segments in the rim colour (0.05, 0.45, 0.55).
+  CHECK(count_pixels(render::read_png(dir + "/rim.png"), 13, 115, 140, 20) > 300);
+}
