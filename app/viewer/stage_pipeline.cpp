@@ -49,6 +49,7 @@ std::optional<StageResult> StagePipeline::run(const PolygonSoup& scene, const St
   if (stop.stop_requested()) return std::nullopt;
   const auto start = std::chrono::steady_clock::now();
   StageResult result;
+  result.stage = settings.stage;
   Mesh mesh = build_mesh(scene);
   if (settings.stage == Stage::merged || (!is_editable(settings.stage) && settings.subdivide_merged)) {
     MergeOptions options;

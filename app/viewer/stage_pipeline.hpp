@@ -41,6 +41,7 @@ struct StageSettings {
 // arrays and its borders. Only the upload to GL is left to the UI thread, and the picking BVH to the
 // first pick (a slider drag shows many meshes and picks on none).
 struct StageResult {
+  Stage stage = Stage::scene;  // which stage the mesh is
   std::shared_ptr<const Mesh> mesh;
   render::MeshDisplayData display;
   std::shared_ptr<const BorderLookup> borders;

@@ -384,8 +384,8 @@ void Window::apply_face_colors() {
   // Faces keep their order through the scene and merged stages: the edited ones take their colours.
   auto colors = shown_->display.face_colors;
   const FaceParts& parts = shown_->parts;
-  const bool is_edit_stage = settings_.stage == Stage::scene || settings_.stage == Stage::merged;
-  if (is_edit_stage && colors.size() == std::size_t(parts.scene) + parts.consolidated + parts.temporary) {
+  if (is_editable(shown_->stage) &&
+      colors.size() == std::size_t(parts.scene) + parts.consolidated + parts.temporary) {
     auto paint = [&](Index first, Index count, glm::vec3 c) {
       for (Index f = first; f < first + count; ++f)
         colors[f] = {std::uint8_t(c.r * 255.0f + 0.5f), std::uint8_t(c.g * 255.0f + 0.5f),

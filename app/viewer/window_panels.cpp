@@ -312,9 +312,9 @@ void Window::draw_status_bar() {
   ImGui::Begin("##status", nullptr, flags);
   if (session_ && shown_mesh()) {
     const Mesh& mesh = *shown_mesh();
-    ImGui::Text("%s%s | %u V, %u F | %s mode", session_->path().filename().string().c_str(),
-                session_->is_modified() ? " *" : "", mesh.num_vertices(), mesh.num_faces(),
-                to_string(selection_.mode()));
+    ImGui::Text("%s%s | %s stage: %u V, %u F | %s mode", session_->path().filename().string().c_str(),
+                session_->is_modified() ? " *" : "", to_string(shown_->stage), mesh.num_vertices(),
+                mesh.num_faces(), to_string(selection_.mode()));
   } else {
     ImGui::TextUnformatted("no file: File > Open (Ctrl+O) or drop a file on the window");
   }

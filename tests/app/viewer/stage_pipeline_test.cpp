@@ -25,6 +25,7 @@ Mesh shown(StagePipeline& pipeline, const PolygonSoup& soup, const StageSettings
   const auto result = pipeline.run(soup, settings, std::stop_token{});
   REQUIRE(result);
   CHECK(result->display.num_faces == result->mesh->num_faces());
+  CHECK(result->stage == settings.stage);
   return *result->mesh;
 }
 
