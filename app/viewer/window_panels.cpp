@@ -114,8 +114,8 @@ void Window::draw_menu() {
 
 void Window::draw_control_panel() {
   ImGui::SetNextWindowPos(ImVec2(8, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(350, 0), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Controls")) {
+  // Fits its content as sections open and close (every widget has a fixed width: no feedback loop).
+  if (!ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return;
   }
@@ -137,6 +137,7 @@ void Window::draw_control_panel() {
     int stage = int(settings_.stage);
     const char* stages[] = {to_string(Stage::scene), to_string(Stage::merged), to_string(Stage::subdivided),
                             to_string(Stage::offset), to_string(Stage::subdivided_offset)};
+    ImGui::SetNextItemWidth(200);
     if (ImGui::Combo("show", &stage, stages, IM_ARRAYSIZE(stages))) settings_.stage = Stage(stage);
     if (ImGui::Button("Merge")) settings_.stage = Stage::merged;
     ImGui::SameLine();
