@@ -155,16 +155,24 @@ class OffsetBuilder {
       minus.vertices = {out_vertex(in.vertices[1], 1 - sb), out_vertex(in.vertices[0], 1 - sa)};
       plus.corners[0] = ca;
       minus.corners[0] = negative_corner_along_edge(ca);
+      // Faces from the input edge's own record (a lookup per corner would read at random).
+      plus.faces[0] = in.faces[0];
+      minus.faces[0] = nf_ + in.faces[0];
       if (in.is_boundary()) {
         const Index j = loop_of_edge_[e];
         plus.corners[1] = ribbon_corner(j, 0);
         minus.corners[1] = ribbon_corner(j, 2);
+        plus.faces[1] = minus.faces[1] = 2 * nf_ + j;
       } else if (in.is_mobius) {
         plus.corners[1] = negative_corner_along_edge(in.corners[1]);
         minus.corners[1] = in.corners[1];
+        plus.faces[1] = nf_ + in.faces[1];
+        minus.faces[1] = in.faces[1];
       } else {
         plus.corners[1] = in.corners[1];
         minus.corners[1] = negative_corner_along_edge(in.corners[1]);
+        plus.faces[1] = in.faces[1];
+        minus.faces[1] = nf_ + in.faces[1];
       }
       plus.is_sharp = minus.is_sharp = in.is_sharp;
       for (Edge* out : {&plus, &minus})
@@ -191,7 +199,8 @@ class OffsetBuilder {
           }
         }
       }
-    for (Edge& e : a.edges) e.faces = {face_of(e.corners[0]), face_of(e.corners[1])};
+    for (Index e = 2 * ne_; e < a.edges.size(); ++e)
+      a.edges[e].faces = {ribbon_face(a.edges[e].corners[0]), ribbon_face(a.edges[e].corners[1])};
   }
 
   // Components without a walk over the (twice as large) output: a closed component that orients
@@ -220,11 +229,7 @@ class OffsetBuilder {
         a.face_components[2 * nf_ + loop_of_edge_[e]] = first_output[m_.face_component(m_.edge(e).faces[0])];
   }
 
-  Index face_of(Index c) const {
-    if (c < nc_) return m_.corner_face(c);
-    if (c < 2 * nc_) return nf_ + m_.corner_face(c - nc_);
-    return 2 * nf_ + (c - 2 * nc_) / 4;
-  }
+  Index ribbon_face(Index c) const { return 2 * nf_ + (c - 2 * nc_) / 4; }
 
   // Output vertex (v, side): the copies of v's fan faces that hold it, in fan order; at a border vertex
   // the fan closes through the last border quad, the side edge and the first border quad.
@@ -262,14 +267,21 @@ class OffsetBuilder {
         fc[side][i] = c;
         fc[1 - side][i] = negative_corner_at_vertex(c);
       }
+      // Fan edge i lies between corners i-1 and i (cyclically inside, only one of them at a border end).
+      // Unless it is a Möbius edge their signs agree and give its side; only then is its record read.
+      const size_t k = corners.size();
+      const bool border = m_.is_boundary_vertex(v);
       for (size_t i = 0; i < edges.size(); ++i) {
         const Index e = edges[i];
-        const int side = positive_side(first_face_corner_at(e, v));
+        const Index before = corners[i == 0 ? (border ? 0 : k - 1) : i - 1];
+        const Index after = corners[i == k ? k - 1 : i];
+        const int side = positive_side(before) == positive_side(after)
+                             ? positive_side(after)
+                             : positive_side(first_face_corner_at(e, v));
         fe[side][i] = 2 * e;
         fe[1 - side][i] = 2 * e + 1;
       }
-      if (!m_.is_boundary_vertex(v)) continue;
-      const size_t k = corners.size();
+      if (!border) continue;
       for (int side = 0; side < 2; ++side) {
         fc[side][k] = ribbon_corner_at(edges.back(), v, side);
         fc[side][k + 1] = ribbon_corner_at(edges.front(), v, side);
