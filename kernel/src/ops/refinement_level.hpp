@@ -1,7 +1,7 @@
 #pragma once
 
 // Internal to subdivision: one refined level as flat arrays (every face a quad), a view giving a base
-// Mesh the same accessors, and the two passes written once for both.
+// Mesh the same accessors, and the topology and position passes written once for both.
 
 #include <array>
 #include <cstdint>
@@ -27,7 +27,7 @@ enum class LevelDetail { counts, quads, full };
 struct Refinement::Level {
   Index vertex_count = 0, edge_count = 0;
   Index num_vertices() const { return vertex_count; }
-  LargeBuffer<Index> corner_vertices;  // 4 per face, unless only counts were asked for
+  LargeBuffer<Index> corner_vertices;  // 4 per face; empty with LevelDetail::counts (no faces to read)
   LargeBuffer<Index> corner_edges;     // with LevelDetail::full only
   // With LevelDetail::full only. An edge's end vertices are those of its first corner and the next one
   // (no array of their own, to bound the peak memory). Corner signs are left to Refinement::mesh().
