@@ -71,6 +71,7 @@ std::optional<StageResult> StagePipeline::run(const PolygonSoup& scene, const St
   if (stop.stop_requested()) return std::nullopt;
   result.display = render::build_display_data(mesh);
   result.borders = std::make_shared<const BorderLookup>(mesh);
+  result.topology = topology_report(mesh);
   result.mesh = std::make_shared<const Mesh>(std::move(mesh));
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/mesh/topology_report.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "render/mesh_display_data.hpp"
@@ -38,13 +39,14 @@ struct StageSettings {
 };
 
 // Everything a frame needs of a new displayed mesh, computed off the UI thread: the mesh, its GPU-ready
-// arrays and its borders. Only the upload to GL is left to the UI thread, and the picking BVH to the
-// first pick (a slider drag shows many meshes and picks on none).
+// arrays, its borders and its topology report. Only the upload to GL is left to the UI thread, and the
+// picking BVH to the first pick (a slider drag shows many meshes and picks on none).
 struct StageResult {
   Stage stage = Stage::scene;  // which stage the mesh is
   std::shared_ptr<const Mesh> mesh;
   render::MeshDisplayData display;
   std::shared_ptr<const BorderLookup> borders;
+  TopologyReport topology;
   std::vector<std::string> warnings;
   std::vector<std::string> notes;  // what the stages did, for the log
   FaceParts parts;                 // of the scene soup it was made from (faces keep their order)

@@ -349,7 +349,6 @@ void Window::show_result(StageResult result) {
   for (const std::string& w : result.warnings) log_.warning(w);
   for (const std::string& note : result.notes) log_.info(note);
   buffers_ = std::make_unique<render::MeshBuffers>(result.display);
-  topology_.reset();
   picking_bvh_.reset();
   shown_time_ = glfwGetTime();
   shown_ = std::move(result);

@@ -9,7 +9,6 @@
 
 #include <glm/vec2.hpp>
 
-#include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "nome/query/screen_projection.hpp"
 #include "nome/query/triangle_bvh.hpp"
@@ -170,7 +169,6 @@ class Window {
   glm::vec3 consolidated_color_{0.62f, 0.42f, 0.86f};
   glm::vec3 temporary_color_{0.30f, 0.76f, 0.42f};
 
-  std::optional<TopologyReport> topology_;  // of the displayed mesh
   Selection selection_;
   MessageLog log_;
   KeyRegistry keys_;

@@ -243,8 +243,7 @@ void Window::draw_topology_panel() {
     ImGui::End();
     return;
   }
-  if (!topology_) topology_ = topology_report(*shown_mesh());
-  const TopologyReport& report = *topology_;
+  const TopologyReport& report = shown_->topology;
   ImGui::Text("V %u  E %u  F %u  chi %lld", report.vertices, report.edges, report.faces, report.chi);
   ImGui::Text("%s, %u borders, %u Möbius edges", report.orientable ? "orientable" : "non-orientable",
               report.borders, report.mobius_edges);

@@ -26,6 +26,7 @@ Mesh shown(StagePipeline& pipeline, const PolygonSoup& soup, const StageSettings
   REQUIRE(result);
   CHECK(result->display.num_faces == result->mesh->num_faces());
   CHECK(result->stage == settings.stage);
+  CHECK(result->topology.faces == result->mesh->num_faces());
   return *result->mesh;
 }
 
