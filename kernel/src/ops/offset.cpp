@@ -108,10 +108,15 @@ class OffsetBuilder {
     }
     for (Index j = 0; j <= num_border_; ++j) face_offsets[2 * nf_ + j] = 2 * nc_ + 4 * j;
     corner_vertices.resize(2 * size_t(nc_) + 4 * size_t(num_border_));
-    for (Index c = 0; c < nc_; ++c) {
-      const Index v = m_.corner_vertex(c);
-      corner_vertices[c] = out_vertex(v, positive_side(c));
-      corner_vertices[negative_corner_at_vertex(c)] = out_vertex(v, 1 - positive_side(c));
+    // Face by face, so that the negative copy's reversal needs no division (negative_corner_at_vertex).
+    for (Index f = 0; f < nf_; ++f) {
+      const Index b = m_.face_first_corner(f), n = m_.face_degree(f);
+      for (Index i = 0; i < n; ++i) {
+        const Index v = m_.corner_vertex(b + i);
+        const int side = positive_side(b + i);
+        corner_vertices[b + i] = out_vertex(v, side);
+        corner_vertices[nc_ + b + (i == 0 ? 0 : n - i)] = out_vertex(v, 1 - side);
+      }
     }
     // Border quad (b+, a+, a-, b-) for border edge a -> b of its face: it runs against both copies.
     for (Index l = 0; l < m_.num_boundary_loops(); ++l)
