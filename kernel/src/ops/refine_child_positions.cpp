@@ -19,53 +19,29 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
   const Index out_vp = 2 * (nc + ne);                   // P's vertex points in `out`
   const bool classic = rule == SubdivisionRule::classic;
 
-  // phase: face points of P's quads, one per G corner.
-  parallel_for(nc, threads, [&](Index begin, Index end) {
-    for (Index c = begin; c < end; ++c) {
-      Vec3 sum = in[vp + g.corner_vertex(c)];
-      sum += in[ep + g.corner_edge(c)];
-      sum += in[g.corner_face(c)];
-      sum += in[ep + g.corner_edge(g.prev_corner(c))];
-      out[c] = sum * 0.25;
-    }
-  });
-
-  // phase: edge points of the halves of G's edges. Half 2e runs vp(v0) -> ep(e) with P quads ca and, on
-  // the far side, nb (cb when e is Möbius: face b then starts at v0 too); half 2e+1 runs ep(e) -> vp(v1).
-  parallel_for(ne, threads, [&](Index begin, Index end) {
-    for (Index e = begin; e < end; ++e) {
-      const Index ca = g.edge_corner(e, 0), cb = g.edge_corner(e, 1), na = g.next_corner(ca);
-      const Vec3 first = in[vp + g.corner_vertex(ca)] + in[ep + e];
-      const Vec3 second = in[ep + e] + in[vp + g.corner_vertex(na)];
-      if (g.is_crease(e)) {
-        out[out_ep + 2 * e] = first * 0.5;
-        out[out_ep + 2 * e + 1] = second * 0.5;
-      } else {
-        const Index nb = g.next_corner(cb);
-        const bool mobius = g.is_mobius(e);
-        out[out_ep + 2 * e] = (first + out[ca] + out[mobius ? cb : nb]) * 0.25;
-        out[out_ep + 2 * e + 1] = (second + out[na] + out[mobius ? nb : cb]) * 0.25;
-      }
-    }
-  });
-  // Interior edge of corner c: ep(leaving edge) -> fp, between P quads c and next(c).
-  parallel_for(nc, threads, [&](Index begin, Index end) {
-    for (Index c = begin; c < end; ++c) {
-      const Vec3 sum = in[ep + g.corner_edge(c)] + in[g.corner_face(c)];
-      out[out_interior + c] = (sum + out[c] + out[g.next_corner(c)]) * 0.25;
-    }
-  });
-
   // The classic rule's corner sums count each neighbour twice.
   auto smooth = [classic](const Vec3& here, const Vec3& edge_sum, const Vec3& face_sum, double n) {
     return smooth_vertex_point(here, classic ? edge_sum * 0.5 : edge_sum, face_sum, n);
   };
 
-  // phase: vertex points of P's face points. Fan: quads b..b+n-1; P corner 4c+2 sits between ep(edge of c)
-  // and ep(edge of prev c); fan edge i is the interior edge of corner b + i - 1. Never on a crease.
+  // phase: G face by G face, what reads only that face: the face points of its P quads, the edge points
+  // of its P interior edges (corner c's runs ep(leaving edge) -> fp, between quads c and next(c)), and the
+  // vertex point of its P face point, whose fan is the face's quads (P corner 4c+2 sits between ep(edge
+  // of c) and ep(edge of prev c); fan edge i is the interior edge of corner b + i - 1; never a crease).
   parallel_for(nf, threads, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f) {
       const Index b = g.face_begin(f), n = g.face_end(f) - b;
+      for (Index c = b; c < b + n; ++c) {
+        Vec3 sum = in[vp + g.corner_vertex(c)];
+        sum += in[ep + g.corner_edge(c)];
+        sum += in[f];
+        sum += in[ep + g.corner_edge(g.prev_corner(c))];
+        out[c] = sum * 0.25;
+      }
+      for (Index c = b; c < b + n; ++c) {
+        const Vec3 sum = in[ep + g.corner_edge(c)] + in[f];
+        out[out_interior + c] = (sum + out[c] + out[g.next_corner(c)]) * 0.25;
+      }
       Vec3 face_sum(0.0), edge_sum(0.0);
       for (Index c = b; c < b + n; ++c) {
         face_sum += out[c];
@@ -77,16 +53,23 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
     }
   });
 
-  // Vertex points of P's edge points: fan corners 4ca+1, 4na+3 and face b's two (in the order its
-  // direction gives), fan edges 2e, interior(ca), 2e+1, interior(cb). A crease edge's halves are creases.
+  // phase: G edge by G edge: the edge points of its halves and the vertex point of its P edge point.
+  // Half 2e runs vp(v0) -> ep(e) with P quads ca and, on the far side, nb (cb when e is Möbius: face b
+  // then starts at v0 too); half 2e+1 runs ep(e) -> vp(v1). The edge point's fan: corners 4ca+1, 4na+3
+  // and face b's two (in the order its direction gives), edges 2e, interior(ca), 2e+1, interior(cb). A
+  // crease edge's halves are creases.
   parallel_for(ne, threads, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e) {
       const Index ca = g.edge_corner(e, 0), cb = g.edge_corner(e, 1), na = g.next_corner(ca);
       const Vec3& here = in[ep + e];
       const Vec3& a0 = in[vp + g.corner_vertex(ca)];
       const Vec3& a1 = in[vp + g.corner_vertex(na)];
+      const Vec3 first = a0 + here;
+      const Vec3 second = here + a1;
       Vec3& result = out[out_vp + nf + e];
       if (g.is_crease(e)) {
+        out[out_ep + 2 * e] = first * 0.5;
+        out[out_ep + 2 * e + 1] = second * 0.5;
         Vec3 sharp_sum(0.0);
         sharp_sum += a0;
         sharp_sum += a1;
@@ -94,12 +77,14 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
         continue;
       }
       const Index nb = g.next_corner(cb);
+      const bool mobius = g.is_mobius(e);
+      out[out_ep + 2 * e] = (first + out[ca] + out[mobius ? cb : nb]) * 0.25;
+      out[out_ep + 2 * e + 1] = (second + out[na] + out[mobius ? nb : cb]) * 0.25;
       const Vec3& fa = in[g.corner_face(ca)];
       const Vec3& fb = in[g.corner_face(cb)];
       // Face b's quad at its edge's first corner (cb: neighbours fp(b), vp(v_cb)) and at the next one.
       const Vec3 at_cb = fb + in[vp + g.corner_vertex(cb)];
       const Vec3 at_nb = in[vp + g.corner_vertex(nb)] + fb;
-      const bool mobius = g.is_mobius(e);
       Vec3 face_sum(0.0), edge_sum(0.0);
       face_sum += out[ca];
       face_sum += out[na];
@@ -120,8 +105,9 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
     }
   });
 
-  // Vertex points of P's vertex points: G's fan, quad c for corner c (P corner 4c, between ep(edge of c)
-  // and ep(edge of prev c)), half 2e or 2e+1 for edge e; each half keeps its parent's crease flag.
+  // phase: G vertex by G vertex, the vertex points of P's vertex points: G's fan, quad c for corner c
+  // (P corner 4c, between ep(edge of c) and ep(edge of prev c)), half 2e or 2e+1 for edge e; each half
+  // keeps its parent's crease flag.
   parallel_for(g.num_vertices(), threads, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v) {
       const Vec3& here = in[vp + v];
