@@ -10,8 +10,12 @@ namespace nome::test {
 CommandResult run_viewer(const std::string& arguments) {
   // A state folder of its own: a recovery file a crashed viewer left in the user's would be offered.
   const std::string state = private_scratch_dir("viewer_state");
-  return run_nome_prefixed("env XDG_STATE_HOME=" + state + " xvfb-run -a -s \"-screen 0 1280x800x24\"",
-                           arguments);
+  // An authority file of its own: without one xvfb-run makes a temporary folder and, when removing it
+  // fails, exits 5 in place of the viewer's status.
+  static int sessions = 0;
+  const std::string auth = private_scratch_dir("xvfb") + "/auth-" + std::to_string(sessions++);
+  return run_nome_prefixed(
+      "env XDG_STATE_HOME=" + state + " xvfb-run -a -f " + auth + " -s \"-screen 0 1280x800x24\"", arguments);
 }
 
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation) {
