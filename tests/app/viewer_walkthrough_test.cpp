@@ -9,6 +9,8 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
+#include "viewer/session.hpp"
+#include "viewer/stage_pipeline.hpp"
 
 using namespace nome;
 using nome::test::run_viewer;
@@ -183,4 +185,87 @@ TEST_CASE("a script moves sliders by name and an unknown slider fails the sessio
   const Index six = build_mesh(read_polygons(dir + "/six.obj")).num_faces();
   const Index eight = build_mesh(read_polygons(dir + "/eight.obj")).num_faces();
   CHECK(six * 8 == eight * 6);
+}
+
+TEST_CASE(
+    "Klein bottle walkthrough, start to finish: five zips close the tunnels into a Klein bottle, "
+    "then a solid",
+    "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("walkthrough_klein_bottle_all");
+  const std::string file = examples + "klein_bottle.nome";
+  // The test follows the session as the viewer runs it (same Session, same merged stage), so that each
+  // click lands on a vertex of the mesh on screen at that moment.
+  viewer::Session session = viewer::Session::open(file);
+  viewer::StagePipeline pipeline;
+  viewer::StageSettings merged;
+  merged.stage = viewer::Stage::merged;
+  auto shown = [&] { return *pipeline.run(session.scene_soup(), merged, std::stop_token{}); };
+  // The report's chain of rims: t1 up into t2, across t3, down t4 into the outer t5, whose lower rim
+  // turns in to meet t1's (the inverted sock). A rim is named by a vertex of it and its loop's centre.
+  const viewer::StageResult start = shown();
+  auto rim = [&](const std::string& instance, int axis, bool is_high) {
+    std::string best;
+    double extreme = is_high ? -1e300 : 1e300;
+    for (Index l = 0; l < start.mesh->num_boundary_loops(); ++l) {
+      const auto loop = start.borders->loop_vertices(l);
+      if (!start.mesh->vertex_names()[loop[0]].starts_with("kb_" + instance + "_")) continue;
+      double centre = 0.0;
+      for (Index v : loop) centre += start.mesh->position(v)[axis] / double(loop.size());
+      if (is_high ? centre > extreme : centre < extreme) {
+        extreme = centre;
+        best = start.mesh->vertex_names()[loop[0]];
+      }
+    }
+    return best;
+  };
+  const std::pair<std::string, std::string> zips[] = {{rim("t1", 2, true), rim("t2", 2, false)},
+                                                      {rim("t2", 2, true), rim("t3", 0, false)},
+                                                      {rim("t3", 0, true), rim("t4", 2, true)},
+                                                      {rim("t4", 2, false), rim("t5", 2, true)},
+                                                      {rim("t5", 2, false), rim("t1", 2, false)}};
+  std::string script = "action merge\nmode border\n";
+  const std::pair<double, double> views[] = {{30, 25},  {210, 25}, {30, -25}, {210, -25},
+                                             {120, 10}, {300, 10}, {0, 80},   {0, -80}};
+  for (const auto& [first, second] : zips) {
+    REQUIRE_FALSE(first.empty());
+    REQUIRE_FALSE(second.empty());
+    const viewer::StageResult now = shown();
+    const auto& names = now.mesh->vertex_names();
+    auto clickable = [&](const std::string& name,
+                         const ScreenProjection& projection) -> std::optional<std::pair<Index, glm::dvec2>> {
+      const Index v = Index(std::find(names.begin(), names.end(), name) - names.begin());
+      if (v == names.size() || !now.borders->is_on_border(v)) return std::nullopt;
+      for (Index u : now.borders->loop_vertices(now.borders->loop_of(v)))
+        if (const auto p = nome::test::click_position(*now.mesh, projection, u)) return std::pair{u, *p};
+      return std::nullopt;
+    };
+    bool is_zipped = false;
+    for (const auto& [azimuth, elevation] : views) {
+      const auto projection = nome::test::viewer_projection(*now.mesh, azimuth, elevation);
+      const auto a = clickable(first, projection), b = clickable(second, projection);
+      if (!a || !b) continue;
+      script += "view " + std::to_string(int(azimuth)) + " " + std::to_string(int(elevation)) + "\n" +
+                click_line(a->second) + click_line(b->second) + "action zip\n";
+      REQUIRE(
+          session.zipper(*now.mesh, {a->first, a->first, false}, {b->first, b->first, false}, {}).applied);
+      is_zipped = true;
+      break;
+    }
+    INFO(first << " and " << second);
+    REQUIRE(is_zipped);
+  }
+  const TopologyReport expected = topology_report(*shown().mesh);
+  CHECK(expected.borders == 0);
+  CHECK(expected.chi == 0);
+  CHECK_FALSE(expected.orientable);
+  std::ofstream(dir + "/script.txt") << script << "view 30 25\n"
+                                     << subdivide_and_offset(dir, "klein_bottle_closed.png") << "quit\n";
+  const auto r = run_viewer(file + " --script " + dir + "/script.txt");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const TopologyReport bottle = topology_report(build_mesh(read_polygons(dir + "/merged.obj")));
+  CHECK(bottle.borders == 0);
+  CHECK(bottle.chi == 0);
+  CHECK_FALSE(bottle.orientable);
+  check_solid(dir);
 }
