@@ -269,3 +269,76 @@ TEST_CASE(
   CHECK_FALSE(bottle.orientable);
   check_solid(dir);
 }
+
+TEST_CASE(
+    "funnel cube walkthrough, start to finish: the report's sliders and four polygons at a corner, "
+    "accepted and saved as the report saved them",
+    "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("walkthrough_funnel_cube_corner");
+  const std::string file = examples + "funnel_cube.nome";
+  // The report's slider values are those of the file it saved, and its corner polygons those of the
+  // file's `mesh m1` (report Fig. 11b).
+  const scene::Scene report = read_scene(examples + "funnel_cube_consolidated.nome");
+  const std::vector<std::vector<std::string>> polygons = {{"fun3_hc3", "fun2_hc5", "fun2_hc6", "fun3_hc2"},
+                                                          {"fun3_hc3", "fun5_hc3", "fun2_hc5"},
+                                                          {"fun3_hc4", "fun5_hc2", "fun5_hc3", "fun3_hc3"},
+                                                          {"fun5_hc3", "fun5_hc4", "fun2_hc4", "fun2_hc5"}};
+  viewer::Session session = viewer::Session::open(file);
+  std::string script;
+  for (const char* name : {"fp_ro", "fp_ratio", "fp_h", "fp_z"}) {
+    const double value = report.parameters()[*report.find_parameter(name)].value;
+    session.set_parameter(name, value);
+    script += "set " + std::string(name) + " " + std::to_string(value) + "\n";
+  }
+  script += "mode vertex\n";
+  viewer::StagePipeline pipeline;
+  const viewer::StageSettings scene_stage;
+  std::vector<std::pair<double, double>> views;
+  for (const double elevation : {-35.0, 35.0, 0.0})
+    for (double azimuth = 0; azimuth < 360; azimuth += 30) views.emplace_back(azimuth, elevation);
+  for (const auto& face : polygons) {
+    const auto now = pipeline.run(session.scene_soup(), scene_stage, std::stop_token{});
+    const auto& names = now->mesh->vertex_names();
+    // A view where every corner is clickable (a corner may have copies in earlier temporary faces: any
+    // copy carries the name the polygon is made of).
+    bool is_added = false;
+    for (const auto& [azimuth, elevation] : views) {
+      const auto projection = nome::test::viewer_projection(*now->mesh, azimuth, elevation);
+      std::vector<Index> corners;
+      std::string clicks;
+      for (const std::string& corner : face) {
+        const std::string full = session.scene()->resolve_vertex_name(corner);
+        std::optional<glm::dvec2> at;
+        for (Index v = 0; v < names.size() && !at; ++v)
+          if (names[v] == full && (at = nome::test::click_position(*now->mesh, projection, v)))
+            corners.push_back(v);
+        if (!at) break;
+        clicks += click_line(*at);
+      }
+      if (corners.size() != face.size()) continue;
+      script += "view " + std::to_string(int(azimuth)) + " " + std::to_string(int(elevation)) + "\n" +
+                clicks + "action add-polygon\n";
+      REQUIRE(session.add_polygon(*now->mesh, corners).applied);
+      is_added = true;
+      break;
+    }
+    INFO("face of " << face.size() << " corners, first " << face[0]);
+    REQUIRE(is_added);
+  }
+  std::ofstream(dir + "/script.txt") << script << "action accept\nview 0 -35\nscreenshot " << dir
+                                     << "/funnel_cube_corner.png\nsave " << dir << "/saved.nome\nquit\n";
+  const auto r = run_viewer(file + " --script " + dir + "/script.txt");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const scene::Scene saved = read_scene(dir + "/saved.nome");
+  REQUIRE(saved.consolidated_faces().size() == polygons.size());
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    const auto& got = saved.consolidated_faces()[f];
+    REQUIRE(got.size() == polygons[f].size());
+    for (std::size_t i = 0; i < got.size(); ++i)
+      CHECK(saved.resolve_vertex_name(got[i]) == saved.resolve_vertex_name(polygons[f][i]));
+  }
+  for (const char* name : {"fp_ro", "fp_ratio", "fp_h", "fp_z"})
+    CHECK(saved.parameters()[*saved.find_parameter(name)].value ==
+          Approx(report.parameters()[*report.find_parameter(name)].value));
+}
