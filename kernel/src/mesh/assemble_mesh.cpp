@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "nome/mesh/mesh.hpp"
+#include "ops/large_buffer.hpp"
 
 namespace nome {
 
@@ -17,7 +18,7 @@ Mesh assemble_mesh(MeshArrays arrays) {
   m.fan_edge_offsets_ = std::move(arrays.fan_edge_offsets);
   m.fan_edges_ = std::move(arrays.fan_edges);
   m.face_colors_ = std::move(arrays.face_colors);
-  m.corner_faces_.resize(m.corner_vertices_.size());
+  resize_on_huge_pages(m.corner_faces_, m.corner_vertices_.size());
   for (Index f = 0; f < m.num_faces(); ++f)
     std::fill(m.corner_faces_.begin() + m.face_offsets_[f], m.corner_faces_.begin() + m.face_offsets_[f + 1],
               f);

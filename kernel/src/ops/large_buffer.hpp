@@ -3,7 +3,10 @@
 #include <sys/mman.h>
 
 #include <cstddef>
+#include <cstdint>
+#include <iterator>
 #include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -53,5 +56,30 @@ struct LargeBufferAllocator {
 
 template <class T>
 using LargeBuffer = std::vector<T, LargeBufferAllocator<T>>;
+
+// Reserves room for n elements in a plain std::vector (a Mesh's arrays, which the public API keeps as
+// std::vector) that is about to be filled, the block marked for transparent huge pages before its first
+// touch: the same cut in page faults as LargeBuffer, where the type cannot change.
+template <class T>
+void reserve_on_huge_pages(std::vector<T>& v, std::size_t n) {
+  constexpr std::size_t page = 4096;
+  if (n * sizeof(T) < LargeBufferAllocator<T>::huge_page || v.capacity() >= n) return;
+  v.reserve(n);
+  const auto start = reinterpret_cast<std::uintptr_t>(v.data());
+  const std::uintptr_t first = start / page * page;
+  madvise(reinterpret_cast<void*>(first), start + n * sizeof(T) - first, MADV_HUGEPAGE);  // advice only
+}
+
+template <class T>
+void resize_on_huge_pages(std::vector<T>& v, std::size_t n, const std::type_identity_t<T>& value = T()) {
+  reserve_on_huge_pages(v, n);
+  v.resize(n, value);
+}
+
+template <class T, class Range>
+void assign_on_huge_pages(std::vector<T>& v, const Range& range) {
+  reserve_on_huge_pages(v, std::size(range));
+  v.assign(std::begin(range), std::end(range));
+}
 
 }  // namespace nome

@@ -4,6 +4,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "ops/large_buffer.hpp"
+
 namespace nome {
 
 namespace {
@@ -33,8 +35,8 @@ Normals compute_normals(const Mesh& mesh) {
   const Index* corners = mesh.corner_vertices().data();
   const signed char* signs = mesh.corner_signs().data();
   Normals out;
-  out.faces.resize(mesh.num_faces());
-  out.vertices.assign(mesh.num_vertices(), Vec3(0.0));
+  resize_on_huge_pages(out.faces, mesh.num_faces());
+  resize_on_huge_pages(out.vertices, mesh.num_vertices(), Vec3(0.0));
   // One pass over the faces, in corner order: each face's normal is added to its vertices' sums with its
   // corner's sign right away (streaming reads; gathering over the fans instead reads three arrays at
   // random per corner).

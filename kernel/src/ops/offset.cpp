@@ -6,6 +6,7 @@
 #include "nome/error.hpp"
 #include "nome/mesh/face_orientation.hpp"
 #include "nome/ops/normals.hpp"
+#include "ops/large_buffer.hpp"
 
 namespace nome {
 namespace {
@@ -59,7 +60,7 @@ class OffsetBuilder {
 
   Mesh build(const Normals& normals, double distance) const {
     MeshArrays a;
-    a.positions.resize(2 * size_t(nv_out_));
+    resize_on_huge_pages(a.positions, 2 * size_t(nv_out_));
     write_offset_positions(m_, normals, distance, a.positions);
     faces(a.face_offsets, a.corner_vertices);
     edges(a);
@@ -71,7 +72,7 @@ class OffsetBuilder {
 
   PolygonSoup polygons(const Normals& normals, double distance) const {
     PolygonSoup s;
-    s.positions.resize(2 * size_t(nv_out_));
+    resize_on_huge_pages(s.positions, 2 * size_t(nv_out_));
     write_offset_positions(m_, normals, distance, s.positions);
     faces(s.face_offsets, s.face_vertices);
     s.face_colors = face_colors();
@@ -101,13 +102,13 @@ class OffsetBuilder {
   }
 
   void faces(std::vector<Index>& face_offsets, std::vector<Index>& corner_vertices) const {
-    face_offsets.resize(2 * size_t(nf_) + num_border_ + 1);
+    resize_on_huge_pages(face_offsets, 2 * size_t(nf_) + num_border_ + 1);
     for (Index f = 0; f <= nf_; ++f) {
       face_offsets[f] = m_.face_offsets()[f];
       face_offsets[nf_ + f] = nc_ + m_.face_offsets()[f];
     }
     for (Index j = 0; j <= num_border_; ++j) face_offsets[2 * nf_ + j] = 2 * nc_ + 4 * j;
-    corner_vertices.resize(2 * size_t(nc_) + 4 * size_t(num_border_));
+    resize_on_huge_pages(corner_vertices, 2 * size_t(nc_) + 4 * size_t(num_border_));
     // Face by face, so that the negative copy's reversal needs no division (negative_corner_at_vertex).
     for (Index f = 0; f < nf_; ++f) {
       const Index b = m_.face_first_corner(f), n = m_.face_degree(f);
@@ -147,9 +148,9 @@ class OffsetBuilder {
   // Input edge e gives edge 2e (in the positive copy of its first face) and 2e+1 (in the negative copy);
   // border vertex at loop position j gives the side edge 2E + j.
   void edges(MeshArrays& a) const {
-    a.edges.resize(2 * size_t(ne_) + num_border_);
-    a.corner_edges.resize(a.corner_vertices.size());
-    a.corner_signs.assign(a.corner_vertices.size(), 1);
+    resize_on_huge_pages(a.edges, 2 * size_t(ne_) + num_border_);
+    resize_on_huge_pages(a.corner_edges, a.corner_vertices.size());
+    resize_on_huge_pages(a.corner_signs, a.corner_vertices.size(), 1);
     for (Index e = 0; e < ne_; ++e) {
       const Edge& in = m_.edge(e);
       Edge& plus = a.edges[2 * e];
@@ -221,7 +222,7 @@ class OffsetBuilder {
       first_output[k] = a.num_components;
       a.num_components += splits[k] ? 2 : 1;
     }
-    a.face_components.resize(2 * size_t(nf_) + num_border_);
+    resize_on_huge_pages(a.face_components, 2 * size_t(nf_) + num_border_);
     for (Index f = 0; f < nf_; ++f) {
       const Index k = m_.face_component(f);
       const Index other = splits[k] ? 1 : 0;
@@ -240,8 +241,8 @@ class OffsetBuilder {
   // the fan closes through the last border quad, the side edge and the first border quad.
   void fans(MeshArrays& a) const {
     const Index nv = m_.num_vertices();
-    a.fan_corner_offsets.assign(2 * size_t(nv_out_) + 1, 0);
-    a.fan_edge_offsets.assign(2 * size_t(nv_out_) + 1, 0);
+    resize_on_huge_pages(a.fan_corner_offsets, 2 * size_t(nv_out_) + 1, 0);
+    resize_on_huge_pages(a.fan_edge_offsets, 2 * size_t(nv_out_) + 1, 0);
     for (Index v = 0; v < nv; ++v) {
       if (rank_[v] == no_index) continue;
       const Index k = Index(m_.vertex_corners(v).size()) + (m_.is_boundary_vertex(v) ? 2 : 0);
@@ -254,8 +255,8 @@ class OffsetBuilder {
       a.fan_corner_offsets[i] += a.fan_corner_offsets[i - 1];
       a.fan_edge_offsets[i] += a.fan_edge_offsets[i - 1];
     }
-    a.fan_corners.resize(a.fan_corner_offsets.back());
-    a.fan_edges.resize(a.fan_edge_offsets.back());
+    resize_on_huge_pages(a.fan_corners, a.fan_corner_offsets.back());
+    resize_on_huge_pages(a.fan_edges, a.fan_edge_offsets.back());
     for (Index v = 0; v < nv; ++v) {
       if (rank_[v] == no_index) continue;
       const auto corners = m_.vertex_corners(v);

@@ -6,6 +6,7 @@
 #include "nome/error.hpp"
 #include "nome/ops/normals.hpp"
 #include "nome/ops/offset.hpp"
+#include "ops/large_buffer.hpp"
 
 namespace nome {
 namespace {
@@ -136,7 +137,8 @@ Mesh& Pipeline::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int lev
   if (topology_changed_ || !stage.refinement || stage.levels != levels) {
     stage.refinement.emplace(in, levels, o.threads);
     stage.levels = levels;
-    std::vector<Vec3> positions(stage.refinement->num_vertices());
+    std::vector<Vec3> positions;
+    resize_on_huge_pages(positions, stage.refinement->num_vertices());
     stage.refinement->refine_positions(in, o.rule, positions, o.threads);
     stage.result = stage.refinement->mesh(in, std::move(positions), o.threads);
     stage.work = StageWork::rebuilt;
