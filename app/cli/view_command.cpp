@@ -2,25 +2,37 @@
 
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
+#include "nome/io/read_scene.hpp"
 #include "viewer/script.hpp"
 #include "viewer/viewer.hpp"
 
 namespace nome::cli {
 
 int view_command(const std::vector<std::string>& args) {
-  Arguments parsed("", "nome [FILE] [--script S.txt] [--size WxH]",
+  Arguments parsed("", "nome [FILE [SAVED.anom ...]] [--script S.txt] [--size WxH]",
                    {{"--script", "", "S.txt", "replay the viewer commands in S.txt, one a line"},
                     {"--size", "", "WxH", "window size in screen pixels (default 1280x800)"}});
   parsed.parse(args);
   if (parsed.has("--help")) {
-    std::cout << "Opens the viewer window on FILE (.nome .anom .sif .slf .obj .stl).\n\n"
-              << parsed.help() << "\n"
-              << viewer::script_synopsis();
+    std::cout
+        << "Opens the viewer window on FILE (.nome .nom .slf .sif .obj .stl); each SAVED.anom after a scene\n"
+        << "applies its saved slider values and working mesh to it.\n\n"
+        << parsed.help() << "\n"
+        << viewer::script_synopsis();
     return 0;
   }
-  if (parsed.positionals().size() > 1) throw UsageError("the viewer opens one file at a time");
   viewer::ViewerOptions options;
-  if (!parsed.positionals().empty()) options.file = parsed.positionals()[0];
+  for (const std::string& file : parsed.positionals()) {
+    if (is_anom_file(file)) {
+      if (!options.file || !is_scene_file(*options.file))
+        throw UsageError(file + ": an .anom file applies to an open scene: give the .nome file before it");
+      options.anom_files.emplace_back(file);
+    } else if (options.file) {
+      throw UsageError("the viewer opens one file at a time (and the .anom files that apply to it)");
+    } else {
+      options.file = file;
+    }
+  }
   if (const auto script = parsed.value("--script")) options.script = *script;
   if (const auto size = parsed.value("--size")) {
     int w = 0, h = 0;

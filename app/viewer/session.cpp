@@ -152,6 +152,18 @@ void Session::save(const std::filesystem::path& path) {
   update_soup();
 }
 
+void Session::apply_anom(const std::filesystem::path& path) {
+  if (!scene_)
+    throw InvalidInputError(path.string() + ": an .anom file applies to an open scene, and " +
+                            path_.filename().string() + " is not one: open its .nome first");
+  scene::Scene next = *scene_;
+  next.apply_anom(read_text_file(path), path.string());
+  scene_.emplace(std::move(next));
+  document_.set_scene_geometry(scene_->combined_soup());
+  is_modified_ = true;
+  update_soup();
+}
+
 void Session::reload() {
   if (!scene_) {
     document_.set_scene_geometry(with_names(read_polygons(path_)));

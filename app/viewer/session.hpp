@@ -71,6 +71,11 @@ class Session {
   bool undo();
   bool redo();
 
+  // Applies an .anom file (the original program's saved work: slider values and a working mesh that
+  // replaces the consolidated faces) to the open scene, as unsaved changes. Throws InvalidInputError for
+  // flat geometry, SceneError (nothing changes then) when its names or values do not fit the scene.
+  void apply_anom(const std::filesystem::path& path);
+
   // Reads the file again, keeping the edits; on an error the session keeps what it had and rethrows.
   void reload();
 

@@ -2,12 +2,14 @@
 
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 namespace nome::viewer {
 
 struct ViewerOptions {
   std::optional<std::filesystem::path> file;
-  std::optional<std::filesystem::path> script;  // replayed one command per frame, then the window stays
+  std::vector<std::filesystem::path> anom_files;  // applied to `file`'s scene in order
+  std::optional<std::filesystem::path> script;    // replayed one command per frame, then the window stays
   int width = 1280;
   int height = 800;
 };

@@ -12,6 +12,7 @@
 
 #include "nome/error.hpp"
 #include "nome/io/obj.hpp"
+#include "nome/io/read_scene.hpp"
 #include "nome/io/stl.hpp"
 #include "nome/query/pick.hpp"
 #include "render/image.hpp"
@@ -69,6 +70,7 @@ Window::Window(GLFWwindow* window, const ViewerOptions& options)
   }
   if (options.file) open(*options.file);
   if (options.file && !session_) exit_status_ = 1;
+  for (const std::filesystem::path& anom : options.anom_files) apply_anom(anom);
   log_.info("Press ? or F1 for the keys; left drag turns, right drag pans, the wheel zooms.");
 }
 
@@ -138,13 +140,25 @@ void Window::register_keys() {
 
 // ---------------------------------------------------------------------------------------------- files
 
-void Window::drop(const std::vector<std::filesystem::path>& paths) {
-  if (paths.empty()) return;
-  if (paths.size() > 1) log_.info("several files dropped: opening the last, " + paths.back().string());
-  request_open(paths.back());
+bool Window::drop(const std::vector<std::filesystem::path>& paths) {
+  // One document per window: the last scene or mesh dropped opens, then the .anom files apply to it.
+  std::vector<std::filesystem::path> files, anoms;
+  for (const std::filesystem::path& path : paths) (is_anom_file(path) ? anoms : files).push_back(path);
+  if (files.size() > 1) log_.info("several files dropped: opening the last, " + files.back().string());
+  bool done = true;
+  if (!files.empty()) {
+    request_open(files.back());
+    done = unsaved_prompt_ || (session_ && session_->path() == files.back());
+  }
+  for (const std::filesystem::path& anom : anoms) done = apply_anom(anom) && done;
+  return done;
 }
 
 void Window::request_open(const std::filesystem::path& path) {
+  if (is_anom_file(path)) {
+    apply_anom(path);
+    return;
+  }
   if (!session_ || !session_->is_modified()) {
     open(path);
     return;
@@ -176,6 +190,25 @@ void Window::open(const std::filesystem::path& path) {
     glfwSetWindowTitle(window_, ("Nome - " + path.filename().string()).c_str());
   } catch (const std::exception& e) {
     log_.error(e.what());
+  }
+}
+
+bool Window::apply_anom(const std::filesystem::path& path) {
+  if (!session_) {
+    log_.error(path.string() + ": an .anom file applies to an open scene: open its .nome first");
+    return false;
+  }
+  try {
+    session_->apply_anom(path);
+    recent_.add(path);
+    selection_.clear();
+    update_stage();
+    log_.info("applied " + path.string() + " to " + session_->path().filename().string() + " (" +
+              std::to_string(session_->scene_soup().num_faces()) + " faces)");
+    return true;
+  } catch (const std::exception& e) {
+    log_.error(e.what());
+    return false;
   }
 }
 
@@ -668,8 +701,7 @@ bool Window::run_command(const ScriptCommand& c) {
     case Kind::double_click:
       return double_click({c.numbers[0], c.numbers[1]});
     case Kind::drop:
-      drop({c.words[0]});
-      return unsaved_prompt_ || (session_ && session_->path() == c.words[0]);
+      return drop({c.words[0]});
     case Kind::prompt:
       if (!unsaved_prompt_) throw InvalidInputError("prompt: no question about unsaved changes is open");
       answer_unsaved_prompt(c.words[0] == "save"      ? UnsavedAnswer::save

@@ -61,9 +61,13 @@ class Window {
   // Opens a file the user chose (drag and drop, File > Open, Open Recent): asks about unsaved changes
   // first.
   void request_open(const std::filesystem::path& path);
+  // An .anom file applies to the open scene instead of replacing it (the original program's workflow).
+  // Returns whether it applied (a failure is logged).
+  bool apply_anom(const std::filesystem::path& path);
   // Files dropped on the window (GLFW's drop callback and the script's `drop`): the last one wins, as
   // there is one document per window.
-  void drop(const std::vector<std::filesystem::path>& paths);
+  // Returns whether each file opened or applied (or waits for the unsaved-changes answer).
+  bool drop(const std::vector<std::filesystem::path>& paths);
 
  private:
   // setup

@@ -319,3 +319,23 @@ TEST_CASE("a scene's rim lines are drawn, though they have no faces", "[app]") {
   // The polyline's three segments in the rim colour (0.05, 0.45, 0.55).
   CHECK(count_pixels(render::read_png(dir + "/rim.png"), 13, 115, 140, 20) > 300);
 }
+
+TEST_CASE("an .anom file given after its scene, or dropped on it, applies to the open scene", "[app]") {
+  const std::string original = std::string(NOME_SOURCE_DIR) + "/tests/data/original/";
+  const std::string dir = nome::test::private_scratch_dir("viewer_anom");
+  const std::string script =
+      write_script(dir, "export " + dir + "/given.obj\ndrop " + original + "kleinbottle_s1.anom\n" +
+                            "export " + dir + "/dropped.obj\nquit\n");
+  const auto r =
+      run_viewer(original + "kleinbottle.nom " + original + "kleinbottle_s1.anom --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("applied " + original + "kleinbottle_s1.anom to kleinbottle.nom"));
+  CHECK(read_polygons(dir + "/given.obj").num_faces() == 88);
+  CHECK(read_polygons(dir + "/dropped.obj").num_faces() == 88);
+
+  // Alone, it has no scene to apply to.
+  const auto alone = run_viewer(original + "kleinbottle_s1.anom");
+  CHECK(alone.status == 2);
+  CHECK_THAT(alone.err, Catch::Contains("give the .nome file before it"));
+}

@@ -31,6 +31,10 @@ bool is_scene_file(const std::filesystem::path& path) {
   return ext == ".nome" || ext == ".nom" || ext == ".slf";
 }
 
+bool is_anom_file(const std::filesystem::path& path) {
+  return lower_extension(path) == ".anom";
+}
+
 scene::Scene read_scene(const std::filesystem::path& path, const scene::SceneOptions& options) {
   const std::string text = read_text_file(path);
   if (lower_extension(path) != ".slf") return scene::Scene::from_text(text, path.string(), options);

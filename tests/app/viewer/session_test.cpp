@@ -41,3 +41,27 @@ TEST_CASE("a bad edit of the open file keeps the last good geometry and the edit
   CHECK(session.scene_soup().num_faces() == 3);
   CHECK(session.face_parts().temporary == 1);
 }
+
+TEST_CASE("an .anom file applies its saved sliders and working mesh to the open scene, not to flat files",
+          "[app]") {
+  const std::string original = std::string(NOME_SOURCE_DIR) + "/tests/data/original/";
+  Session session = Session::open(original + "kleinbottle.nom");
+  REQUIRE(session.scene_soup().num_faces() == 80);
+  CHECK_FALSE(session.is_modified());
+  session.apply_anom(original + "kleinbottle_s1.anom");
+  // Its eight zipped faces join the five tunnels' 80.
+  CHECK(session.scene_soup().num_faces() == 88);
+  CHECK(session.scene()->consolidated_faces().size() == 8);
+  CHECK(session.is_modified());
+
+  // A value outside its slider's range is refused and changes nothing.
+  const std::string dir = nome::test::private_scratch_dir("session_anom");
+  std::ofstream(dir + "/bad.anom") << "savedparameter\n    tp1_n 99.000000\nendsavedparameter\n";
+  const auto version = session.version();
+  CHECK_THROWS_WITH(session.apply_anom(dir + "/bad.anom"), Catch::Contains("bad.anom:2:5"));
+  CHECK(session.version() == version);
+
+  Session flat = Session::open(std::string(NOME_SOURCE_DIR) + "/assets/cube.obj");
+  CHECK_THROWS_WITH(flat.apply_anom(original + "kleinbottle_s1.anom"),
+                    Catch::Contains("open its .nome first"));
+}

@@ -13,6 +13,9 @@ scene::Scene read_scene(const std::filesystem::path& path, const scene::SceneOpt
 
 // True for the extensions read_scene reads.
 bool is_scene_file(const std::filesystem::path& path);
+// True for an .anom file: saved slider values and a working mesh that apply to an open scene
+// (scene::Scene::apply_anom), never a scene of its own.
+bool is_anom_file(const std::filesystem::path& path);
 
 // The whole file as text; IoError when it cannot be read.
 std::string read_text_file(const std::filesystem::path& path);
