@@ -36,8 +36,8 @@ std::string instance_of(const std::string& vertex) {
 // The script lines that end both walkthroughs (report Fig. 11d, 12d): the merged mesh `merged.obj` is
 // subdivided and thickened, shown in `png` and exported as `solid.stl`.
 std::string subdivide_and_offset(const std::string& dir, const std::string& png) {
-  return "action merge\nexport " + dir + "/merged.obj\nsubdiv 2\noffset 0.05\nscreenshot " + dir + "/" + png +
-         "\nexport " + dir + "/solid.stl\n";
+  return "action merge\nexport " + dir + "/merged.obj\nsubdiv 2\noffset 0.05\nkey F\nscreenshot " + dir +
+         "/" + png + "\nexport " + dir + "/solid.stl\n";
 }
 
 // The thickened surface is a closed orientable solid's skin, twice the merged surface's Euler
@@ -258,7 +258,7 @@ TEST_CASE(
   CHECK(expected.borders == 0);
   CHECK(expected.chi == 0);
   CHECK_FALSE(expected.orientable);
-  std::ofstream(dir + "/script.txt") << script << "view 30 25\n"
+  std::ofstream(dir + "/script.txt") << script << "view 120 25\n"
                                      << subdivide_and_offset(dir, "klein_bottle_closed.png") << "quit\n";
   const auto r = run_viewer(file + " --script " + dir + "/script.txt");
   INFO(r.err);

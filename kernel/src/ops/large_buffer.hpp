@@ -70,8 +70,16 @@ void reserve_on_huge_pages(std::vector<T>& v, std::size_t n) {
   madvise(reinterpret_cast<void*>(first), start + n * sizeof(T) - first, MADV_HUGEPAGE);  // advice only
 }
 
+// New elements are value-initialized in place (copying one value into millions of records made GCC stage
+// each copy through the stack: a store-forwarding stall per element).
 template <class T>
-void resize_on_huge_pages(std::vector<T>& v, std::size_t n, const std::type_identity_t<T>& value = T()) {
+void resize_on_huge_pages(std::vector<T>& v, std::size_t n) {
+  reserve_on_huge_pages(v, n);
+  v.resize(n);
+}
+
+template <class T>
+void resize_on_huge_pages(std::vector<T>& v, std::size_t n, const std::type_identity_t<T>& value) {
   reserve_on_huge_pages(v, n);
   v.resize(n, value);
 }

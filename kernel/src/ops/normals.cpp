@@ -59,7 +59,7 @@ Normals compute_normals(const Mesh& mesh) {
       out.degenerate_faces.push_back(f);
       continue;
     }
-    n /= len;
+    n *= 1.0 / len;
     out.faces[f] = n;
     for (Index c = offsets[f]; c < offsets[f + 1]; ++c) {
       Vec3& sum = out.vertices[corners[c]];
@@ -73,7 +73,7 @@ Normals compute_normals(const Mesh& mesh) {
     Vec3& n = out.vertices[v];
     const double len = glm::length(n);
     if (len > 1e-12) {
-      n /= len;
+      n *= 1.0 / len;
     } else {
       n = Vec3(0.0);
       if (!mesh.is_isolated_vertex(v)) out.degenerate_vertices.push_back(v);

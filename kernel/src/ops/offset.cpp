@@ -37,13 +37,40 @@ void write_offset_positions(const Mesh& mesh, const Normals& normals, double dis
   }
 }
 
+// Where a corner sits in its face. Polygons of any degree read it from the mesh: two dependent random
+// reads per corner (its face, then the face's first corner). A mesh of quads only, which is what
+// subdivision gives and so the usual input, computes it: face c / 4, first corner c & ~3.
+struct PolygonCorners {
+  const Mesh& m;
+  Index face(Index c) const { return m.corner_face(c); }
+  Index first(Index f) const { return m.face_first_corner(f); }
+  Index degree(Index f) const { return m.face_degree(f); }
+  Index next(Index c) const { return m.next_corner(c); }
+};
+
+struct QuadCorners {
+  Index face(Index c) const { return c >> 2; }
+  Index first(Index f) const { return 4 * f; }
+  Index degree(Index) const { return 4; }
+  Index next(Index c) const { return (c & ~Index(3)) | ((c + 1) & 3); }
+};
+
+bool is_quad_mesh(const Mesh& m) {
+  const std::vector<Index>& offsets = m.face_offsets();
+  for (Index f = 0; f < m.num_faces(); ++f)
+    if (offsets[f + 1] - offsets[f] != 4) return false;
+  return true;
+}
+
 // Builds the offset's arrays. Input vertex v on side `side` (0: v+, 1: v-) is output vertex
 // 2 rank(v) + side. The corner with sign s sits on side 0 in the positive copy when s = +1.
+template <class Corners>
 class OffsetBuilder {
  public:
-  explicit OffsetBuilder(const Mesh& m)
-      : m_(m), nf_(m.num_faces()), nc_(m.num_corners()), ne_(m.num_edges()) {
+  OffsetBuilder(const Mesh& m, Corners corners)
+      : m_(m), corners_(corners), nf_(m.num_faces()), nc_(m.num_corners()), ne_(m.num_edges()) {
     rank_ = vertex_ranks(m, nv_out_);
+    ranks_are_identity_ = nv_out_ == m.num_vertices();
     // Border bookkeeping: each border edge's loop position (its quad) and each border vertex's loop
     // position (its side edge, joining v+ and v-).
     loop_of_edge_.assign(ne_, no_index);
@@ -80,25 +107,25 @@ class OffsetBuilder {
   }
 
  private:
-  Index out_vertex(Index v, int side) const { return 2 * rank_[v] + Index(side); }
+  // Without isolated vertices (the usual case) the ranks are the identity: no lookup.
+  Index out_vertex(Index v, int side) const { return 2 * (ranks_are_identity_ ? v : rank_[v]) + Index(side); }
   // The side of v used by corner c's positive copy.
   int positive_side(Index c) const { return m_.corner_sign(c) > 0 ? 0 : 1; }
-  Index local(Index c) const { return c - m_.face_first_corner(m_.corner_face(c)); }
   // Negative copy of face f: corner i holds the vertex of parent corner (n - i) % n, and its edge is the
   // parent edge of corner n - 1 - i; so parent corner c's vertex sits at negative corner (n - local) % n.
   Index negative_corner_at_vertex(Index c) const {
-    const Index f = m_.corner_face(c), n = m_.face_degree(f);
-    return nc_ + m_.face_first_corner(f) + (n - local(c)) % n;
+    const Index b = corners_.first(corners_.face(c));
+    return nc_ + (c == b ? b : 2 * b + corners_.degree(corners_.face(c)) - c);
   }
   Index negative_corner_along_edge(Index c) const {
-    const Index f = m_.corner_face(c), n = m_.face_degree(f);
-    return nc_ + m_.face_first_corner(f) + (n - 1 - local(c));
+    const Index b = corners_.first(corners_.face(c));
+    return nc_ + 2 * b + corners_.degree(corners_.face(c)) - 1 - c;
   }
   Index ribbon_corner(Index j, int k) const { return 2 * nc_ + 4 * j + Index(k); }
   // The corner of the first face of border edge e at its vertex v.
   Index first_face_corner_at(Index e, Index v) const {
     const Edge& edge = m_.edge(e);
-    return edge.vertices[0] == v ? edge.corners[0] : m_.next_corner(edge.corners[0]);
+    return edge.vertices[0] == v ? edge.corners[0] : corners_.next(edge.corners[0]);
   }
 
   void faces(std::vector<Index>& face_offsets, std::vector<Index>& corner_vertices) const {
@@ -111,7 +138,7 @@ class OffsetBuilder {
     resize_on_huge_pages(corner_vertices, 2 * size_t(nc_) + 4 * size_t(num_border_));
     // Face by face, so that the negative copy's reversal needs no division (negative_corner_at_vertex).
     for (Index f = 0; f < nf_; ++f) {
-      const Index b = m_.face_first_corner(f), n = m_.face_degree(f);
+      const Index b = corners_.first(f), n = corners_.degree(f);
       for (Index i = 0; i < n; ++i) {
         const Index v = m_.corner_vertex(b + i);
         const int side = positive_side(b + i);
@@ -123,7 +150,7 @@ class OffsetBuilder {
     for (Index l = 0; l < m_.num_boundary_loops(); ++l)
       for (Index e : m_.loop_edges(l)) {
         const Edge& edge = m_.edge(e);
-        const Index j = loop_of_edge_[e], ca = edge.corners[0], cb = m_.next_corner(ca);
+        const Index j = loop_of_edge_[e], ca = edge.corners[0], cb = corners_.next(ca);
         const Index va = edge.vertices[0], vb = edge.vertices[1];
         Index* q = corner_vertices.data() + ribbon_corner(j, 0);
         q[0] = out_vertex(vb, positive_side(cb));
@@ -156,7 +183,7 @@ class OffsetBuilder {
       Edge& plus = a.edges[2 * e];
       Edge& minus = a.edges[2 * e + 1];
       const Index ca = in.corners[0];
-      const int sa = positive_side(ca), sb = positive_side(m_.next_corner(ca));
+      const int sa = positive_side(ca), sb = positive_side(corners_.next(ca));
       plus.vertices = {out_vertex(in.vertices[0], sa), out_vertex(in.vertices[1], sb)};
       minus.vertices = {out_vertex(in.vertices[1], 1 - sb), out_vertex(in.vertices[0], 1 - sa)};
       plus.corners[0] = ca;
@@ -305,10 +332,19 @@ class OffsetBuilder {
   }
 
   const Mesh& m_;
+  Corners corners_;
   Index nf_, nc_, ne_;
   Index nv_out_ = 0, num_border_ = 0;
+  bool ranks_are_identity_ = false;
   std::vector<Index> rank_, loop_of_edge_, loop_of_vertex_;
 };
+
+// The builder with the corner layout of `mesh`.
+template <class Work>
+auto with_offset_builder(const Mesh& mesh, const Work& work) {
+  if (is_quad_mesh(mesh)) return work(OffsetBuilder<QuadCorners>(mesh, QuadCorners{}));
+  return work(OffsetBuilder<PolygonCorners>(mesh, PolygonCorners{mesh}));
+}
 
 }  // namespace
 
@@ -318,14 +354,15 @@ Mesh offset(const Mesh& mesh, const OffsetOptions& options) {
 
 Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options) {
   check_distance("offset", options.distance);
-  Mesh solid = OffsetBuilder(mesh).build(normals, options.distance);
+  Mesh solid = with_offset_builder(
+      mesh, [&](const auto& builder) { return builder.build(normals, options.distance); });
   if (options.subdivision_levels == 0) return solid;
   return subdivide(solid, {options.subdivision_levels, options.rule});
 }
 
 PolygonSoup offset_polygons(const Mesh& mesh, const Normals& normals, double distance) {
   check_distance("offset_polygons", distance);
-  return OffsetBuilder(mesh).polygons(normals, distance);
+  return with_offset_builder(mesh, [&](const auto& builder) { return builder.polygons(normals, distance); });
 }
 
 void offset_positions(const Mesh& mesh, double distance, std::span<Vec3> out) {
