@@ -8,7 +8,7 @@ namespace nome {
 
 void keep_freed_memory() {
 #if defined(__GLIBC__)
-  mallopt(M_MMAP_MAX, 0);             // no block gets its own mapping: all come from the heap
+  mallopt(M_MMAP_MAX, 0);              // no block gets its own mapping: all come from the heap
   mallopt(M_TRIM_THRESHOLD, 1 << 30);  // and freeing keeps up to 1 GB at its top for reuse
 #endif
 }

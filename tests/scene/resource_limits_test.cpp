@@ -120,3 +120,18 @@ TEST_CASE("the instance budget adds up every top-level instance and is located a
   CHECK_THAT(scene_errors("group a\n instance x a endinstance\nendgroup\ninstance r a endinstance\n").at(0),
              Catch::Contains("group 'a' contains itself"));
 }
+
+// Found by the nome fuzz target (tests/data/fuzz/nome_fuzzer/unknown_name_in_doubling_groups.nome): an
+// error was reported once per placement of its group, 2^16 times here, which took seconds to list.
+TEST_CASE("an error inside a group placed many times is reported once", "[scene]") {
+  std::string text = doubling_groups(40);
+  const std::string group = "group g24\n instance a g23 endinstance\n instance b g23 translate";
+  const auto at = text.find(group);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, group.size(), "group g24\n instance a g23x endinstance\n instance b g23x translate");
+  const auto errors = scene_errors(text);
+  REQUIRE(errors.size() == 2);
+  CHECK_THAT(errors[0], Catch::Contains("unknown name 'g23x' to instantiate (did you mean g23"));
+  CHECK_THAT(errors[1], Catch::Contains("unknown name 'g23x' to instantiate (did you mean g23"));
+  CHECK(errors[0] != errors[1]);
+}

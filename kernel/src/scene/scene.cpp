@@ -149,8 +149,14 @@ const InstanceDecl* Scene::statement(const Placement& p) const {
 
 void Scene::expand(const InstanceDecl& decl, Index group, Index statement, Index parent, Index top,
                    std::vector<Index>& stack, std::vector<Diagnostic>& errors) {
+  // A statement inside a group is met once per placement of the group, 2^40 times in a doubling chain:
+  // its error is reported (and its message, with the names it suggests, made) the first time only.
+  const auto is_reported = [&](SourceLocation at) {
+    return std::any_of(errors.begin(), errors.end(), [&](const Diagnostic& d) { return d.location == at; });
+  };
   const auto it = definitions_.find(decl.target.text);
   if (it == definitions_.end()) {
+    if (is_reported(decl.target.location)) return;
     std::vector<std::string> names;
     for (const auto& [name, d] : definitions_) names.push_back(name);
     std::sort(names.begin(), names.end());
@@ -176,12 +182,14 @@ void Scene::expand(const InstanceDecl& decl, Index group, Index statement, Index
   if (it->second.kind != DefinitionKind::group) return;
   const Index g = it->second.index;
   if (std::find(stack.begin(), stack.end(), g) != stack.end()) {
-    errors.push_back(located(decl.target.location, "group '" + decl.target.text + "' contains itself"));
+    if (!is_reported(decl.target.location))
+      errors.push_back(located(decl.target.location, "group '" + decl.target.text + "' contains itself"));
     return;
   }
   if (stack.size() >= max_instance_depth) {
-    errors.push_back(located(
-        decl.location, "instances nested more than " + std::to_string(max_instance_depth) + " levels deep"));
+    if (!is_reported(decl.location))
+      errors.push_back(located(decl.location, "instances nested more than " +
+                                                  std::to_string(max_instance_depth) + " levels deep"));
     return;
   }
   stack.push_back(g);

@@ -11,6 +11,7 @@ namespace nome::scene {
 struct SourceLocation {
   int line = 0;
   int column = 0;
+  bool operator==(const SourceLocation&) const = default;
 };
 
 enum class Severity { error, warning };
