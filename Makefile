@@ -11,6 +11,7 @@ TESTDIR := build/test
 FUZZDIR := build/fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_JOBS ?= 1
+FUZZ_TARGETS ?=
 # Any sanitizer report fails the run: abort (never exit status 1, which a test of a refused input
 # expects), leaks included. Child processes (the CLI under test) inherit these.
 SANITIZER_ENV := ASAN_OPTIONS=abort_on_error=1:halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1 \
@@ -70,7 +71,7 @@ fuzz-build: deps
 	cmake --build $(FUZZDIR) -j$(JOBS)
 
 fuzz: fuzz-build
-	FUZZ_JOBS=$(FUZZ_JOBS) tests/fuzz/run_fuzzers.sh $(FUZZDIR) $(FUZZ_SECONDS)
+	FUZZ_JOBS=$(FUZZ_JOBS) FUZZ_TARGETS="$(FUZZ_TARGETS)" tests/fuzz/run_fuzzers.sh $(FUZZDIR) $(FUZZ_SECONDS)
 
 format-check: deps
 	@clang-format --dry-run --Werror $(SOURCES) && echo "clang-format: $(words $(SOURCES)) files clean"

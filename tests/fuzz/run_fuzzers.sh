@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Runs every libFuzzer target in BUILD_DIR for SECONDS each and prints its execution count; FUZZ_JOBS
-# targets at a time (default 1).
+# Runs every libFuzzer target in BUILD_DIR (or those FUZZ_TARGETS names, e.g. "nome obj") for SECONDS
+# each and prints its execution count; FUZZ_JOBS targets at a time (default 1).
 # Seeds: the example files in assets/, the bad-input catalogue, tests/data/fuzz/seeds/<format>/ and the
 # checked-in regressions in tests/data/fuzz/<target>/. The corpus grows in BUILD_DIR/corpus/<target>;
 # crashes, hangs (-timeout, default 1 s) and leaks land in BUILD_DIR/artifacts/<target>/.
@@ -39,7 +39,14 @@ run_one() {
 
 failed_mark=$build/.fuzz_failed
 rm -f "$failed_mark"
-for fuzzer in "$build"/tests/fuzz/*_fuzzer; do
+targets=()
+if [ -n "${FUZZ_TARGETS:-}" ]; then
+  for t in $FUZZ_TARGETS; do targets+=("$build/tests/fuzz/${t}_fuzzer"); done
+else
+  targets=("$build"/tests/fuzz/*_fuzzer)
+fi
+for fuzzer in "${targets[@]}"; do
+  [ -x "$fuzzer" ] || { echo "no fuzz target $fuzzer"; touch "$failed_mark"; continue; }
   while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
   { run_one "$fuzzer" || touch "$failed_mark"; } &
 done
