@@ -135,3 +135,38 @@ TEST_CASE("an error inside a group placed many times is reported once", "[scene]
   CHECK_THAT(errors[1], Catch::Contains("unknown name 'g23x' to instantiate (did you mean g23"));
   CHECK(errors[0] != errors[1]);
 }
+
+namespace {
+
+// `count` funnels of n = $b_n segments side by side (n quads each).
+std::string funnel_row(int count) {
+  std::string text = "bank b\n set n 10 3 1000 1\nendbank\nfunnel f ({expr $b_n} 1 0.5 1) endfunnel\n";
+  for (int i = 0; i < count; ++i)
+    text +=
+        "instance i" + std::to_string(i) + " f translate (" + std::to_string(3 * i) + " 0 0) endinstance\n";
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "pieces past the face budget stop the evaluation with an estimate; a slider past it changes nothing",
+    "[scene]") {
+  // 30 funnels of 100 quads against a budget of 1,000 faces: refused at the 11th, estimated from the 11.
+  std::string text = funnel_row(30);
+  text.replace(text.find("set n 10"), 8, "set n 100");
+  CHECK(budget_error(text, {.face_budget = 1000}) ==
+        "t.nome:15:1: the scene's pieces would have about 3000 faces, over the budget of 1000");
+  CHECK(Scene::from_text(text, "t.nome", {.face_budget = 1000, .force = true}).combined_soup().num_faces() ==
+        3000);
+
+  Scene scene = Scene::from_text(funnel_row(30), "t.nome", {.face_budget = 1000});
+  REQUIRE(scene.combined_soup().num_faces() == 300);
+  const auto n = scene.find_parameter("b_n");
+  REQUIRE(n);
+  CHECK_THROWS_AS(scene.set_parameter(*n, 100), nome::BudgetError);
+  CHECK(scene.parameters()[*n].value == 10);
+  CHECK(scene.combined_soup().num_faces() == 300);
+  scene.set_parameter(*n, 20);
+  CHECK(scene.combined_soup().num_faces() == 600);
+}

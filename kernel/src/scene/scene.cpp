@@ -297,7 +297,7 @@ void Scene::build(std::vector<Diagnostic>& errors) {
   std::vector<Index> leaves;
   for (Index i = 0; i < placements_.size(); ++i)
     if (is_leaf(placements_[i])) leaves.push_back(i);
-  evaluate_all(leaves, errors);
+  if (const auto over = evaluate_all(leaves, errors)) throw BudgetError(*over);
   if (!errors.empty()) return;
   deleted_ = resolve_deleted(ast_.deleted_faces, errors);
   assemble_all();
@@ -572,7 +572,30 @@ Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std:
   return {};
 }
 
-void Scene::evaluate_all(const std::vector<Index>& placements, std::vector<Diagnostic>& errors) {
+std::optional<std::string> Scene::evaluate_all(const std::vector<Index>& placements,
+                                               std::vector<Diagnostic>& errors) {
+  // The faces of every piece, those about to be made again left out; each new piece is counted in as it
+  // comes, so that evaluation stops within one piece (at most a generator's 100,000 segments) of the budget.
+  double faces = 0;
+  for (const Placement& p : placements_) faces += p.world.soup.num_faces();
+  for (Index i : placements) faces -= placements_[i].world.soup.num_faces();
+  Index evaluated = 0;
+  std::optional<std::string> over_budget;
+  const auto count_in = [&](Index i) {
+    faces += placements_[i].world.soup.num_faces();
+    ++evaluated;
+    if (options_.force || faces <= double(options_.face_budget)) return true;
+    // The pieces not made yet are taken to be as large as those made so far.
+    const double estimate = faces / evaluated * double(placements.size());
+    char count[32];
+    std::snprintf(count, sizeof count, "%.0f", std::max(estimate, faces));
+    const InstanceDecl* at = statement(placements_[i]);
+    over_budget = located(at ? at->location : SourceLocation{},
+                          std::string("the scene's pieces would have about ") + count +
+                              " faces, over the budget of " + std::to_string(options_.face_budget))
+                      .to_string();
+    return false;
+  };
   // Placements whose vertices others copy go first; the name index follows their vertex names.
   bool names_changed = vertex_suffixes_.empty();
   for (Index i : placements) {
@@ -605,6 +628,7 @@ void Scene::evaluate_all(const std::vector<Index>& placements, std::vector<Diagn
     names_changed = names_changed || piece.soup.vertex_names != p.world.soup.vertex_names;
     p.world = std::move(piece);
     p.reads = std::move(reads);
+    if (!count_in(i)) return over_budget;
   }
   if (names_changed) index_vertex_names();
   for (Index i : placements) {
@@ -613,7 +637,9 @@ void Scene::evaluate_all(const std::vector<Index>& placements, std::vector<Diagn
     Piece piece = evaluate_placement(i, reads, errors);
     placements_[i].world = std::move(piece);
     placements_[i].reads = std::move(reads);
+    if (!count_in(i)) return over_budget;
   }
+  return std::nullopt;
 }
 
 std::vector<std::string> Scene::resolve_deleted(const std::vector<Name>& names,
@@ -720,8 +746,8 @@ std::vector<Index> Scene::set_parameter(Index parameter, double value) {
   std::vector<std::pair<Piece, std::vector<Index>>> backup;
   for (Index i : affected) backup.emplace_back(placements_[i].world, placements_[i].reads);
   std::vector<Diagnostic> errors;
-  evaluate_all(affected, errors);
-  if (!errors.empty()) {
+  const auto over_budget = evaluate_all(affected, errors);
+  if (!errors.empty() || over_budget) {
     values_[parameter] = old_value;
     parameters_[parameter].value = old_value;
     for (size_t k = 0; k < affected.size(); ++k) {
@@ -729,6 +755,7 @@ std::vector<Index> Scene::set_parameter(Index parameter, double value) {
       placements_[affected[k]].reads = std::move(backup[k].second);
     }
     index_vertex_names();
+    if (over_budget) throw BudgetError(*over_budget);
     throw SceneError(std::move(errors));
   }
   std::vector<Index> tops;

@@ -41,9 +41,13 @@ struct SceneInstance {
 
 // What evaluating a scene may cost. The instance tree is counted before it is expanded: a scene over
 // the budget is refused with the count (BudgetError, located at the top-level instance that crosses it)
-// unless forced; even forced, a tree beyond 32-bit placement ids is an error.
+// unless forced; even forced, a tree beyond 32-bit placement ids is an error. The faces of the pieces are
+// counted as they are made (a generator makes at most 100,000 segments), and evaluation stops with a
+// BudgetError and an estimate of the whole as soon as they pass the face budget (about 150 bytes a face:
+// 3 GB), unless forced; a slider move over it changes nothing.
 struct SceneOptions {
   std::uint64_t instance_budget = 1000000;
+  std::uint64_t face_budget = 20000000;
   bool force = false;
 };
 
@@ -135,7 +139,9 @@ class Scene {
   Color surface_color(const Name& surface, std::vector<Index>& reads) const;
   void index_vertex_names();
   const VertexRef* lookup_vertex(const Name& name, std::vector<Diagnostic>& errors) const;
-  void evaluate_all(const std::vector<Index>& placements, std::vector<Diagnostic>& errors);
+  // Returns the BudgetError message when the pieces' faces passed the face budget (evaluation stopped).
+  std::optional<std::string> evaluate_all(const std::vector<Index>& placements,
+                                          std::vector<Diagnostic>& errors);
   void assemble(Index top);
   void assemble_all();
   std::vector<std::string> resolve_deleted(const std::vector<Name>& names, std::vector<Diagnostic>& errors);
