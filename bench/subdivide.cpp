@@ -2,12 +2,10 @@
 // OpenMesh's CatmullClarkT on the same input in the same run when it is installed.
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>
 #include <functional>
 #include <vector>
 
-#include "nome/freed_memory.hpp"
 #include "nome/ops/offset.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/ops/subdivide.hpp"
@@ -181,15 +179,6 @@ void offset_case() {
 }  // namespace
 
 int main() {
-  // As the viewer does: freed blocks stay in the heap for the next call (nome/freed_memory.hpp), so the
-  // best of several runs shows work on reused memory; first calls are on fresh pages. NOME_BENCH_FRESH=1
-  // leaves glibc's default (every large block mapped fresh), as the command line runs.
-  if (std::getenv("NOME_BENCH_FRESH")) {
-    std::printf("glibc's default: every large block on fresh pages (NOME_BENCH_FRESH)\n\n");
-  } else {
-    keep_freed_memory();
-    std::printf("freed memory kept for reuse, as in the viewer (keep_freed_memory)\n\n");
-  }
   const int threads = 2;
   torus_levels(threads);
   mobius(threads);

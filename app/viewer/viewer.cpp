@@ -16,7 +16,6 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
-#include "nome/freed_memory.hpp"
 #include "viewer/window.hpp"
 
 namespace nome::viewer {
@@ -51,8 +50,6 @@ int run_viewer(const ViewerOptions& options) {
                  "  To run the viewer on a virtual display: xvfb-run -a nome FILE\n";
     return 1;
   }
-  // Dragging a slider rebuilds the stages with arrays of the same sizes: keep freed blocks for them.
-  keep_freed_memory();
   glfwSetErrorCallback(on_glfw_error);
   if (!glfwInit()) {
     std::cerr << "nome: cannot start GLFW on this display; try `nome render FILE -o picture.png`\n";

@@ -11,7 +11,6 @@
 #include <imgui.h>
 
 #include "nome/error.hpp"
-#include "nome/freed_memory.hpp"
 #include "nome/io/obj.hpp"
 #include "nome/io/read_scene.hpp"
 #include "nome/io/stl.hpp"
@@ -385,7 +384,6 @@ void Window::show_result(StageResult result) {
   buffers_ = std::make_unique<render::MeshBuffers>(result.display);
   picking_bvh_.reset();
   shown_time_ = glfwGetTime();
-  is_memory_released_ = false;
   shown_ = std::move(result);
   apply_face_colors();
   refresh_selection();
@@ -763,21 +761,11 @@ bool Window::frame() {
   draw_panels();
   draw_recovery_prompt();
   update_autosave();
-  release_memory_at_rest();
   ImGui::Render();
   ++frames_drawn_;
   // A clean end takes the recovery file along, unless it is still on offer.
   if (should_close_ && session_ && !recovery_offer_) autosave_.discard(session_->path());
   return !should_close_;
-}
-
-void Window::release_memory_at_rest() {
-  constexpr double rest_seconds = 5.0;
-  if (is_memory_released_ || job_.is_busy() || bvh_job_.is_busy() ||
-      glfwGetTime() - shown_time_ < rest_seconds)
-    return;
-  release_freed_memory();
-  is_memory_released_ = true;
 }
 
 bool Window::is_animating() const {

@@ -99,8 +99,6 @@ class Window {
   // flight rather than starting another).
   const TriangleBvh& picking_bvh();
   void prefetch_picking_bvh();
-  // Gives the memory kept for rebuilds back to the system once the stages have rested a few seconds.
-  void release_memory_at_rest();
   void take_picking_bvh(std::chrono::milliseconds patience);
   void refresh_selection();
   // The scene's rim lines (`polyline`, `circle`): drawn over every stage, as they have no faces.
@@ -164,8 +162,7 @@ class Window {
   StageSettings requested_settings_;
   bool has_request_ = false;
   std::optional<StageResult> shown_;
-  double shown_time_ = 0.0;         // when shown_ came (glfwGetTime)
-  bool is_memory_released_ = true;  // freed memory kept for rebuilds went back once the stages rested
+  double shown_time_ = 0.0;  // when shown_ came (glfwGetTime)
   struct PickingBvh {
     std::shared_ptr<const Mesh> mesh;  // what it was built over
     std::shared_ptr<const TriangleBvh> bvh;
