@@ -321,7 +321,7 @@ void Window::frame_all() {
     camera_.fit(shown_mesh()->positions(), aspect());
     return;
   }
-  std::vector<Vec3> points = shown_mesh()->positions();
+  std::vector<Vec3> points(shown_mesh()->positions().begin(), shown_mesh()->positions().end());
   points.insert(points.end(), rim_points_.begin(), rim_points_.end());
   camera_.fit(points, aspect());
 }

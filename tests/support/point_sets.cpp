@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <numeric>
 #include <sstream>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
 namespace nome::test {
 
-std::string compare_point_sets(const std::vector<Vec3>& a, const std::vector<Vec3>& b,
-                               double relative_tolerance, int multiplicity) {
+std::string compare_point_sets(std::span<const Vec3> a, std::span<const Vec3> b, double relative_tolerance,
+                               int multiplicity) {
   std::ostringstream out;
   if (a.size() * size_t(multiplicity) != b.size()) {
     out << a.size() << " points against " << b.size() << " (multiplicity " << multiplicity << ")";
@@ -19,14 +20,13 @@ std::string compare_point_sets(const std::vector<Vec3>& a, const std::vector<Vec
   Vec3 lo = b.front(), hi = b.front();
   for (const Vec3& p : b) lo = glm::min(lo, p), hi = glm::max(hi, p);
   const double tol = relative_tolerance * std::max(glm::length(hi - lo), 1e-300);
-  const auto sorted_by_x = [](const std::vector<Vec3>& points) {
+  const auto sorted_by_x = [](std::span<const Vec3> points) {
     std::vector<size_t> order(points.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return points[i].x < points[j].x; });
     return order;
   };
-  const auto count_near = [&](const std::vector<Vec3>& points, const std::vector<size_t>& order,
-                              const Vec3& q) {
+  const auto count_near = [&](std::span<const Vec3> points, const std::vector<size_t>& order, const Vec3& q) {
     const auto first = std::lower_bound(order.begin(), order.end(), q.x - tol,
                                         [&](size_t j, double x) { return points[j].x < x; });
     int found = 0;

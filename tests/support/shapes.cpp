@@ -112,7 +112,7 @@ PolygonSoup renumber_vertices(PolygonSoup s, std::mt19937& rng) {
   std::vector<Index> perm(s.num_vertices());
   std::iota(perm.begin(), perm.end(), 0);
   std::shuffle(perm.begin(), perm.end(), rng);
-  std::vector<Vec3> positions(s.positions.size());
+  Buffer<Vec3> positions(s.positions.size());
   for (Index v = 0; v < s.num_vertices(); ++v) positions[perm[v]] = s.positions[v];
   s.positions = std::move(positions);
   for (Index& v : s.face_vertices) v = perm[v];

@@ -173,7 +173,7 @@ PolygonSoup read_obj(const std::filesystem::path& path) {
   }
   PolygonSoup soup;
   if (scan.positions.size() * 3 == attrib.vertices.size()) {
-    soup.positions = scan.positions;
+    soup.positions.assign(scan.positions.begin(), scan.positions.end());
   } else {
     for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
       soup.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);

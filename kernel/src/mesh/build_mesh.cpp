@@ -37,8 +37,8 @@ std::string label(const std::vector<std::string>& names, const char* prefix, Ind
 }
 
 // Counting sort of `keys` into CSR offsets: offsets[k]..offsets[k+1] will hold the items with key k.
-std::vector<Index> csr_offsets(const std::vector<Index>& keys, Index num_keys) {
-  std::vector<Index> offsets(size_t(num_keys) + 1, 0);
+Buffer<Index> csr_offsets(std::span<const Index> keys, Index num_keys) {
+  Buffer<Index> offsets(size_t(num_keys) + 1, 0);
   for (Index k : keys) ++offsets[k + 1];
   for (Index k = 0; k < num_keys; ++k) offsets[k + 1] += offsets[k];
   return offsets;
@@ -108,11 +108,11 @@ Mesh build_mesh(PolygonSoup soup) {
   // phase: edges. Half-edges (corner c runs from its vertex to the next corner's) are bucketed by their
   // smaller end vertex; within a bucket a stamp array indexed by the larger end finds the partner.
   // No hashing, O(corners).
-  std::vector<Index> min_vertex(nc);
+  Buffer<Index> min_vertex(nc);
   for (Index c = 0; c < nc; ++c)
     min_vertex[c] = std::min(m.corner_vertices_[c], m.corner_vertices_[m.next_corner(c)]);
-  std::vector<Index> bucket_offsets = csr_offsets(min_vertex, nv);
-  std::vector<Index> bucket(nc);
+  Buffer<Index> bucket_offsets = csr_offsets(min_vertex, nv);
+  Buffer<Index> bucket(nc);
   {
     std::vector<Index> fill(bucket_offsets.begin(), bucket_offsets.end() - 1);
     for (Index c = 0; c < nc; ++c) bucket[fill[min_vertex[c]]++] = c;
@@ -162,14 +162,14 @@ Mesh build_mesh(PolygonSoup soup) {
     Index next = 0;
     for (Index c = 0; c < nc; ++c)
       if (order[m.corner_edges_[c]] == no_index) order[m.corner_edges_[c]] = next++;
-    std::vector<Edge> sorted(m.edges_.size());
+    Buffer<Edge> sorted(m.edges_.size());
     for (Index e = 0; e < m.edges_.size(); ++e) sorted[order[e]] = m.edges_[e];
     m.edges_ = std::move(sorted);
     for (Index& e : m.corner_edges_) e = order[e];
   }
   // phase: fans. Corners bucketed by vertex, then each vertex's fan walked face to face across edges.
   m.fan_corner_offsets_ = csr_offsets(m.corner_vertices_, nv);
-  std::vector<Index> vertex_corner_list(nc);
+  Buffer<Index> vertex_corner_list(nc);
   {
     std::vector<Index> fill(m.fan_corner_offsets_.begin(), m.fan_corner_offsets_.end() - 1);
     for (Index c = 0; c < nc; ++c) vertex_corner_list[fill[m.corner_vertices_[c]]++] = c;

@@ -27,7 +27,7 @@ std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
 // distance test rejects.
 class PointGrid {
  public:
-  PointGrid(const std::vector<Vec3>& positions, const std::vector<Index>& points, double tolerance) {
+  PointGrid(std::span<const Vec3> positions, const std::vector<Index>& points, double tolerance) {
     Vec3 lo(0.0), hi(0.0);
     if (!points.empty()) lo = hi = positions[points.front()];
     for (Index v : points) {
@@ -339,7 +339,7 @@ SkippedMerge describe(const Mesh& mesh, const Candidate& c, const GlueCheck::Pro
           "boundary edges " + edge_text(c.ends_a) + " and " + edge_text(c.ends_b) + " not merged: " + why};
 }
 
-double bounding_box_diagonal(const std::vector<Vec3>& positions) {
+double bounding_box_diagonal(std::span<const Vec3> positions) {
   if (positions.empty()) return 0.0;
   Vec3 lo = positions.front(), hi = positions.front();
   for (const Vec3& p : positions) {

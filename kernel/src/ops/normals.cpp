@@ -4,8 +4,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "ops/large_buffer.hpp"
-
 namespace nome {
 
 namespace {
@@ -29,14 +27,21 @@ Vec3 face_area_normal(const Mesh& mesh, Index f) {
 }
 
 Normals compute_normals(const Mesh& mesh) {
+  Normals out;
+  compute_normals(mesh, out);
+  return out;
+}
+
+void compute_normals(const Mesh& mesh, Normals& out) {
   // Raw arrays in the loops: these run over every face and vertex of meshes of millions of faces.
   const Vec3* p = mesh.positions().data();
   const Index* offsets = mesh.face_offsets().data();
   const Index* corners = mesh.corner_vertices().data();
   const signed char* signs = mesh.corner_signs().data();
-  Normals out;
-  resize_on_huge_pages(out.faces, mesh.num_faces());
-  resize_on_huge_pages(out.vertices, mesh.num_vertices(), Vec3(0.0));
+  resize_for_overwrite(out.faces, mesh.num_faces());
+  out.vertices.assign(mesh.num_vertices(), Vec3(0.0));
+  out.degenerate_faces.clear();
+  out.degenerate_vertices.clear();
   // One pass over the faces, in corner order: each face's normal is added to its vertices' sums with its
   // corner's sign right away (streaming reads; gathering over the fans instead reads three arrays at
   // random per corner).
@@ -79,7 +84,6 @@ Normals compute_normals(const Mesh& mesh) {
       if (!mesh.is_isolated_vertex(v)) out.degenerate_vertices.push_back(v);
     }
   }
-  return out;
 }
 
 std::string degeneracy_warning(const Mesh& mesh, const Normals& normals) {

@@ -1,12 +1,12 @@
 #include "nome/ops/offset.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "nome/error.hpp"
 #include "nome/mesh/face_orientation.hpp"
 #include "nome/ops/normals.hpp"
-#include "ops/large_buffer.hpp"
 
 namespace nome {
 namespace {
@@ -56,7 +56,7 @@ struct QuadCorners {
 };
 
 bool is_quad_mesh(const Mesh& m) {
-  const std::vector<Index>& offsets = m.face_offsets();
+  const Buffer<Index>& offsets = m.face_offsets();
   for (Index f = 0; f < m.num_faces(); ++f)
     if (offsets[f + 1] - offsets[f] != 4) return false;
   return true;
@@ -71,8 +71,11 @@ class OffsetBuilder {
       : m_(m), corners_(corners), nf_(m.num_faces()), nc_(m.num_corners()), ne_(m.num_edges()) {
     rank_ = vertex_ranks(m, nv_out_);
     ranks_are_identity_ = nv_out_ == m.num_vertices();
+    signs_all_positive_ =
+        std::all_of(m.corner_signs().begin(), m.corner_signs().end(), [](signed char s) { return s > 0; });
     // Border bookkeeping: each border edge's loop position (its quad) and each border vertex's loop
     // position (its side edge, joining v+ and v-).
+    if (m.num_boundary_loops() == 0) return;
     loop_of_edge_.assign(ne_, no_index);
     loop_of_vertex_.assign(m.num_vertices(), no_index);
     for (Index l = 0; l < m.num_boundary_loops(); ++l) {
@@ -85,9 +88,9 @@ class OffsetBuilder {
     }
   }
 
-  Mesh build(const Normals& normals, double distance) const {
-    MeshArrays a;
-    resize_on_huge_pages(a.positions, 2 * size_t(nv_out_));
+  // Into the blocks of `a` (from take_arrays, or fresh).
+  Mesh build(const Normals& normals, double distance, MeshArrays a) const {
+    resize_for_overwrite(a.positions, 2 * size_t(nv_out_));
     write_offset_positions(m_, normals, distance, a.positions);
     faces(a.face_offsets, a.corner_vertices);
     edges(a);
@@ -99,7 +102,7 @@ class OffsetBuilder {
 
   PolygonSoup polygons(const Normals& normals, double distance) const {
     PolygonSoup s;
-    resize_on_huge_pages(s.positions, 2 * size_t(nv_out_));
+    resize_for_overwrite(s.positions, 2 * size_t(nv_out_));
     write_offset_positions(m_, normals, distance, s.positions);
     faces(s.face_offsets, s.face_vertices);
     s.face_colors = face_colors();
@@ -110,7 +113,7 @@ class OffsetBuilder {
   // Without isolated vertices (the usual case) the ranks are the identity: no lookup.
   Index out_vertex(Index v, int side) const { return 2 * (ranks_are_identity_ ? v : rank_[v]) + Index(side); }
   // The side of v used by corner c's positive copy.
-  int positive_side(Index c) const { return m_.corner_sign(c) > 0 ? 0 : 1; }
+  int positive_side(Index c) const { return signs_all_positive_ || m_.corner_sign(c) > 0 ? 0 : 1; }
   // Negative copy of face f: corner i holds the vertex of parent corner (n - i) % n, and its edge is the
   // parent edge of corner n - 1 - i; so parent corner c's vertex sits at negative corner (n - local) % n.
   Index negative_corner_at_vertex(Index c) const {
@@ -128,14 +131,14 @@ class OffsetBuilder {
     return edge.vertices[0] == v ? edge.corners[0] : corners_.next(edge.corners[0]);
   }
 
-  void faces(std::vector<Index>& face_offsets, std::vector<Index>& corner_vertices) const {
-    resize_on_huge_pages(face_offsets, 2 * size_t(nf_) + num_border_ + 1);
+  void faces(Buffer<Index>& face_offsets, Buffer<Index>& corner_vertices) const {
+    resize_for_overwrite(face_offsets, 2 * size_t(nf_) + num_border_ + 1);
     for (Index f = 0; f <= nf_; ++f) {
       face_offsets[f] = m_.face_offsets()[f];
       face_offsets[nf_ + f] = nc_ + m_.face_offsets()[f];
     }
     for (Index j = 0; j <= num_border_; ++j) face_offsets[2 * nf_ + j] = 2 * nc_ + 4 * j;
-    resize_on_huge_pages(corner_vertices, 2 * size_t(nc_) + 4 * size_t(num_border_));
+    resize_for_overwrite(corner_vertices, 2 * size_t(nc_) + 4 * size_t(num_border_));
     // Face by face, so that the negative copy's reversal needs no division (negative_corner_at_vertex).
     for (Index f = 0; f < nf_; ++f) {
       const Index b = corners_.first(f), n = corners_.degree(f);
@@ -175,9 +178,9 @@ class OffsetBuilder {
   // Input edge e gives edge 2e (in the positive copy of its first face) and 2e+1 (in the negative copy);
   // border vertex at loop position j gives the side edge 2E + j.
   void edges(MeshArrays& a) const {
-    resize_on_huge_pages(a.edges, 2 * size_t(ne_) + num_border_);
-    resize_on_huge_pages(a.corner_edges, a.corner_vertices.size());
-    resize_on_huge_pages(a.corner_signs, a.corner_vertices.size(), 1);
+    resize_for_overwrite(a.edges, 2 * size_t(ne_) + num_border_);  // each record default-initialized in place
+    resize_for_overwrite(a.corner_edges, a.corner_vertices.size());
+    a.corner_signs.assign(a.corner_vertices.size(), 1);
     for (Index e = 0; e < ne_; ++e) {
       const Edge& in = m_.edge(e);
       Edge& plus = a.edges[2 * e];
@@ -239,7 +242,13 @@ class OffsetBuilder {
   // Components without a walk over the (twice as large) output: a closed component that orients
   // consistently has a double cover in two pieces, the copies on each side; any other gives one piece.
   void components(MeshArrays& a) const {
-    const FaceOrientation orientation = face_orientation(m_);
+    FaceOrientation orientation;
+    if (signs_all_positive_) {
+      orientation.face_signs.assign(nf_, 1);
+      orientation.component_orientable.assign(m_.num_components(), 1);
+    } else {
+      orientation = face_orientation(m_);
+    }
     std::vector<char> splits = orientation.component_orientable;
     for (Index l = 0; l < m_.num_boundary_loops(); ++l)
       splits[m_.face_component(m_.edge(m_.loop_edges(l).front()).faces[0])] = 0;
@@ -249,7 +258,7 @@ class OffsetBuilder {
       first_output[k] = a.num_components;
       a.num_components += splits[k] ? 2 : 1;
     }
-    resize_on_huge_pages(a.face_components, 2 * size_t(nf_) + num_border_);
+    resize_for_overwrite(a.face_components, 2 * size_t(nf_) + num_border_);
     for (Index f = 0; f < nf_; ++f) {
       const Index k = m_.face_component(f);
       const Index other = splits[k] ? 1 : 0;
@@ -268,22 +277,20 @@ class OffsetBuilder {
   // the fan closes through the last border quad, the side edge and the first border quad.
   void fans(MeshArrays& a) const {
     const Index nv = m_.num_vertices();
-    resize_on_huge_pages(a.fan_corner_offsets, 2 * size_t(nv_out_) + 1, 0);
-    resize_on_huge_pages(a.fan_edge_offsets, 2 * size_t(nv_out_) + 1, 0);
+    // A running sum in v order (which is output vertex order): every offset written once, no sum that
+    // reloads the value just stored. The solid is closed, so each fan has as many edges as corners.
+    resize_for_overwrite(a.fan_corner_offsets, 2 * size_t(nv_out_) + 1);
+    a.fan_corner_offsets[0] = 0;
+    Index total = 0;
     for (Index v = 0; v < nv; ++v) {
       if (rank_[v] == no_index) continue;
       const Index k = Index(m_.vertex_corners(v).size()) + (m_.is_boundary_vertex(v) ? 2 : 0);
-      for (int side = 0; side < 2; ++side) {
-        a.fan_corner_offsets[out_vertex(v, side) + 1] = k;
-        a.fan_edge_offsets[out_vertex(v, side) + 1] = k;
-      }
+      a.fan_corner_offsets[out_vertex(v, 0) + 1] = total += k;
+      a.fan_corner_offsets[out_vertex(v, 1) + 1] = total += k;
     }
-    for (size_t i = 1; i < a.fan_corner_offsets.size(); ++i) {
-      a.fan_corner_offsets[i] += a.fan_corner_offsets[i - 1];
-      a.fan_edge_offsets[i] += a.fan_edge_offsets[i - 1];
-    }
-    resize_on_huge_pages(a.fan_corners, a.fan_corner_offsets.back());
-    resize_on_huge_pages(a.fan_edges, a.fan_edge_offsets.back());
+    a.fan_edge_offsets.assign(a.fan_corner_offsets.begin(), a.fan_corner_offsets.end());
+    resize_for_overwrite(a.fan_corners, a.fan_corner_offsets.back());
+    resize_for_overwrite(a.fan_edges, a.fan_edge_offsets.back());
     for (Index v = 0; v < nv; ++v) {
       if (rank_[v] == no_index) continue;
       const auto corners = m_.vertex_corners(v);
@@ -336,6 +343,10 @@ class OffsetBuilder {
   Index nf_, nc_, ne_;
   Index nv_out_ = 0, num_border_ = 0;
   bool ranks_are_identity_ = false;
+  // No Möbius edge anywhere (any consistently oriented surface, the usual input) makes every corner sign
+  // +1: then no sign is read, where the fans and edges would read them at random, and no orientation
+  // needs finding for the components.
+  bool signs_all_positive_ = false;
   std::vector<Index> rank_, loop_of_edge_, loop_of_vertex_;
 };
 
@@ -355,9 +366,16 @@ Mesh offset(const Mesh& mesh, const OffsetOptions& options) {
 Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options) {
   check_distance("offset", options.distance);
   Mesh solid = with_offset_builder(
-      mesh, [&](const auto& builder) { return builder.build(normals, options.distance); });
+      mesh, [&](const auto& builder) { return builder.build(normals, options.distance, MeshArrays()); });
   if (options.subdivision_levels == 0) return solid;
   return subdivide(solid, {options.subdivision_levels, options.rule});
+}
+
+void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh& solid) {
+  check_distance("offset_into", distance);
+  MeshArrays storage = take_arrays(std::move(solid));
+  solid = with_offset_builder(
+      mesh, [&](const auto& builder) { return builder.build(normals, distance, std::move(storage)); });
 }
 
 PolygonSoup offset_polygons(const Mesh& mesh, const Normals& normals, double distance) {

@@ -6,7 +6,6 @@
 #include "nome/error.hpp"
 #include "nome/ops/normals.hpp"
 #include "nome/ops/offset.hpp"
-#include "ops/large_buffer.hpp"
 
 namespace nome {
 namespace {
@@ -137,8 +136,7 @@ Mesh& Pipeline::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int lev
   if (topology_changed_ || !stage.refinement || stage.levels != levels) {
     stage.refinement.emplace(in, levels, o.threads);
     stage.levels = levels;
-    std::vector<Vec3> positions;
-    resize_on_huge_pages(positions, stage.refinement->num_vertices());
+    Buffer<Vec3> positions(stage.refinement->num_vertices());
     stage.refinement->refine_positions(in, o.rule, positions, o.threads);
     stage.result = stage.refinement->mesh(in, std::move(positions), o.threads);
     stage.work = StageWork::rebuilt;
@@ -157,11 +155,12 @@ Mesh& Pipeline::offset_stage(const Mesh& in, const PipelineOptions& o) {
     offset_.work = StageWork::cached;
     return offset_.result;
   }
-  const Normals normals = compute_normals(in);
+  const Normals& normals = offset_.normals;
+  compute_normals(in, offset_.normals);
   if (std::string warning = degeneracy_warning(in, normals); !warning.empty())
     warnings_.push_back("offset: " + warning);
   if (topology_changed_ || !offset_.has_result) {
-    offset_.result = offset(in, normals, {o.offset_distance});
+    offset_into(in, normals, o.offset_distance, offset_.result);
     offset_.has_result = true;
     offset_.work = StageWork::rebuilt;
     topology_changed_ = positions_changed_ = true;

@@ -8,9 +8,9 @@
 #include <span>
 #include <vector>
 
+#include "nome/mesh/buffer.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/ops/subdivide.hpp"
-#include "ops/large_buffer.hpp"
 
 namespace nome {
 
@@ -27,14 +27,14 @@ enum class LevelDetail { counts, quads, full };
 struct Refinement::Level {
   Index vertex_count = 0, edge_count = 0;
   Index num_vertices() const { return vertex_count; }
-  LargeBuffer<Index> corner_vertices;  // 4 per face; empty with LevelDetail::counts (no faces to read)
-  LargeBuffer<Index> corner_edges;     // with LevelDetail::full only
+  Buffer<Index> corner_vertices;  // 4 per face; empty with LevelDetail::counts (no faces to read)
+  Buffer<Index> corner_edges;     // with LevelDetail::full only
   // With LevelDetail::full only. An edge's end vertices are those of its first corner and the next one
   // (no array of their own, to bound the peak memory). Corner signs are left to Refinement::mesh().
-  LargeBuffer<std::array<Index, 2>> edge_corners;  // [1] is no_index on a border edge
-  LargeBuffer<std::uint8_t> edge_flags;
-  LargeBuffer<Index> fan_corner_offsets, fan_corners, fan_edge_offsets, fan_edges;
-  LargeBuffer<Vec3> positions;  // reused by each position pass (the last level's on request)
+  Buffer<std::array<Index, 2>> edge_corners;  // [1] is no_index on a border edge
+  Buffer<std::uint8_t> edge_flags;
+  Buffer<Index> fan_corner_offsets, fan_corners, fan_edge_offsets, fan_edges;
+  Buffer<Vec3> positions;  // reused by each position pass (the last level's on request)
 
   Index num_faces() const { return Index(corner_vertices.size() / 4); }
   Index num_corners() const { return Index(corner_vertices.size()); }

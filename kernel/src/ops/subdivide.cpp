@@ -97,7 +97,7 @@ std::span<const Vec3> Refinement::refine_positions(const Mesh& base, Subdivision
   return levels_.back().positions;
 }
 
-Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads) const {
+Mesh Refinement::mesh(const Mesh& base, Buffer<Vec3> positions, int threads) const {
   if (!fits(base)) throw InvalidInputError("Refinement::mesh: the base mesh's topology changed");
   if (positions.size() != num_vertices())
     throw InvalidInputError("Refinement::mesh: expected " + std::to_string(num_vertices()) + " positions");
@@ -118,9 +118,9 @@ Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads
   MeshArrays a;
   const Index nf = last.num_faces();
   a.positions = std::move(positions);
-  resize_on_huge_pages(a.face_offsets, size_t(nf) + 1);
+  a.face_offsets.resize(size_t(nf) + 1);
   for (Index f = 0; f <= nf; ++f) a.face_offsets[f] = 4 * f;
-  resize_on_huge_pages(a.edges, last.num_edges());
+  a.edges.resize(last.num_edges());
   for (Index e = 0; e < last.num_edges(); ++e) {
     Edge& edge = a.edges[e];
     edge.vertices = last.edge_ends(e);
@@ -129,10 +129,8 @@ Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads
     edge.is_mobius = last.edge_flags[e] & mobius_flag;
     edge.is_sharp = last.edge_flags[e] & sharp_flag;
   }
-  assign_on_huge_pages(a.corner_vertices, last.corner_vertices);
-  assign_on_huge_pages(a.corner_edges, last.corner_edges);
   // Corner signs: +1 at the first corner of each fan, flipped across every Möbius edge after it.
-  resize_on_huge_pages(a.corner_signs, a.corner_vertices.size());
+  a.corner_signs.resize(last.corner_vertices.size());
   for (Index v = 0; v < last.num_vertices(); ++v) {
     const auto corners = last.vertex_corners(v);
     const auto edges = last.vertex_edges(v);
@@ -142,13 +140,16 @@ Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads
       a.corner_signs[corners[i]] = sign;
     }
   }
-  assign_on_huge_pages(a.fan_corner_offsets, last.fan_corner_offsets);
-  assign_on_huge_pages(a.fan_corners, last.fan_corners);
-  assign_on_huge_pages(a.fan_edge_offsets, last.fan_edge_offsets);
-  assign_on_huge_pages(a.fan_edges, last.fan_edges);
+  // The last level's own arrays become the mesh's.
+  a.corner_vertices = std::move(last.corner_vertices);
+  a.corner_edges = std::move(last.corner_edges);
+  a.fan_corner_offsets = std::move(last.fan_corner_offsets);
+  a.fan_corners = std::move(last.fan_corners);
+  a.fan_edge_offsets = std::move(last.fan_edge_offsets);
+  a.fan_edges = std::move(last.fan_edges);
   // A level-k face's level-1 ancestor is face >> 2(k-1), which is a base corner.
   const unsigned shift = 2 * unsigned(levels_.size() - 1);
-  resize_on_huge_pages(a.face_components, nf);
+  a.face_components.resize(nf);
   for (Index f = 0; f < nf; ++f) a.face_components[f] = base.face_component(base.corner_face(f >> shift));
   a.num_components = base.num_components();
   if (!base.face_colors().empty()) {
@@ -161,8 +162,7 @@ Mesh Refinement::mesh(const Mesh& base, std::vector<Vec3> positions, int threads
 Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options) {
   if (options.levels == 0) return mesh;
   Refinement refinement(mesh, options.levels);
-  std::vector<Vec3> positions;
-  resize_on_huge_pages(positions, refinement.num_vertices());
+  Buffer<Vec3> positions(refinement.num_vertices());
   refinement.refine_positions(mesh, options.rule, positions);
   return refinement.mesh(mesh, std::move(positions));
 }

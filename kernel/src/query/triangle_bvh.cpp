@@ -30,8 +30,8 @@ struct Box {
 // A triangle's corner positions, looked up where needed: storing a box per triangle costs more in
 // page faults for a million triangles than the lookups do.
 struct TrianglePoints {
-  const std::vector<Vec3>& positions;
-  const std::vector<Index>& corner_vertices;
+  std::span<const Vec3> positions;
+  std::span<const Index> corner_vertices;
   const DisplayTriangles& triangles;
 
   const Vec3& operator()(Index t, int corner) const {

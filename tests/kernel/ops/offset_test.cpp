@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "nome/error.hpp"
 #include "nome/mesh/topology_report.hpp"
@@ -125,6 +126,69 @@ TEST_CASE("offset_polygons gives offset()'s positions, polygons and colours with
   }
   CHECK_THROWS_AS(offset_polygons(build_mesh(band), compute_normals(build_mesh(band)), 0.0),
                   InvalidInputError);
+}
+
+namespace {
+
+// Every array of the two meshes, compared: what a rebuild must reproduce.
+void check_same_mesh(const Mesh& a, const Mesh& b) {
+  CHECK(validate(a).empty());
+  CHECK(a.positions() == b.positions());
+  CHECK(a.face_offsets() == b.face_offsets());
+  CHECK(a.corner_vertices() == b.corner_vertices());
+  CHECK(a.corner_edges() == b.corner_edges());
+  CHECK(a.corner_faces() == b.corner_faces());
+  CHECK(a.corner_signs() == b.corner_signs());
+  REQUIRE(a.num_edges() == b.num_edges());
+  for (Index e = 0; e < a.num_edges(); ++e) {
+    const Edge &x = a.edge(e), &y = b.edge(e);
+    CHECK((x.vertices == y.vertices && x.faces == y.faces && x.corners == y.corners &&
+           x.is_mobius == y.is_mobius && x.is_sharp == y.is_sharp));
+  }
+  CHECK(a.fan_corner_offsets() == b.fan_corner_offsets());
+  CHECK(a.fan_corners() == b.fan_corners());
+  CHECK(a.fan_edge_offsets() == b.fan_edge_offsets());
+  CHECK(a.fan_edges() == b.fan_edges());
+  CHECK(a.num_components() == b.num_components());
+  for (Index f = 0; f < a.num_faces(); ++f) CHECK(a.face_component(f) == b.face_component(f));
+  CHECK(a.face_colors() == b.face_colors());
+}
+
+}  // namespace
+
+TEST_CASE("offset_into rebuilds in the blocks of the solid it replaces what offset() builds", "[kernel]") {
+  PolygonSoup band = test::mobius_band(12, 3);
+  for (Index f = 0; f < band.num_faces(); ++f)
+    band.face_colors.push_back(Color(0.1f * float(f % 7), 0.5f, 1.0f));
+  std::mt19937 rng{7};
+  // Larger, smaller, then larger again; with and without borders, Möbius edges and colours.
+  const PolygonSoup shapes[] = {
+      test::torus(16, 8),       band,
+      test::klein_bottle(8, 6), test::reverse_random_faces(test::torus(8, 6), 0.5, rng),
+      test::grid(3, 2),         test::disjoint_union(test::cube(), test::mobius_band(9, 1)),
+      test::torus(16, 8)};
+  Mesh solid;
+  Normals normals;
+  for (const PolygonSoup& shape : shapes) {
+    const Mesh m = build_mesh(shape);
+    compute_normals(m, normals);
+    offset_into(m, normals, 0.04, solid);
+    check_same_mesh(solid, offset(m, {0.04}));
+    CHECK(normals.vertices == compute_normals(m).vertices);
+  }
+  // Rebuilt with the same counts, the solid keeps its blocks: no fresh memory.
+  const Mesh torus = build_mesh(test::torus(16, 8));
+  const Vec3* positions = solid.positions().data();
+  const Edge* edges = solid.edges().data();
+  const Index* fans = solid.fan_corners().data();
+  offset_into(torus, compute_normals(torus), 0.05, solid);
+  CHECK(solid.positions().data() == positions);
+  CHECK(solid.edges().data() == edges);
+  CHECK(solid.fan_corners().data() == fans);
+  check_same_mesh(solid, offset(torus, {0.05}));
+  // A refused distance leaves the solid as it was.
+  CHECK_THROWS_AS(offset_into(torus, compute_normals(torus), -1.0, solid), InvalidInputError);
+  CHECK(solid.num_faces() == 2 * torus.num_faces());
 }
 
 TEST_CASE("offset refuses a distance that is not positive and finite", "[kernel]") {

@@ -54,14 +54,14 @@ TEST_CASE("the pipeline redoes only what an input or option change invalidates",
   // A slider moved vertices: every stage re-runs its position pass only, and gets what a fresh
   // pipeline gets, bit for bit.
   const Mesh dragged = moved(band, 0.2);
-  const std::vector<Vec3> fast = pipeline.run(dragged, o).positions();
+  const Buffer<Vec3> fast = pipeline.run(dragged, o).positions();
   CHECK(pipeline.subdivision_work() == StageWork::positions);
   CHECK(pipeline.offset_work() == StageWork::positions);
   CHECK(pipeline.subdivision_after_work() == StageWork::positions);
   CHECK(fast == Pipeline().run(dragged, o).positions());
 
   o.offset_distance = 0.08;  // a thicker slab: the subdivision before the offset is kept
-  const std::vector<Vec3> thicker = pipeline.run(dragged, o).positions();
+  const Buffer<Vec3> thicker = pipeline.run(dragged, o).positions();
   CHECK(pipeline.subdivision_work() == StageWork::cached);
   CHECK(pipeline.offset_work() == StageWork::positions);
   CHECK(pipeline.subdivision_after_work() == StageWork::positions);

@@ -10,8 +10,8 @@ using namespace nome;
 
 namespace {
 
-std::vector<Vec3> subdivided(const PolygonSoup& soup, int levels,
-                             SubdivisionRule rule = SubdivisionRule::classic) {
+Buffer<Vec3> subdivided(const PolygonSoup& soup, int levels,
+                        SubdivisionRule rule = SubdivisionRule::classic) {
   return subdivide(build_mesh(soup), {levels, rule}).positions();
 }
 
@@ -192,7 +192,7 @@ TEST_CASE("crease, corner and border rules on an open grid", "[kernel]") {
 TEST_CASE("the position pass alone reproduces a full refinement after the base moves", "[kernel]") {
   const Mesh base = build_mesh(test::mobius_band(64, 8));
   Refinement refinement(base, 3);
-  std::vector<Vec3> out(refinement.num_vertices());
+  Buffer<Vec3> out(refinement.num_vertices());
   refinement.refine_positions(base, SubdivisionRule::classic, out);
   CHECK(out == subdivide(base, {3, SubdivisionRule::classic}).positions());
   Mesh moved = base;
@@ -202,7 +202,7 @@ TEST_CASE("the position pass alone reproduces a full refinement after the base m
   // Two threads split the work, not the arithmetic: bit for bit the same.
   const Mesh torus = build_mesh(test::torus(64, 32));
   Refinement big(torus, 4);
-  std::vector<Vec3> one(big.num_vertices()), two(big.num_vertices());
+  Buffer<Vec3> one(big.num_vertices()), two(big.num_vertices());
   big.refine_positions(torus, SubdivisionRule::classic, one, 1);
   big.refine_positions(torus, SubdivisionRule::classic, two, 2);
   CHECK(one == two);
@@ -237,7 +237,7 @@ TEST_CASE("refining several levels at once gives the bits of refining one level 
                          stepwise.corner_vertices().end()));
       }
       Refinement refinement(build_mesh(soup), 3);
-      std::vector<Vec3> two_threads(refinement.num_vertices());
+      Buffer<Vec3> two_threads(refinement.num_vertices());
       refinement.refine_positions(build_mesh(soup), rule, two_threads, 2);
       CHECK(two_threads == stepwise.positions());
     }

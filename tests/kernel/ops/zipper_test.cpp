@@ -134,8 +134,8 @@ TEST_CASE("the strip never puts three faces on an edge and uses every chain edge
     PolygonSoup soup;
     for (const Vec3& p : a) soup.add_vertex(p);
     for (const Vec3& p : b) soup.add_vertex(p);
-    soup.face_offsets = strip.face_offsets;
-    soup.face_vertices = strip.face_vertices;
+    soup.face_offsets.assign(strip.face_offsets.begin(), strip.face_offsets.end());
+    soup.face_vertices.assign(strip.face_vertices.begin(), strip.face_vertices.end());
     const TopologyReport r = topology_report(build_mesh(soup));
     CHECK(r.chi == 1);
     CHECK(r.orientable);

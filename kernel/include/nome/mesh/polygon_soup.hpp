@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "nome/mesh/buffer.hpp"
 #include "nome/mesh/types.hpp"
 
 namespace nome {
@@ -12,9 +13,9 @@ namespace nome {
 // Positions and polygons as given, before any topology: the input of build_mesh.
 // Optional per-element names and colours travel with the elements into the Mesh.
 struct PolygonSoup {
-  std::vector<Vec3> positions;
-  std::vector<Index> face_offsets{0};  // face f has corners [face_offsets[f], face_offsets[f+1])
-  std::vector<Index> face_vertices;
+  Buffer<Vec3> positions;
+  Buffer<Index> face_offsets{0};  // face f has corners [face_offsets[f], face_offsets[f+1])
+  Buffer<Index> face_vertices;
   std::vector<std::string> vertex_names;             // empty, or one per vertex
   std::vector<std::string> face_names;               // empty, or one per face
   std::vector<Color> face_colors;                    // empty, or one per face

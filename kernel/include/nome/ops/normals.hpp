@@ -12,8 +12,8 @@ namespace nome {
 Vec3 face_area_normal(const Mesh& mesh, Index f);
 
 struct Normals {
-  std::vector<Vec3> faces;     // unit face normals (zero for a degenerate face)
-  std::vector<Vec3> vertices;  // unit vertex normals, relative to the first face of each vertex's fan
+  Buffer<Vec3> faces;     // unit face normals (zero for a degenerate face)
+  Buffer<Vec3> vertices;  // unit vertex normals, relative to the first face of each vertex's fan
   std::vector<Index> degenerate_faces;     // zero area or coinciding vertices
   std::vector<Index> degenerate_vertices;  // the signed sum over the fan vanished
 };
@@ -22,6 +22,8 @@ struct Normals {
 // orientation sign (Möbius-aware: no dot-product guessing). Degenerate elements get a zero normal and
 // are listed, never NaN.
 Normals compute_normals(const Mesh& mesh);
+// The same into `out`, reusing its arrays' blocks (no fresh pages for a mesh no larger than the last).
+void compute_normals(const Mesh& mesh, Normals& out);
 
 // A warning naming the degenerate faces and vertices of `normals` (the first few of each, by label),
 // or "" when there are none: for the caller to show, since the kernel never prints.

@@ -28,6 +28,12 @@ Mesh offset(const Mesh& mesh, const OffsetOptions& options);
 // The same with the mesh's normals already computed (a caller that also wants their warnings).
 Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options);
 
+// The same as offset(mesh, normals, {distance}) into `solid`, replacing what it held and reusing its
+// arrays' blocks: a rebuild no larger than the solid it replaces touches no fresh pages (the viewer's
+// rebuild when the surface under the offset changes its topology). Throws as offset() does, before
+// `solid` is touched.
+void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh& solid);
+
 // The same solid as positions and polygons only, numbered as offset() numbers them, without the edges,
 // fans and components a Mesh carries: what export and drawing need, in a fraction of offset()'s time and
 // memory. Throws as offset() does.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/ops/normals.hpp"
 #include "nome/ops/subdivide.hpp"
 
 namespace nome {
@@ -58,6 +59,7 @@ class Pipeline {
     StageWork work = StageWork::skipped;
   };
   struct OffsetStage {
+    Normals normals;  // of the stage's input; kept for their blocks, as is the result's
     Mesh result;
     bool has_result = false;
     StageWork work = StageWork::skipped;
@@ -70,8 +72,9 @@ class Pipeline {
   Mesh& offset_stage(const Mesh& in, const PipelineOptions& o);
 
   // What the last run saw: the input's topology and positions, and the options.
-  std::vector<Index> input_face_offsets_, input_corners_, input_sharp_;
-  std::vector<Vec3> input_positions_;
+  Buffer<Index> input_face_offsets_, input_corners_;
+  std::vector<Index> input_sharp_;
+  Buffer<Vec3> input_positions_;
   std::optional<PipelineOptions> last_options_;
   bool topology_changed_ = true;   // of the current stage's input, during a run
   bool positions_changed_ = true;  // likewise

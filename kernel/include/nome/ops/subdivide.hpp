@@ -59,7 +59,7 @@ class Refinement {
 
   // The last level as a full Mesh with the given positions (from refine_positions), built from the
   // level before it without any search; faces keep the colours and components of their ancestors.
-  Mesh mesh(const Mesh& base, std::vector<Vec3> positions, int threads = 1) const;
+  Mesh mesh(const Mesh& base, Buffer<Vec3> positions, int threads = 1) const;
 
   struct Level;
 

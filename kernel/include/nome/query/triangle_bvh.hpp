@@ -75,12 +75,12 @@ class TriangleBvh {
   void traverse(const ShearedRay& ray, double& t_max, Visit&& visit) const;
 
   DisplayTriangles triangles_;
-  std::vector<Vec3> positions_;
+  Buffer<Vec3> positions_;
   std::vector<Index> order_;  // triangle ids; leaves own contiguous ranges
   std::vector<BvhNode> nodes_;
   // Polygon structure for classifying hits on edges and corners.
-  std::vector<Index> corner_vertices_;
-  std::vector<Index> corner_edges_;
+  Buffer<Index> corner_vertices_;
+  Buffer<Index> corner_edges_;
   std::vector<Index> corner_next_;
 };
 
