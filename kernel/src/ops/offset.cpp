@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <string>
+#include <thread>
 
 #include "nome/error.hpp"
 #include "nome/mesh/face_orientation.hpp"
@@ -88,15 +90,39 @@ class OffsetBuilder {
     }
   }
 
-  // Into the blocks of `a` (from take_arrays, or fresh).
-  Mesh build(const Normals& normals, double distance, MeshArrays a) const {
-    resize_for_overwrite(a.positions, 2 * size_t(nv_out_));
-    write_offset_positions(m_, normals, distance, a.positions);
-    faces(a.face_offsets, a.corner_vertices);
-    edges(a);
-    fans(a);
-    a.face_colors = face_colors();
-    components(a);
+  // Into the blocks of `a` (from take_arrays, or fresh). The fans and the components fill arrays of their
+  // own: with a second thread they are built beside the rest (each phase reads only the input mesh).
+  Mesh build(const Normals& normals, double distance, MeshArrays a, int threads) const {
+    auto fans_and_components = [&] {
+      fans(a);
+      components(a);
+    };
+    std::exception_ptr helper_error;
+    std::thread helper;
+    if (threads > 1 && nf_ >= min_faces_per_thread)
+      helper = std::thread([&] {
+        try {
+          fans_and_components();
+        } catch (...) {
+          helper_error = std::current_exception();
+        }
+      });
+    try {
+      resize_for_overwrite(a.positions, 2 * size_t(nv_out_));
+      write_offset_positions(m_, normals, distance, a.positions);
+      faces(a.face_offsets, a.corner_vertices);
+      edges(a);
+      a.face_colors = face_colors();
+    } catch (...) {
+      if (helper.joinable()) helper.join();
+      throw;
+    }
+    if (helper.joinable()) {
+      helper.join();
+      if (helper_error) std::rethrow_exception(helper_error);
+    } else {
+      fans_and_components();
+    }
     return assemble_mesh(std::move(a));
   }
 
@@ -338,6 +364,9 @@ class OffsetBuilder {
     return ribbon_corner(j, positive ? 0 : 3);
   }
 
+  // Below this a thread costs more to start than it saves.
+  static constexpr Index min_faces_per_thread = 1 << 15;
+
   const Mesh& m_;
   Corners corners_;
   Index nf_, nc_, ne_;
@@ -365,17 +394,19 @@ Mesh offset(const Mesh& mesh, const OffsetOptions& options) {
 
 Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options) {
   check_distance("offset", options.distance);
-  Mesh solid = with_offset_builder(
-      mesh, [&](const auto& builder) { return builder.build(normals, options.distance, MeshArrays()); });
+  Mesh solid = with_offset_builder(mesh, [&](const auto& builder) {
+    return builder.build(normals, options.distance, MeshArrays(), options.threads);
+  });
   if (options.subdivision_levels == 0) return solid;
   return subdivide(solid, {options.subdivision_levels, options.rule});
 }
 
-void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh& solid) {
+void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh& solid, int threads) {
   check_distance("offset_into", distance);
   MeshArrays storage = take_arrays(std::move(solid));
-  solid = with_offset_builder(
-      mesh, [&](const auto& builder) { return builder.build(normals, distance, std::move(storage)); });
+  solid = with_offset_builder(mesh, [&](const auto& builder) {
+    return builder.build(normals, distance, std::move(storage), threads);
+  });
 }
 
 PolygonSoup offset_polygons(const Mesh& mesh, const Normals& normals, double distance) {

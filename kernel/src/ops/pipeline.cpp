@@ -160,7 +160,7 @@ Mesh& Pipeline::offset_stage(const Mesh& in, const PipelineOptions& o) {
   if (std::string warning = degeneracy_warning(in, normals); !warning.empty())
     warnings_.push_back("offset: " + warning);
   if (topology_changed_ || !offset_.has_result) {
-    offset_into(in, normals, o.offset_distance, offset_.result);
+    offset_into(in, normals, o.offset_distance, offset_.result, o.threads);
     offset_.has_result = true;
     offset_.work = StageWork::rebuilt;
     topology_changed_ = positions_changed_ = true;

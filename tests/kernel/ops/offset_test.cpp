@@ -186,9 +186,15 @@ TEST_CASE("offset_into rebuilds in the blocks of the solid it replaces what offs
   CHECK(solid.edges().data() == edges);
   CHECK(solid.fan_corners().data() == fans);
   check_same_mesh(solid, offset(torus, {0.05}));
+  // Two threads build the same arrays (the meshes are large enough to be split: 2^15 faces and more).
+  for (const PolygonSoup& shape : {test::torus(256, 128), test::mobius_band(512, 64)}) {
+    const Mesh m = build_mesh(shape);
+    offset_into(m, compute_normals(m), 0.01, solid, 2);
+    check_same_mesh(solid, offset(m, {0.01}));
+  }
   // A refused distance leaves the solid as it was.
   CHECK_THROWS_AS(offset_into(torus, compute_normals(torus), -1.0, solid), InvalidInputError);
-  CHECK(solid.num_faces() == 2 * torus.num_faces());
+  CHECK(solid.num_faces() == 2 * 512 * 64 + 2 * 512);
 }
 
 TEST_CASE("offset refuses a distance that is not positive and finite", "[kernel]") {

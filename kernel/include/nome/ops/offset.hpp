@@ -12,6 +12,7 @@ struct OffsetOptions {
   double distance = 0.05;      // half the slab's thickness; must be positive and finite
   int subdivision_levels = 0;  // Catmull-Clark levels after the offset, to round the rims
   SubdivisionRule rule = SubdivisionRule::classic;
+  int threads = 1;  // the solid's arrays are built on up to two threads
 };
 
 // Thickens a surface into a solid (report 004 section 5, DESIGN.md "Normals and offset"). Vertex v
@@ -31,8 +32,8 @@ Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& optio
 // The same as offset(mesh, normals, {distance}) into `solid`, replacing what it held and reusing its
 // arrays' blocks: a rebuild no larger than the solid it replaces touches no fresh pages (the viewer's
 // rebuild when the surface under the offset changes its topology). Throws as offset() does, before
-// `solid` is touched.
-void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh& solid);
+// `solid` is touched. Uses up to `threads` threads (two at most).
+void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh& solid, int threads = 1);
 
 // The same solid as positions and polygons only, numbered as offset() numbers them, without the edges,
 // fans and components a Mesh carries: what export and drawing need, in a fraction of offset()'s time and
