@@ -66,7 +66,7 @@ Mesh build_mesh(PolygonSoup soup) {
 
   m.vertex_names_ = std::move(soup.vertex_names);
   m.face_names_ = std::move(soup.face_names);
-  m.face_colors_ = std::move(soup.face_colors);
+  m.arrays_.face_colors = std::move(soup.face_colors);
 
   // phase: faces. Degree, index range, repeated vertices (a stamp array makes the check O(degree)).
   std::vector<Index> stamp(nv, no_index);
@@ -96,21 +96,21 @@ Mesh build_mesh(PolygonSoup soup) {
   }
   problems.throw_if_any();
 
-  m.positions_ = std::move(soup.positions);
-  m.face_offsets_ = std::move(soup.face_offsets);
-  m.corner_vertices_ = std::move(soup.face_vertices);
+  m.arrays_.positions = std::move(soup.positions);
+  m.arrays_.face_offsets = std::move(soup.face_offsets);
+  m.arrays_.corner_vertices = std::move(soup.face_vertices);
   const Index nc = m.num_corners();
-  m.corner_faces_.resize(nc);
+  m.arrays_.corner_faces.resize(nc);
   for (Index f = 0; f < nf; ++f)
-    std::fill(m.corner_faces_.begin() + m.face_offsets_[f], m.corner_faces_.begin() + m.face_offsets_[f + 1],
-              f);
+    std::fill(m.arrays_.corner_faces.begin() + m.arrays_.face_offsets[f],
+              m.arrays_.corner_faces.begin() + m.arrays_.face_offsets[f + 1], f);
 
   // phase: edges. Half-edges (corner c runs from its vertex to the next corner's) are bucketed by their
   // smaller end vertex; within a bucket a stamp array indexed by the larger end finds the partner.
   // No hashing, O(corners).
   Buffer<Index> min_vertex(nc);
   for (Index c = 0; c < nc; ++c)
-    min_vertex[c] = std::min(m.corner_vertices_[c], m.corner_vertices_[m.next_corner(c)]);
+    min_vertex[c] = std::min(m.arrays_.corner_vertices[c], m.arrays_.corner_vertices[m.next_corner(c)]);
   Buffer<Index> bucket_offsets = csr_offsets(min_vertex, nv);
   Buffer<Index> bucket(nc);
   {
@@ -118,37 +118,37 @@ Mesh build_mesh(PolygonSoup soup) {
     for (Index c = 0; c < nc; ++c) bucket[fill[min_vertex[c]]++] = c;
   }
   min_vertex = {};
-  m.corner_edges_.assign(nc, no_index);
-  m.edges_.reserve(nc / 2 + 1);
+  m.arrays_.corner_edges.assign(nc, no_index);
+  m.arrays_.edges.reserve(nc / 2 + 1);
   std::fill(stamp.begin(), stamp.end(), no_index);
   for (Index a = 0; a < nv; ++a) {
     for (Index i = bucket_offsets[a]; i < bucket_offsets[a + 1]; ++i) {
       const Index c = bucket[i];
-      const Index from = m.corner_vertices_[c], to = m.corner_vertices_[m.next_corner(c)];
+      const Index from = m.arrays_.corner_vertices[c], to = m.arrays_.corner_vertices[m.next_corner(c)];
       const Index other = from == a ? to : from;
       Index e = stamp[other];
-      if (e == no_index || m.edges_[e].vertices[0] + m.edges_[e].vertices[1] != a + other ||
-          std::min(m.edges_[e].vertices[0], m.edges_[e].vertices[1]) != a) {
-        e = static_cast<Index>(m.edges_.size());
+      if (e == no_index || m.arrays_.edges[e].vertices[0] + m.arrays_.edges[e].vertices[1] != a + other ||
+          std::min(m.arrays_.edges[e].vertices[0], m.arrays_.edges[e].vertices[1]) != a) {
+        e = static_cast<Index>(m.arrays_.edges.size());
         Edge edge;
         edge.vertices = {from, to};
-        edge.faces[0] = m.corner_faces_[c];
+        edge.faces[0] = m.arrays_.corner_faces[c];
         edge.corners[0] = c;
-        m.edges_.push_back(edge);
+        m.arrays_.edges.push_back(edge);
         stamp[other] = e;
       } else {
-        Edge& edge = m.edges_[e];
+        Edge& edge = m.arrays_.edges[e];
         if (edge.faces[1] != no_index) {
           problems.add("edge (" + v_label(edge.vertices[0]) + ", " + v_label(edge.vertices[1]) +
-                       ") has a third face " + f_label(m.corner_faces_[c]) + " besides " +
+                       ") has a third face " + f_label(m.arrays_.corner_faces[c]) + " besides " +
                        f_label(edge.faces[0]) + " and " + f_label(edge.faces[1]));
           continue;
         }
-        edge.faces[1] = m.corner_faces_[c];
+        edge.faces[1] = m.arrays_.corner_faces[c];
         edge.corners[1] = c;
         edge.is_mobius = from == edge.vertices[0];
       }
-      m.corner_edges_[c] = e;
+      m.arrays_.corner_edges[c] = e;
     }
   }
   problems.throw_if_any();
@@ -158,40 +158,40 @@ Mesh build_mesh(PolygonSoup soup) {
   // Edges are numbered by their smaller vertex; renumber them by first appearance in face order so
   // that numbering follows the input, as users expect when reading messages and files.
   {
-    std::vector<Index> order(m.edges_.size(), no_index);
+    std::vector<Index> order(m.arrays_.edges.size(), no_index);
     Index next = 0;
     for (Index c = 0; c < nc; ++c)
-      if (order[m.corner_edges_[c]] == no_index) order[m.corner_edges_[c]] = next++;
-    Buffer<Edge> sorted(m.edges_.size());
-    for (Index e = 0; e < m.edges_.size(); ++e) sorted[order[e]] = m.edges_[e];
-    m.edges_ = std::move(sorted);
-    for (Index& e : m.corner_edges_) e = order[e];
+      if (order[m.arrays_.corner_edges[c]] == no_index) order[m.arrays_.corner_edges[c]] = next++;
+    Buffer<Edge> sorted(m.arrays_.edges.size());
+    for (Index e = 0; e < m.arrays_.edges.size(); ++e) sorted[order[e]] = m.arrays_.edges[e];
+    m.arrays_.edges = std::move(sorted);
+    for (Index& e : m.arrays_.corner_edges) e = order[e];
   }
   // phase: fans. Corners bucketed by vertex, then each vertex's fan walked face to face across edges.
-  m.fan_corner_offsets_ = csr_offsets(m.corner_vertices_, nv);
+  m.arrays_.fan_corner_offsets = csr_offsets(m.arrays_.corner_vertices, nv);
   Buffer<Index> vertex_corner_list(nc);
   {
-    std::vector<Index> fill(m.fan_corner_offsets_.begin(), m.fan_corner_offsets_.end() - 1);
-    for (Index c = 0; c < nc; ++c) vertex_corner_list[fill[m.corner_vertices_[c]]++] = c;
+    std::vector<Index> fill(m.arrays_.fan_corner_offsets.begin(), m.arrays_.fan_corner_offsets.end() - 1);
+    for (Index c = 0; c < nc; ++c) vertex_corner_list[fill[m.arrays_.corner_vertices[c]]++] = c;
   }
-  m.fan_corners_.resize(nc);
-  m.corner_signs_.assign(nc, 0);
-  m.fan_edge_offsets_.assign(size_t(nv) + 1, 0);
-  m.fan_edges_.clear();
-  m.fan_edges_.reserve(size_t(nc) + nv);
+  m.arrays_.fan_corners.resize(nc);
+  m.arrays_.corner_signs.assign(nc, 0);
+  m.arrays_.fan_edge_offsets.assign(size_t(nv) + 1, 0);
+  m.arrays_.fan_edges.clear();
+  m.arrays_.fan_edges.reserve(size_t(nc) + nv);
   std::vector<char> visited(nc, 0);
   for (Index v = 0; v < nv; ++v) {
-    const Index b = m.fan_corner_offsets_[v], k = m.fan_corner_offsets_[v + 1] - b;
-    m.fan_edge_offsets_[v + 1] = m.fan_edge_offsets_[v];
+    const Index b = m.arrays_.fan_corner_offsets[v], k = m.arrays_.fan_corner_offsets[v + 1] - b;
+    m.arrays_.fan_edge_offsets[v + 1] = m.arrays_.fan_edge_offsets[v];
     if (k == 0) continue;
     // Start at a corner whose incoming edge (the edge before it in its face) is a border, if any.
     Index start = vertex_corner_list[b];
-    Index start_edge = m.corner_edges_[m.prev_corner(start)];
+    Index start_edge = m.arrays_.corner_edges[m.prev_corner(start)];
     Index borders_here = 0;
     for (Index i = b; i < b + k; ++i) {
       const Index c = vertex_corner_list[i];
-      for (Index e : {m.corner_edges_[c], m.corner_edges_[m.prev_corner(c)]}) {
-        if (m.edges_[e].is_boundary()) {
+      for (Index e : {m.arrays_.corner_edges[c], m.arrays_.corner_edges[m.prev_corner(c)]}) {
+        if (m.arrays_.edges[e].is_boundary()) {
           if (borders_here++ == 0) {
             start = c;
             start_edge = e;
@@ -205,22 +205,22 @@ Mesh build_mesh(PolygonSoup soup) {
     const bool is_boundary = borders_here > 0;
     for (;;) {
       visited[c] = 1;
-      m.fan_edges_.push_back(entered);
-      m.fan_corners_[b + count] = c;
-      m.corner_signs_[c] = static_cast<signed char>(sign);
+      m.arrays_.fan_edges.push_back(entered);
+      m.arrays_.fan_corners[b + count] = c;
+      m.arrays_.corner_signs[c] = static_cast<signed char>(sign);
       ++count;
       // Leave through the other edge of this face at v.
-      const Index e_out =
-          m.corner_edges_[c] == entered ? m.corner_edges_[m.prev_corner(c)] : m.corner_edges_[c];
-      const Edge& edge = m.edges_[e_out];
+      const Index e_out = m.arrays_.corner_edges[c] == entered ? m.arrays_.corner_edges[m.prev_corner(c)]
+                                                               : m.arrays_.corner_edges[c];
+      const Edge& edge = m.arrays_.edges[e_out];
       if (edge.is_boundary()) {
-        m.fan_edges_.push_back(e_out);
+        m.arrays_.fan_edges.push_back(e_out);
         break;
       }
-      const Index f_next = edge.other_face(m.corner_faces_[c]);
+      const Index f_next = edge.other_face(m.arrays_.corner_faces[c]);
       const Index side = edge.faces[0] == f_next ? 0 : 1;
       Index c_next = edge.corners[side];
-      if (m.corner_vertices_[c_next] != v) c_next = m.next_corner(c_next);
+      if (m.arrays_.corner_vertices[c_next] != v) c_next = m.next_corner(c_next);
       if (edge.is_mobius) sign = -sign;
       if (c_next == start) break;
       if (visited[c_next] || count == k) break;
@@ -231,7 +231,7 @@ Mesh build_mesh(PolygonSoup soup) {
       problems.add("vertex " + v_label(v) + ": its " + std::to_string(k) +
                    " faces do not form one fan (the surface touches itself there)");
     }
-    m.fan_edge_offsets_[v + 1] = static_cast<Index>(m.fan_edges_.size());
+    m.arrays_.fan_edge_offsets[v + 1] = static_cast<Index>(m.arrays_.fan_edges.size());
   }
   problems.throw_if_any();
 
@@ -240,11 +240,11 @@ Mesh build_mesh(PolygonSoup soup) {
     Index found = no_index;
     if (a < nv && b < nv)
       for (Index e : m.vertex_edges(a))
-        if (m.edges_[e].other_vertex(a) == b) found = e;
+        if (m.arrays_.edges[e].other_vertex(a) == b) found = e;
     if (found == no_index)
       throw TopologyError("build_mesh: sharp edge (" + v_label(a) + ", " + v_label(b) +
                           ") is not an edge of any face");
-    m.edges_[found].is_sharp = true;
+    m.arrays_.edges[found].is_sharp = true;
   }
 
   m.find_boundary_loops();
@@ -269,15 +269,15 @@ void Mesh::find_boundary_loops() {
   if (border.empty()) return;
   // Loops in the order of their smallest edge, each starting there: as a scan of the edges would find them.
   std::sort(border.begin(), border.end());
-  std::vector<char> used(edges_.size(), 0);
+  std::vector<char> used(arrays_.edges.size(), 0);
   for (Index e0 : border) {
     if (used[e0]) continue;
-    Index e = e0, v = edges_[e0].vertices[0];
+    Index e = e0, v = arrays_.edges[e0].vertices[0];
     do {
       used[e] = 1;
       loop_edges_.push_back(e);
       loop_vertices_.push_back(v);
-      v = edges_[e].other_vertex(v);
+      v = arrays_.edges[e].other_vertex(v);
       const auto fan = vertex_edges(v);
       e = fan.front() == e ? fan.back() : fan.front();
     } while (e != e0);
@@ -288,20 +288,20 @@ void Mesh::find_boundary_loops() {
 void Mesh::find_components() {
   // A breadth-first walk over faces across edges.
   const Index nf = num_faces();
-  face_components_.assign(nf, no_index);
-  num_components_ = 0;
+  arrays_.face_components.assign(nf, no_index);
+  arrays_.num_components = 0;
   std::vector<Index> queue;
   queue.reserve(nf);
   for (Index f0 = 0; f0 < nf; ++f0) {
-    if (face_components_[f0] != no_index) continue;
-    const Index comp = num_components_++;
-    face_components_[f0] = comp;
+    if (arrays_.face_components[f0] != no_index) continue;
+    const Index comp = arrays_.num_components++;
+    arrays_.face_components[f0] = comp;
     queue.assign(1, f0);
     for (size_t q = 0; q < queue.size(); ++q) {
       for (Index e : face_edges(queue[q])) {
-        const Index g = edges_[e].other_face(queue[q]);
-        if (g != no_index && face_components_[g] == no_index) {
-          face_components_[g] = comp;
+        const Index g = arrays_.edges[e].other_face(queue[q]);
+        if (g != no_index && arrays_.face_components[g] == no_index) {
+          arrays_.face_components[g] = comp;
           queue.push_back(g);
         }
       }
@@ -311,7 +311,7 @@ void Mesh::find_components() {
 
 Index Mesh::vertex_component(Index v) const {
   const auto corners = vertex_corners(v);
-  return corners.empty() ? no_index : face_components_[corner_faces_[corners.front()]];
+  return corners.empty() ? no_index : arrays_.face_components[arrays_.corner_faces[corners.front()]];
 }
 
 std::string Mesh::vertex_label(Index v) const {

@@ -29,7 +29,25 @@ struct Edge {
   Index other_face(Index f) const { return faces[0] == f ? faces[1] : faces[0]; }
 };
 
-struct MeshArrays;
+// The arrays of a mesh, laid out as Mesh documents them: what a builder that knows the adjacency (a
+// subdivision level, an offset solid) fills for assemble_mesh, and what a Mesh holds besides its loops and
+// names. Corner faces and boundary loops are derived; components too unless given.
+struct MeshArrays {
+  Buffer<Index> corner_faces;  // derived: written by assemble_mesh
+  Buffer<Vec3> positions;
+  Buffer<Index> face_offsets{0};
+  Buffer<Index> corner_vertices;
+  Buffer<Index> corner_edges;
+  Buffer<signed char> corner_signs;
+  Buffer<Edge> edges;
+  Buffer<Index> fan_corner_offsets{0};
+  Buffer<Index> fan_corners;
+  Buffer<Index> fan_edge_offsets{0};
+  Buffer<Index> fan_edges;
+  Buffer<Index> face_components;  // empty: found by a walk over faces
+  Index num_components = 0;
+  std::vector<Color> face_colors;  // empty, or one per face
+};
 
 // A 2-manifold polygon mesh, possibly with borders, possibly non-orientable, as index arrays.
 //
@@ -45,63 +63,66 @@ struct MeshArrays;
 // known); the topology is immutable afterwards, positions and sharp flags may change.
 class Mesh {
  public:
-  Index num_vertices() const { return static_cast<Index>(positions_.size()); }
-  Index num_faces() const { return static_cast<Index>(face_offsets_.size() - 1); }
-  Index num_edges() const { return static_cast<Index>(edges_.size()); }
-  Index num_corners() const { return static_cast<Index>(corner_vertices_.size()); }
+  Index num_vertices() const { return static_cast<Index>(arrays_.positions.size()); }
+  Index num_faces() const { return static_cast<Index>(arrays_.face_offsets.size() - 1); }
+  Index num_edges() const { return static_cast<Index>(arrays_.edges.size()); }
+  Index num_corners() const { return static_cast<Index>(arrays_.corner_vertices.size()); }
   Index num_boundary_loops() const { return static_cast<Index>(loop_offsets_.size() - 1); }
-  Index num_components() const { return num_components_; }
+  Index num_components() const { return arrays_.num_components; }
 
   // Positions: a slider may move them without changing the topology.
-  const Buffer<Vec3>& positions() const { return positions_; }
-  Buffer<Vec3>& positions() { return positions_; }
-  const Vec3& position(Index v) const { return positions_[v]; }
+  const Buffer<Vec3>& positions() const { return arrays_.positions; }
+  Buffer<Vec3>& positions() { return arrays_.positions; }
+  const Vec3& position(Index v) const { return arrays_.positions[v]; }
 
   // Faces, in their given cyclic order. face_edges(f)[i] joins face_vertices(f)[i] and [i+1].
-  std::span<const Index> face_vertices(Index f) const { return corner_span(corner_vertices_, f); }
-  std::span<const Index> face_edges(Index f) const { return corner_span(corner_edges_, f); }
-  Index face_degree(Index f) const { return face_offsets_[f + 1] - face_offsets_[f]; }
-  Index face_first_corner(Index f) const { return face_offsets_[f]; }
+  std::span<const Index> face_vertices(Index f) const { return corner_span(arrays_.corner_vertices, f); }
+  std::span<const Index> face_edges(Index f) const { return corner_span(arrays_.corner_edges, f); }
+  Index face_degree(Index f) const { return arrays_.face_offsets[f + 1] - arrays_.face_offsets[f]; }
+  Index face_first_corner(Index f) const { return arrays_.face_offsets[f]; }
   Index next_corner(Index c) const {
-    Index f = corner_faces_[c];
-    return c + 1 == face_offsets_[f + 1] ? face_offsets_[f] : c + 1;
+    Index f = arrays_.corner_faces[c];
+    return c + 1 == arrays_.face_offsets[f + 1] ? arrays_.face_offsets[f] : c + 1;
   }
   Index prev_corner(Index c) const {
-    Index f = corner_faces_[c];
-    return c == face_offsets_[f] ? face_offsets_[f + 1] - 1 : c - 1;
+    Index f = arrays_.corner_faces[c];
+    return c == arrays_.face_offsets[f] ? arrays_.face_offsets[f + 1] - 1 : c - 1;
   }
 
   // Corners: the flat arrays behind faces and fans (CSR by face_offsets()).
-  const Buffer<Index>& face_offsets() const { return face_offsets_; }
-  const Buffer<Index>& corner_vertices() const { return corner_vertices_; }
-  const Buffer<Index>& corner_edges() const { return corner_edges_; }
-  const Buffer<Index>& corner_faces() const { return corner_faces_; }
-  const Buffer<signed char>& corner_signs() const { return corner_signs_; }
-  Index corner_vertex(Index c) const { return corner_vertices_[c]; }
-  Index corner_edge(Index c) const { return corner_edges_[c]; }
-  Index corner_face(Index c) const { return corner_faces_[c]; }
-  int corner_sign(Index c) const { return corner_signs_[c]; }
+  const Buffer<Index>& face_offsets() const { return arrays_.face_offsets; }
+  const Buffer<Index>& corner_vertices() const { return arrays_.corner_vertices; }
+  const Buffer<Index>& corner_edges() const { return arrays_.corner_edges; }
+  const Buffer<Index>& corner_faces() const { return arrays_.corner_faces; }
+  const Buffer<signed char>& corner_signs() const { return arrays_.corner_signs; }
+  Index corner_vertex(Index c) const { return arrays_.corner_vertices[c]; }
+  Index corner_edge(Index c) const { return arrays_.corner_edges[c]; }
+  Index corner_face(Index c) const { return arrays_.corner_faces[c]; }
+  int corner_sign(Index c) const { return arrays_.corner_signs[c]; }
 
   // Edges.
-  const Buffer<Edge>& edges() const { return edges_; }
-  const Edge& edge(Index e) const { return edges_[e]; }
-  void set_sharp(Index e, bool sharp) { edges_[e].is_sharp = sharp; }
+  const Buffer<Edge>& edges() const { return arrays_.edges; }
+  const Edge& edge(Index e) const { return arrays_.edges[e]; }
+  void set_sharp(Index e, bool sharp) { arrays_.edges[e].is_sharp = sharp; }
 
   // Vertex fans: corners (one per incident face) and edges in fan order, as documented above.
   std::span<const Index> vertex_corners(Index v) const {
-    return {fan_corners_.data() + fan_corner_offsets_[v],
-            fan_corner_offsets_[v + 1] - fan_corner_offsets_[v]};
+    return {arrays_.fan_corners.data() + arrays_.fan_corner_offsets[v],
+            arrays_.fan_corner_offsets[v + 1] - arrays_.fan_corner_offsets[v]};
   }
   std::span<const Index> vertex_edges(Index v) const {
-    return {fan_edges_.data() + fan_edge_offsets_[v], fan_edge_offsets_[v + 1] - fan_edge_offsets_[v]};
+    return {arrays_.fan_edges.data() + arrays_.fan_edge_offsets[v],
+            arrays_.fan_edge_offsets[v + 1] - arrays_.fan_edge_offsets[v]};
   }
-  Index vertex_valence(Index v) const { return fan_edge_offsets_[v + 1] - fan_edge_offsets_[v]; }
+  Index vertex_valence(Index v) const {
+    return arrays_.fan_edge_offsets[v + 1] - arrays_.fan_edge_offsets[v];
+  }
   bool is_boundary_vertex(Index v) const { return vertex_edges(v).size() > vertex_corners(v).size(); }
   bool is_isolated_vertex(Index v) const { return vertex_corners(v).empty(); }
-  const Buffer<Index>& fan_corner_offsets() const { return fan_corner_offsets_; }
-  const Buffer<Index>& fan_corners() const { return fan_corners_; }
-  const Buffer<Index>& fan_edge_offsets() const { return fan_edge_offsets_; }
-  const Buffer<Index>& fan_edges() const { return fan_edges_; }
+  const Buffer<Index>& fan_corner_offsets() const { return arrays_.fan_corner_offsets; }
+  const Buffer<Index>& fan_corners() const { return arrays_.fan_corners; }
+  const Buffer<Index>& fan_edge_offsets() const { return arrays_.fan_edge_offsets; }
+  const Buffer<Index>& fan_edges() const { return arrays_.fan_edges; }
 
   // Boundary loops: loop_edges(l)[i] joins loop_vertices(l)[i] and loop_vertices(l)[i+1] (cyclically).
   std::span<const Index> loop_edges(Index l) const {
@@ -112,14 +133,14 @@ class Mesh {
   }
 
   // Connected components (isolated vertices are in none: no_index).
-  Index face_component(Index f) const { return face_components_[f]; }
+  Index face_component(Index f) const { return arrays_.face_components[f]; }
   Index vertex_component(Index v) const;
 
   // Optional attributes carried from the soup: empty when not given.
   const std::vector<std::string>& vertex_names() const { return vertex_names_; }
   const std::vector<std::string>& face_names() const { return face_names_; }
-  const std::vector<Color>& face_colors() const { return face_colors_; }
-  std::vector<Color>& face_colors() { return face_colors_; }
+  const std::vector<Color>& face_colors() const { return arrays_.face_colors; }
+  std::vector<Color>& face_colors() { return arrays_.face_colors; }
   // "v12" or the vertex's name: for messages.
   std::string vertex_label(Index v) const;
   std::string face_label(Index f) const;
@@ -139,47 +160,15 @@ class Mesh {
   void find_components();
 
   std::span<const Index> corner_span(const Buffer<Index>& a, Index f) const {
-    return {a.data() + face_offsets_[f], face_offsets_[f + 1] - face_offsets_[f]};
+    return {a.data() + arrays_.face_offsets[f], arrays_.face_offsets[f + 1] - arrays_.face_offsets[f]};
   }
 
-  Buffer<Vec3> positions_;
-  Buffer<Index> face_offsets_{0};
-  Buffer<Index> corner_vertices_;
-  Buffer<Index> corner_edges_;
-  Buffer<Index> corner_faces_;
-  Buffer<signed char> corner_signs_;
-  Buffer<Edge> edges_;
-  Buffer<Index> fan_corner_offsets_{0};
-  Buffer<Index> fan_corners_;
-  Buffer<Index> fan_edge_offsets_{0};
-  Buffer<Index> fan_edges_;
+  MeshArrays arrays_;
   std::vector<Index> loop_offsets_{0};
   std::vector<Index> loop_edges_;
   std::vector<Index> loop_vertices_;
-  Buffer<Index> face_components_;
-  Index num_components_ = 0;
   std::vector<std::string> vertex_names_;
   std::vector<std::string> face_names_;
-  std::vector<Color> face_colors_;
-};
-
-// The arrays of a mesh whose adjacency is already known (a subdivision level, an offset solid), laid out
-// as Mesh documents them. Corner faces and boundary loops are derived; components too unless given.
-struct MeshArrays {
-  Buffer<Index> corner_faces;  // written by assemble_mesh: given only as storage to reuse
-  Buffer<Vec3> positions;
-  Buffer<Index> face_offsets{0};
-  Buffer<Index> corner_vertices;
-  Buffer<Index> corner_edges;
-  Buffer<signed char> corner_signs;
-  Buffer<Edge> edges;
-  Buffer<Index> fan_corner_offsets{0};
-  Buffer<Index> fan_corners;
-  Buffer<Index> fan_edge_offsets{0};
-  Buffer<Index> fan_edges;
-  Buffer<Index> face_components;  // empty: found by a walk over faces
-  Index num_components = 0;
-  std::vector<Color> face_colors;  // empty, or one per face
 };
 
 // Assembles a mesh from arrays in O(corners), without build_mesh's search and checks: the caller
