@@ -162,9 +162,20 @@ void offset_case() {
   const Mesh torus = build_mesh(test::torus(64, 32));
   Refined r = refine(torus, 5, 1);
   const Mesh level5 = r.refinement.mesh(torus, {r.positions.begin(), r.positions.end()});
+  // Into fresh memory, as the command line does it: the time to the solid, without freeing it afterwards.
   double faces = 0;
-  const double first_ms = best_ms(1, [&] { faces = offset(level5, {0.01}).num_faces(); });
-  const double ms = best_ms(3, [&] { faces = offset(level5, {0.01}).num_faces(); });
+  auto fresh_offset_ms = [&](int runs) {
+    double best = 1e300;
+    for (int i = 0; i < runs; ++i) {
+      const double start = now_ms(Clock::cpu);
+      const Mesh solid = offset(level5, {0.01});
+      best = std::min(best, now_ms(Clock::cpu) - start);
+      faces = solid.num_faces();
+    }
+    return best;
+  };
+  const double first_ms = fresh_offset_ms(1);
+  const double ms = fresh_offset_ms(3);
   // As the viewer's pipeline rebuilds it: normals and solid into the blocks of the last ones.
   Normals normals;
   Mesh kept;
