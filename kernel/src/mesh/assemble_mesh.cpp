@@ -1,5 +1,3 @@
-#include <algorithm>
-
 #include "nome/mesh/mesh.hpp"
 
 namespace nome {
@@ -8,11 +6,7 @@ Mesh assemble_mesh(MeshArrays arrays) {
   Mesh m;
   const bool has_components = !arrays.face_components.empty();
   m.arrays_ = std::move(arrays);
-  Buffer<Index>& corner_faces = m.arrays_.corner_faces;
-  resize_for_overwrite(corner_faces, m.num_corners());
-  for (Index f = 0; f < m.num_faces(); ++f)
-    std::fill(corner_faces.begin() + m.face_first_corner(f), corner_faces.begin() + m.face_offsets()[f + 1],
-              f);
+  m.find_corner_faces();
   m.find_boundary_loops();
   if (!has_components) m.find_components();
   return m;

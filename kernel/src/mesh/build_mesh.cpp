@@ -100,10 +100,7 @@ Mesh build_mesh(PolygonSoup soup) {
   m.arrays_.face_offsets = std::move(soup.face_offsets);
   m.arrays_.corner_vertices = std::move(soup.face_vertices);
   const Index nc = m.num_corners();
-  m.arrays_.corner_faces.resize(nc);
-  for (Index f = 0; f < nf; ++f)
-    std::fill(m.arrays_.corner_faces.begin() + m.arrays_.face_offsets[f],
-              m.arrays_.corner_faces.begin() + m.arrays_.face_offsets[f + 1], f);
+  m.find_corner_faces();
 
   // phase: edges. Half-edges (corner c runs from its vertex to the next corner's) are bucketed by their
   // smaller end vertex; within a bucket a stamp array indexed by the larger end finds the partner.
@@ -250,6 +247,14 @@ Mesh build_mesh(PolygonSoup soup) {
   m.find_boundary_loops();
   m.find_components();
   return m;
+}
+
+void Mesh::find_corner_faces() {
+  Buffer<Index>& corner_faces = arrays_.corner_faces;
+  resize_for_overwrite(corner_faces, num_corners());
+  for (Index f = 0; f < num_faces(); ++f)
+    std::fill(corner_faces.begin() + face_first_corner(f), corner_faces.begin() + arrays_.face_offsets[f + 1],
+              f);
 }
 
 void Mesh::find_boundary_loops() {

@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
+#include <future>
 #include <string>
-#include <thread>
 
 #include "nome/error.hpp"
 #include "nome/mesh/face_orientation.hpp"
@@ -97,32 +96,19 @@ class OffsetBuilder {
       fans(a);
       components(a);
     };
-    std::exception_ptr helper_error;
-    std::thread helper;
+    // The future waits for the helper even when this thread throws, and passes on the helper's exception.
+    std::future<void> helper;
     if (threads > 1 && nf_ >= min_faces_per_thread)
-      helper = std::thread([&] {
-        try {
-          fans_and_components();
-        } catch (...) {
-          helper_error = std::current_exception();
-        }
-      });
-    try {
-      resize_for_overwrite(a.positions, 2 * size_t(nv_out_));
-      write_offset_positions(m_, normals, distance, a.positions);
-      faces(a.face_offsets, a.corner_vertices);
-      edges(a);
-      a.face_colors = face_colors();
-    } catch (...) {
-      if (helper.joinable()) helper.join();
-      throw;
-    }
-    if (helper.joinable()) {
-      helper.join();
-      if (helper_error) std::rethrow_exception(helper_error);
-    } else {
+      helper = std::async(std::launch::async, fans_and_components);
+    resize_for_overwrite(a.positions, 2 * size_t(nv_out_));
+    write_offset_positions(m_, normals, distance, a.positions);
+    faces(a.face_offsets, a.corner_vertices);
+    edges(a);
+    a.face_colors = face_colors();
+    if (helper.valid())
+      helper.get();
+    else
       fans_and_components();
-    }
     return assemble_mesh(std::move(a));
   }
 

@@ -155,7 +155,9 @@ class Mesh {
   MeshArrays take_arrays(Mesh&& mesh);
   friend MeshArrays take_arrays(Mesh&& mesh);
 
-  // Derived arrays shared by both builders: boundary loops from the fans, components by a walk over faces.
+  // Derived arrays shared by both builders: each corner's face from the face offsets, boundary loops from
+  // the fans, components by a walk over faces.
+  void find_corner_faces();
   void find_boundary_loops();
   void find_components();
 
