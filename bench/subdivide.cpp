@@ -144,7 +144,7 @@ void position_only(int threads_available) {
       r.refinement.num_faces(), full, fast, full / fast, fast2);
   // The same through the pipeline, as a slider drives it: a new topology rebuilds the refinement and the
   // level-4 Mesh with its adjacency; moved vertices re-run only the position pass into the cached Mesh.
-  PipelineOptions options;
+  PipelineSettings options;
   options.subdivision_levels = 4;
   const double rebuild = best_ms(5, [&] { Pipeline().run(moved, options); });
   Pipeline pipeline;

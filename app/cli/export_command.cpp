@@ -28,7 +28,7 @@ int export_command(const std::vector<std::string>& args) {
     throw UsageError("output must end in .obj, .stl or .nome, found '" + *out + "'");
   if (parsed.has("--ascii") && ext != ".stl") throw UsageError("--ascii applies to .stl output only");
   std::vector<scene::Scene> scenes;
-  const Mesh mesh = load_input(parsed, Stage::offset, &scenes);
+  const Mesh mesh = load_input(parsed, Stage::subdivided_offset, &scenes);
   if (ext == ".nome") {
     if (scenes.size() != 1 || parsed.positionals().size() != 1)
       throw UsageError("-o OUT.nome saves one scene: give exactly one .nome, .nom or .slf file");

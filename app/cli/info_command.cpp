@@ -19,7 +19,7 @@ int info_command(const std::vector<std::string>& args) {
     return 0;
   }
   std::vector<scene::Scene> scenes;
-  const Mesh mesh = load_input(parsed, Stage::offset, &scenes);
+  const Mesh mesh = load_input(parsed, Stage::subdivided_offset, &scenes);
   const TopologyReport report = topology_report(mesh);
   if (parsed.has("--json")) {
     std::string json = report_json(report);

@@ -1,29 +1,26 @@
 #include "cli/input.hpp"
 
-#include "cli/merge_option.hpp"
-#include "cli/pipeline_options.hpp"
+#include <iostream>
+
+#include "cli/pipeline_arguments.hpp"
 #include "cli/scene_input.hpp"
 #include "nome/error.hpp"
+#include "nome/ops/pipeline.hpp"
 
 namespace nome::cli {
 namespace {
 
-// build_mesh on all files together; a topology error names the file at fault, with element numbers of
-// that file alone: the parts are rebuilt one by one (only on this error path) to find it.
-Mesh build_naming_the_file(PolygonSoup soup, std::vector<PolygonSoup>& parts,
-                           const std::vector<std::string>& files) {
-  try {
-    return build_mesh(std::move(soup));
-  } catch (const TopologyError&) {
-    for (size_t i = 0; i < parts.size(); ++i) {
-      try {
-        build_mesh(std::move(parts[i]));
-      } catch (const TopologyError& in_part) {
-        throw TopologyError(files[i] + ": " + in_part.what());
-      }
-    }
-    throw;
+// Merge warnings can be many (one per skipped pair): the first few, then a count.
+void print_warnings(const std::vector<std::string>& warnings) {
+  constexpr size_t max_merge_warnings = 10;
+  size_t merge_warnings = 0;
+  for (const std::string& w : warnings) {
+    const bool is_merge = w.rfind("merge: ", 0) == 0;
+    if (is_merge && ++merge_warnings > max_merge_warnings) continue;
+    std::cerr << "nome: warning: " << w << "\n";
   }
+  if (merge_warnings > max_merge_warnings)
+    std::cerr << "nome: warning: merge: " << merge_warnings - max_merge_warnings << " more merges skipped\n";
 }
 
 }  // namespace
@@ -32,38 +29,30 @@ std::vector<OptionSpec> input_options() {
   std::vector<OptionSpec> options = {
       {"--set", "", "BANK_PARAM=VALUE", "override a slider of a scene (repeatable)", true},
       {"--quads", "", "", "pair the triangles of .sif files into quads where convex and nearly planar"}};
-  for (OptionSpec& o : merge_options()) options.push_back(std::move(o));
   for (OptionSpec& o : pipeline_option_specs()) options.push_back(std::move(o));
   return options;
 }
 
-Mesh load_input(const Arguments& args) {
-  return load_input(args, Stage::offset);
-}
-
-Stage parse_stage(const std::string& name) {
-  if (name == "scene") return Stage::scene;
-  if (name == "merged") return Stage::merged;
-  if (name == "subdivided") return Stage::subdivided;
-  if (name == "offset") return Stage::offset;
-  throw UsageError("--stage expects scene, merged, subdivided or offset, found '" + name + "'");
-}
-
-Mesh load_input(const Arguments& args, Stage last) {
-  return load_input(args, last, nullptr);
+Stage stage_argument(const std::string& name) {
+  if (const auto stage = parse_stage(name)) return *stage;
+  throw UsageError("--stage expects scene, merged, subdivided, offset or subdivided-offset, found '" + name +
+                   "'");
 }
 
 Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
   InputFiles input = read_input_files(args);
-  PolygonSoup soup;
-  for (const PolygonSoup& part : input.parts) append_part(soup, part);
-  Mesh mesh = build_naming_the_file(std::move(soup), input.parts, input.part_files);
+  const PipelineSettings settings = pipeline_settings(args, last);
+  Pipeline pipeline;
+  pipeline.set_input(std::move(input.geometry));
+  try {
+    pipeline.run(settings);
+  } catch (const BudgetError& e) {
+    throw BudgetError(std::string(e.what()) + "; use --force to compute it anyway");
+  }
+  print_warnings(pipeline.warnings());
   if (scenes) *scenes = std::move(input.scenes);
-  if (last == Stage::scene) return mesh;
-  mesh = apply_merge_option(std::move(mesh), args);
-  if (last == Stage::merged) return mesh;
-  return run_pipeline(mesh, args, last == Stage::offset);
+  return pipeline.take_result();
 }
 
 }  // namespace nome::cli

@@ -1,10 +1,10 @@
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "cli/arguments.hpp"
 #include "nome/mesh/mesh.hpp"
+#include "nome/ops/stage.hpp"
 #include "nome/scene/scene.hpp"
 
 namespace nome::cli {
@@ -12,17 +12,12 @@ namespace nome::cli {
 // The options every command that reads geometry shares (DESIGN.md, "The command line").
 std::vector<OptionSpec> input_options();
 
-// The pipeline's stages in order (DESIGN.md); `nome render --stage` shows an earlier one than the last.
-enum class Stage { scene, merged, subdivided, offset };
+// Parses a --stage value (UsageError for an unknown one).
+Stage stage_argument(const std::string& name);
 
-// Parses a --stage value; refuses (UsageError) a stage whose kernel feature has not landed yet.
-Stage parse_stage(const std::string& name);
-
-// Reads the FILE arguments (several become parts of one mesh) and runs the pipeline the options ask for.
-Mesh load_input(const Arguments& args);
-// The same, stopping after `last` (the stages the options do not ask for pass the mesh through).
-Mesh load_input(const Arguments& args, Stage last);
-// The same, handing back the scenes read (.nome, .slf) through `scenes`.
-Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes);
+// Reads the FILE arguments (several become parts of one mesh) and runs the kernel's pipeline up to
+// `last` with the options' settings; the scenes read (.nome, .slf) come back through `scenes`.
+Mesh load_input(const Arguments& args, Stage last = Stage::subdivided_offset,
+                std::vector<scene::Scene>* scenes = nullptr);
 
 }  // namespace nome::cli

@@ -89,7 +89,8 @@ int render_command(const std::vector<std::string>& args) {
       {"--fit", "", "", "frame the whole scene in each view (the default)"},
       {"--target", "", "X,Y,Z", "look at this point instead of the scene's centre"},
       {"--distance", "", "D", "eye distance from the target instead of the fitted one"},
-      {"--stage", "", "STAGE", "show the pipeline after scene|merged|subdivided|offset (default: all of it)"},
+      {"--stage", "", "STAGE",
+       "show the pipeline up to scene|merged|subdivided|offset|subdivided-offset (default: all of it)"},
       {"--wire", "", "", "draw the real polygon edges over the faces"},
       {"--flat", "", "", "flat shading (one normal per face)"},
       {"--mobius-edges", "", "", "highlight the Möbius edges (where the faces' orientations disagree)"},
@@ -127,7 +128,8 @@ int render_command(const std::vector<std::string>& args) {
       throw UsageError(std::string("--backend: ") + e.what());
     }
   }
-  const Stage stage = parsed.has("--stage") ? parse_stage(*parsed.value("--stage")) : Stage::offset;
+  const Stage stage =
+      parsed.has("--stage") ? stage_argument(*parsed.value("--stage")) : Stage::subdivided_offset;
   const bool verbose = parsed.has("--verbose");
 
   using Clock = std::chrono::steady_clock;

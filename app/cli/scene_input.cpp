@@ -10,35 +10,6 @@
 
 namespace nome::cli {
 
-void append_part(PolygonSoup& into, const PolygonSoup& part) {
-  const Index base = into.num_vertices();
-  const bool names = !into.vertex_names.empty() || !part.vertex_names.empty();
-  const bool face_names = !into.face_names.empty() || !part.face_names.empty();
-  const bool colors = !into.face_colors.empty() || !part.face_colors.empty();
-  if (names) into.vertex_names.resize(into.positions.size());
-  if (face_names) into.face_names.resize(into.num_faces());
-  if (colors) into.face_colors.resize(into.num_faces(), Color(0.75f));
-  into.positions.insert(into.positions.end(), part.positions.begin(), part.positions.end());
-  if (names) {
-    into.vertex_names.insert(into.vertex_names.end(), part.vertex_names.begin(), part.vertex_names.end());
-    into.vertex_names.resize(into.positions.size());
-  }
-  for (Index f = 0; f < part.num_faces(); ++f) {
-    for (Index c = part.face_offsets[f]; c < part.face_offsets[f + 1]; ++c)
-      into.face_vertices.push_back(part.face_vertices[c] + base);
-    into.face_offsets.push_back(Index(into.face_vertices.size()));
-  }
-  if (face_names) {
-    into.face_names.insert(into.face_names.end(), part.face_names.begin(), part.face_names.end());
-    into.face_names.resize(into.num_faces());
-  }
-  if (colors) {
-    into.face_colors.insert(into.face_colors.end(), part.face_colors.begin(), part.face_colors.end());
-    into.face_colors.resize(into.num_faces(), Color(0.75f));
-  }
-  for (auto [a, b] : part.sharp_edges) into.sharp_edges.emplace_back(a + base, b + base);
-}
-
 void apply_overrides(std::vector<scene::Scene>& scenes, const std::vector<std::string>& overrides) {
   for (const std::string& o : overrides) {
     const size_t eq = o.find('=');
@@ -93,14 +64,12 @@ InputFiles read_input_files(const Arguments& args) {
   for (const scene::Scene& s : input.scenes)
     for (const scene::Diagnostic& w : s.warnings()) std::cerr << "nome: " << w.to_string() << "\n";
   apply_overrides(input.scenes, args.values("--set"));
-  for (size_t i = 0; i < input.scenes.size(); ++i) {
-    input.parts.push_back(input.scenes[i].combined_soup());
-    input.part_files.push_back(input.scenes[i].file());
-  }
-  for (auto& [file, soup] : flat) {
-    input.parts.push_back(std::move(soup));
-    input.part_files.push_back(file);
-  }
+  auto add_part = [&](const PolygonSoup& soup, const std::string& file) {
+    append_soup(input.geometry.soup, soup);
+    input.geometry.parts.push_back({file, soup.num_faces()});
+  };
+  for (const scene::Scene& s : input.scenes) add_part(s.combined_soup(), s.file());
+  for (const auto& [file, soup] : flat) add_part(soup, file);
   return input;
 }
 

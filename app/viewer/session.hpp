@@ -6,24 +6,15 @@
 #include <span>
 #include <string>
 
-#include "nome/edit/document.hpp"
-#include "nome/mesh/polygon_soup.hpp"
+#include "nome/edit/scene_document.hpp"
 #include "nome/ops/zipper.hpp"
-#include "nome/scene/scene.hpp"
 
 namespace nome::viewer {
 
-// Which faces of scene_soup() are what: the scene's first, then the consolidated, then the temporary.
-struct FaceParts {
-  Index scene = 0;
-  Index consolidated = 0;
-  Index temporary = 0;
-};
-
-// The file open in a window (DESIGN.md "App": the document side): its geometry and the editing Document
-// over it (temporary and consolidated faces, deletions, undo), and whether there are unsaved changes.
-// Edits name vertices and faces as the displayed mesh does (hierarchical names; `v12`, `f3` for flat files).
-// A scene file also has sliders, and saves as .nome with its slider values and edits.
+// The file open in a window: the kernel's SceneDocument (the scene or flat geometry and its edits) plus
+// what only a window needs: the path, whether there are unsaved changes, and the pipeline input of the
+// current state. Edits arrive as the displayed mesh's element ids and go to the document by name
+// (hierarchical names; `v12`, `f3` for flat files).
 class Session {
  public:
   // Reads a scene (.nome .nom .slf) or flat geometry (.obj .stl .sif). Throws nome::Error (a SceneError
@@ -35,18 +26,19 @@ class Session {
 
   const std::filesystem::path& path() const { return path_; }
   // What the scene stage shows: the scene without its deleted faces, then the consolidated and the
-  // temporary faces (face_parts() says which).
-  const PolygonSoup& scene_soup() const { return soup_; }
+  // temporary faces (face_parts() says how many of each).
+  const PipelineInput& pipeline_input() const { return input_; }
+  const PolygonSoup& scene_soup() const { return input_.soup; }
   const FaceParts& face_parts() const { return parts_; }
-  // Changes whenever scene_soup() does.
+  // Changes whenever pipeline_input() does.
   std::uint64_t version() const { return version_; }
   // Unsaved changes (edits since the last save or load).
   bool is_modified() const { return is_modified_; }
   // How many edits (undo and redo included) have been accepted since the session began.
   std::uint64_t accepted_edits() const { return accepted_edits_; }
-  const Document& document() const { return document_; }
+  const Document& document() const { return document_.edits(); }
   // The scene of a scene file; none for flat geometry (no sliders, no .nome saving).
-  const scene::Scene* scene() const { return scene_ ? &*scene_ : nullptr; }
+  const scene::Scene* scene() const { return document_.scene(); }
 
   // Moves a slider and re-evaluates what reads it. Throws InvalidInputError outside the slider's range
   // or for an unknown name (naming close ones), SceneError when the scene cannot be evaluated with the
@@ -55,10 +47,11 @@ class Session {
   void set_parameter(const std::string& name, double value);
 
   // Saves the scene with its slider values and the consolidated faces and deletions as .nome
-  // (atomically); the saved file becomes the session's file. Temporary faces are not saved.
-  void save(const std::filesystem::path& path);
+  // (atomically); the saved file becomes the session's file. Temporary faces are not saved, nor edits
+  // whose vertices are gone at the current slider values: those are returned (they stay in the session).
+  std::vector<std::string> save(const std::filesystem::path& path);
   // The scene as save() writes it. Throws InvalidInputError for flat geometry.
-  scene::Scene saved_scene() const;
+  scene::Scene saved_scene() const { return document_.scene_for_saving(); }
 
   // Edits of report 7.3.3, on vertices and faces of `displayed` (the scene or merged stage). Each returns
   // what happened; a refused edit changes nothing.
@@ -81,12 +74,11 @@ class Session {
 
  private:
   EditOutcome changed(EditOutcome outcome);
-  void update_soup();
+  void update_input();
 
   std::filesystem::path path_;
-  std::optional<scene::Scene> scene_;
-  Document document_;
-  PolygonSoup soup_;
+  SceneDocument document_;
+  PipelineInput input_;
   FaceParts parts_;
   std::uint64_t version_ = 0;
   bool is_modified_ = false;

@@ -4,70 +4,35 @@
 #include <chrono>
 #include <thread>
 
-#include "nome/ops/merge.hpp"
-
 namespace nome::viewer {
 
-const char* to_string(Stage stage) {
-  switch (stage) {
-    case Stage::scene:
-      return "scene";
-    case Stage::merged:
-      return "merged";
-    case Stage::subdivided:
-      return "subdivided";
-    case Stage::offset:
-      return "offset";
-    case Stage::subdivided_offset:
-      return "subdivided offset";
-  }
-  return "scene";
+PipelineSettings initial_settings() {
+  PipelineSettings s;
+  s.stage = Stage::scene;
+  s.merge = true;
+  s.subdivision_levels = 2;
+  s.offset_distance = 0.05;
+  s.subdivision_after = 1;
+  s.threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  return s;
 }
 
-bool is_editable(Stage stage) {
-  return stage == Stage::scene || stage == Stage::merged;
-}
-
-namespace {
-
-PipelineOptions pipeline_options(const StageSettings& s) {
-  PipelineOptions o;
-  o.subdivision_levels = s.subdivision_levels;
-  o.rule = s.rule;
-  o.offset_distance =
-      s.stage == Stage::offset || s.stage == Stage::subdivided_offset ? s.offset_distance : 0.0;
-  o.subdivision_after = s.stage == Stage::subdivided_offset ? s.subdivision_after : 0;
-  o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
-  return o;
-}
-
-}  // namespace
-
-std::optional<StageResult> StagePipeline::run(const PolygonSoup& scene, const StageSettings& settings,
+std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const PipelineSettings& settings,
                                               std::stop_token stop) {
   std::lock_guard lock(mutex_);
   if (stop.stop_requested()) return std::nullopt;
   const auto start = std::chrono::steady_clock::now();
   StageResult result;
   result.stage = settings.stage;
-  Mesh mesh = build_mesh(scene);
-  if (settings.stage == Stage::merged || (!is_editable(settings.stage) && settings.subdivide_merged)) {
-    MergeOptions options;
-    options.tolerance = settings.merge_tolerance;
-    MergeResult merged = merge_boundaries(mesh, options);
-    for (const SkippedMerge& skip : merged.skipped) result.warnings.push_back("merge: " + skip.message);
-    // Told once, where the merge is what the user asked to see (not again at each later stage's run).
-    if (settings.stage == Stage::merged)
-      result.notes.push_back("merged " + std::to_string(merged.glued_edges) + " edge pairs (tolerance " +
-                             std::to_string(merged.tolerance) + ")");
-    mesh = std::move(merged.mesh);
-  }
-  if (stop.stop_requested()) return std::nullopt;
-  if (!is_editable(settings.stage)) {
-    // The window keeps the result while the pipeline's caches change in the next run: a copy.
-    mesh = pipeline_.run(mesh, pipeline_options(settings));
-    for (const std::string& w : pipeline_.warnings()) result.warnings.push_back(w);
-  }
+  pipeline_.set_input(input);
+  // The window keeps the result while the pipeline's caches change in the next run: a copy.
+  Mesh mesh = pipeline_.run(settings);
+  result.warnings = pipeline_.warnings();
+  // Told once, where the merge is what the user asked to see (not again at each later stage's run).
+  if (settings.stage == Stage::merged && pipeline_.work(Stage::merged) != StageWork::cached)
+    result.notes.push_back("merged " + std::to_string(pipeline_.merge_summary().glued_edges) +
+                           " edge pairs (tolerance " + std::to_string(pipeline_.merge_summary().tolerance) +
+                           ")");
   if (stop.stop_requested()) return std::nullopt;
   result.display = render::build_display_data(mesh);
   result.borders = std::make_shared<const BorderLookup>(mesh);

@@ -7,36 +7,17 @@
 #include <string>
 #include <vector>
 
+#include "nome/edit/scene_document.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "render/mesh_display_data.hpp"
-#include "viewer/session.hpp"
 
 namespace nome::viewer {
 
-// The stage the window shows (report 7.2's operations; DESIGN.md's data flow).
-enum class Stage { scene, merged, subdivided, offset, subdivided_offset };
-
-const char* to_string(Stage stage);
-
-// Edits name the scene's vertices and faces, which only the scene and merged stages show: the later
-// stages are computed from them (pick there to look, switch back to edit).
-bool is_editable(Stage stage);
-
-// The control panel's pipeline settings: which stage the window shows and how it is made.
-struct StageSettings {
-  Stage stage = Stage::scene;
-  double merge_tolerance = 0.0;  // 0: relative to the size of the scene (MergeOptions)
-  bool subdivide_merged = true;  // the later stages start from the merged mesh, else from the scene's
-  int subdivision_levels = 2;    // 0-6, before the offset
-  SubdivisionRule rule = SubdivisionRule::classic;
-  double offset_distance = 0.05;
-  int subdivision_after = 1;  // levels after the offset, for the subdivided offset stage
-
-  bool operator==(const StageSettings&) const = default;
-};
+// The control panel's first settings: the scene on screen, and what the later stages would make of it.
+PipelineSettings initial_settings();
 
 // Everything a frame needs of a new displayed mesh, computed off the UI thread: the mesh, its GPU-ready
 // arrays, its borders and its topology report. Only the upload to GL is left to the UI thread, and the
@@ -49,18 +30,17 @@ struct StageResult {
   TopologyReport topology;
   std::vector<std::string> warnings;
   std::vector<std::string> notes;  // what the stages did, for the log
-  FaceParts parts;                 // of the scene soup it was made from (faces keep their order)
+  FaceParts parts;                 // of the input it was made from (faces keep their order)
   double seconds = 0.0;
 };
 
-// Turns the scene's polygons into the displayed stage. Safe to call from background jobs: runs are
-// serialised, and a run whose stop was requested before it began, or between two stages, gives up and
-// returns none. The kernel Pipeline's caches outlive a run: a slider that only moves vertices re-runs
-// the subdivision and offset position passes over the cached topology.
+// The kernel's Pipeline behind the window's background jobs: runs are serialised, and a run whose stop
+// was requested before it began, or before its display data, gives up and returns none. The pipeline's
+// caches outlive a run: a slider that only moves vertices builds no mesh.
 class StagePipeline {
  public:
   // Throws the kernel's errors (TopologyError naming the elements, BudgetError).
-  std::optional<StageResult> run(const PolygonSoup& scene, const StageSettings& settings,
+  std::optional<StageResult> run(const PipelineInput& input, const PipelineSettings& settings,
                                  std::stop_token stop);
 
  private:

@@ -231,8 +231,14 @@ void Window::save(const std::optional<std::filesystem::path>& path) {
 
 void Window::save_session(const std::filesystem::path& target) {
   const std::filesystem::path previous = session_->path();
-  session_->save(target);
+  const std::vector<std::string> left_out = session_->save(target);
   if (previous != target) autosave_.discard(previous);  // its changes went to the new file
+  if (!left_out.empty()) {
+    std::string names;
+    for (const std::string& name : left_out) names += (names.empty() ? "" : ", ") + name;
+    log_.warning("not saved, kept in this session: " + std::to_string(left_out.size()) +
+                 " edits whose vertices or faces are gone at the current slider values (" + names + ")");
+  }
 }
 
 void Window::set_slider(Index parameter, double value) {
@@ -345,9 +351,9 @@ void Window::update_stage() {
     requested_version_ = session_->version();
     requested_settings_ = settings_;
     has_request_ = true;
-    job_.submit([this, soup = session_->scene_soup(), parts = session_->face_parts(),
+    job_.submit([this, input = session_->pipeline_input(), parts = session_->face_parts(),
                  settings = settings_](std::stop_token stop) {
-      auto result = pipeline_.run(soup, settings, stop);
+      auto result = pipeline_.run(input, settings, stop);
       if (result) result->parts = parts;
       return result;
     });

@@ -155,11 +155,11 @@ class Window {
   render::DisplaySettings display_;
 
   // The displayed stage: computed by jobs off the UI thread, shown when the latest one finishes.
-  StageSettings settings_;
+  PipelineSettings settings_ = initial_settings();
   StagePipeline pipeline_;
   BackgroundJob<std::optional<StageResult>> job_;
   std::uint64_t requested_version_ = 0;
-  StageSettings requested_settings_;
+  PipelineSettings requested_settings_;
   bool has_request_ = false;
   std::optional<StageResult> shown_;
   double shown_time_ = 0.0;  // when shown_ came (glfwGetTime)

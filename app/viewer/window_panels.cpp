@@ -146,7 +146,7 @@ void Window::draw_control_panel() {
     if (ImGui::InputFloat("tolerance", &tolerance, 0.0f, 0.0f, "%.5f", ImGuiInputTextFlags_EnterReturnsTrue))
       settings_.merge_tolerance = std::max(0.0f, tolerance);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: a thousandth of the scene's size");
-    ImGui::Checkbox("subdivide the merged mesh", &settings_.subdivide_merged);
+    ImGui::Checkbox("subdivide the merged mesh", &settings_.merge);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("off: the scene's pieces are subdivided each on its own");
     ImGui::SetNextItemWidth(120);
     ImGui::SliderInt("subdivision", &settings_.subdivision_levels, 0, 6);

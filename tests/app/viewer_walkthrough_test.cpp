@@ -4,9 +4,9 @@
 #include <limits>
 
 #include "app/viewer_support.hpp"
-#include "nome/edit/glue_faces.hpp"
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
+#include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "viewer/session.hpp"
@@ -197,9 +197,9 @@ TEST_CASE(
   // click lands on a vertex of the mesh on screen at that moment.
   viewer::Session session = viewer::Session::open(file);
   viewer::StagePipeline pipeline;
-  viewer::StageSettings merged;
-  merged.stage = viewer::Stage::merged;
-  auto shown = [&] { return *pipeline.run(session.scene_soup(), merged, std::stop_token{}); };
+  PipelineSettings merged = viewer::initial_settings();
+  merged.stage = Stage::merged;
+  auto shown = [&] { return *pipeline.run(session.pipeline_input(), merged, std::stop_token{}); };
   // The report's chain of rims: t1 up into t2, across t3, down t4 into the outer t5, whose lower rim
   // turns in to meet t1's (the inverted sock). A rim is named by a vertex of it and its loop's centre.
   const viewer::StageResult start = shown();
@@ -292,12 +292,12 @@ TEST_CASE(
   }
   script += "mode vertex\n";
   viewer::StagePipeline pipeline;
-  const viewer::StageSettings scene_stage;
+  const PipelineSettings scene_stage = viewer::initial_settings();
   std::vector<std::pair<double, double>> views;
   for (const double elevation : {-35.0, 35.0, 0.0})
     for (double azimuth = 0; azimuth < 360; azimuth += 30) views.emplace_back(azimuth, elevation);
   for (const auto& face : polygons) {
-    const auto now = pipeline.run(session.scene_soup(), scene_stage, std::stop_token{});
+    const auto now = pipeline.run(session.pipeline_input(), scene_stage, std::stop_token{});
     const auto& names = now->mesh->vertex_names();
     // A view where every corner is clickable (a corner may have copies in earlier temporary faces: any
     // copy carries the name the polygon is made of).

@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "nome/edit/scene_document.hpp"
+#include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
 #include "nome/scene/save_nome.hpp"
@@ -40,7 +41,7 @@ const std::vector<std::vector<std::string>> corner = {{"fun3_hc3", "fun2_hc5", "
 void close_corner(SceneDocument& doc) {
   for (const auto& face : corner) {
     std::vector<std::string> full;
-    for (const std::string& name : face) full.push_back(doc.scene().resolve_vertex_name(name));
+    for (const std::string& name : face) full.push_back(doc.scene()->resolve_vertex_name(name));
     const EditOutcome added = doc.edits().add_polygon(full);
     INFO(added.message);
     REQUIRE(added.applied);
@@ -73,9 +74,9 @@ TEST_CASE("funnel_cube_consolidated.nome: its top-level instances merge into one
 
 TEST_CASE("the report's corner polygons, accepted and merged, join three funnels into one surface",
           "[scene]") {
-  SceneDocument doc(scene::Scene::from_text(funnel_cube, "cube.nome"));
+  SceneDocument doc = SceneDocument::from_scene(scene::Scene::from_text(funnel_cube, "cube.nome"));
   close_corner(doc);
-  const MergeResult merged = merge_meshes(doc.edits().parts());
+  const MergeResult merged = merge_boundaries(glue_faces(doc.pipeline_input().soup).mesh);
   CHECK(merged.skipped.empty());
   const TopologyReport r = topology_report(merged.mesh);
   CHECK(r.components.size() == 4);  // the corner's three funnels as one, the other three apart
@@ -85,15 +86,17 @@ TEST_CASE("the report's corner polygons, accepted and merged, join three funnels
 }
 
 TEST_CASE("the consolidated mesh is saved into the scene and read back", "[scene]") {
-  SceneDocument doc(scene::Scene::from_text(funnel_cube, "cube.nome"));
+  SceneDocument doc = SceneDocument::from_scene(scene::Scene::from_text(funnel_cube, "cube.nome"));
   close_corner(doc);
   REQUIRE(doc.edits().delete_faces({doc.edits().scene_geometry().face_names[0]}).applied);
   const std::string text = scene::to_nome_text(doc.scene_for_saving());
-  const SceneDocument reread(scene::Scene::from_text(text, "saved.nome"));
+  const SceneDocument reread = SceneDocument::from_scene(scene::Scene::from_text(text, "saved.nome"));
   CHECK(reread.edits().consolidated_faces().size() == 4);
   CHECK(reread.edits().deleted_faces() == doc.edits().deleted_faces());
-  const TopologyReport before = topology_report(merge_meshes(doc.edits().parts()).mesh);
-  const TopologyReport after = topology_report(merge_meshes(reread.edits().parts()).mesh);
+  const TopologyReport before =
+      topology_report(merge_boundaries(glue_faces(doc.pipeline_input().soup).mesh).mesh);
+  const TopologyReport after =
+      topology_report(merge_boundaries(glue_faces(reread.pipeline_input().soup).mesh).mesh);
   CHECK(after.vertices == before.vertices);
   CHECK(after.edges == before.edges);
   CHECK(after.faces == before.faces);
@@ -101,9 +104,9 @@ TEST_CASE("the consolidated mesh is saved into the scene and read back", "[scene
 }
 
 TEST_CASE("lowering a slider hides the edits on vanished vertices, raising it brings them back", "[scene]") {
-  SceneDocument doc(scene::Scene::from_text(funnel_cube, "cube.nome"));
+  SceneDocument doc = SceneDocument::from_scene(scene::Scene::from_text(funnel_cube, "cube.nome"));
   close_corner(doc);
-  const auto n = doc.scene().find_parameter("fp_n");
+  const auto n = doc.scene()->find_parameter("fp_n");
   REQUIRE(n);
   doc.set_parameter(*n, 5);  // hc5 and hc6 are gone
   const std::vector<UnresolvedEdit> gone = doc.edits().unresolved();
@@ -115,5 +118,5 @@ TEST_CASE("lowering a slider hides the edits on vanished vertices, raising it br
 
   doc.set_parameter(*n, 8);
   CHECK(doc.edits().unresolved().empty());
-  CHECK(doc.edits().consolidated_mesh().mesh.num_faces() == 4);
+  CHECK(glue_faces(doc.edits().consolidated_soup()).mesh.num_faces() == 4);
 }

@@ -257,7 +257,7 @@ std::vector<UnresolvedEdit> Document::unresolved() const {
   return out;
 }
 
-GluedFaces Document::scene_mesh() const {
+PolygonSoup Document::scene_soup() const {
   const std::unordered_set<std::string> deleted(deleted_.begin(), deleted_.end());
   PolygonSoup soup;
   soup.positions = scene_.positions;
@@ -270,10 +270,10 @@ GluedFaces Document::scene_mesh() const {
     if (!scene_.face_names.empty()) soup.face_names.push_back(scene_.face_names[f]);
     if (!scene_.face_colors.empty()) soup.face_colors.push_back(scene_.face_colors[f]);
   }
-  return glue_faces(soup);
+  return soup;
 }
 
-GluedFaces Document::edited_mesh(const std::vector<EditedFace>& faces) const {
+PolygonSoup Document::edited_soup(const std::vector<EditedFace>& faces) const {
   PolygonSoup soup;
   std::unordered_map<Index, Index> local;
   for (const EditedFace& face : faces) {
@@ -291,22 +291,27 @@ GluedFaces Document::edited_mesh(const std::vector<EditedFace>& faces) const {
     soup.add_face(ids);
     soup.face_names.push_back(face.name);
   }
-  return glue_faces(soup);
+  return soup;
 }
 
-GluedFaces Document::consolidated_mesh() const {
-  return edited_mesh(consolidated_);
+PolygonSoup Document::consolidated_soup() const {
+  return edited_soup(consolidated_);
 }
 
-GluedFaces Document::temporary_mesh() const {
-  return edited_mesh(temporary_);
+PolygonSoup Document::temporary_soup() const {
+  return edited_soup(temporary_);
 }
 
-std::vector<Mesh> Document::parts() const {
-  std::vector<Mesh> out;
-  for (GluedFaces glued : {scene_mesh(), consolidated_mesh(), temporary_mesh()})
-    if (glued.mesh.num_faces() > 0) out.push_back(std::move(glued.mesh));
-  return out;
+PipelineInput Document::pipeline_input() const {
+  PipelineInput input;
+  input.joining = Joining::across_edges;
+  const std::pair<const char*, PolygonSoup> parts[] = {
+      {"scene", scene_soup()}, {"consolidated", consolidated_soup()}, {"temporary", temporary_soup()}};
+  for (const auto& [name, soup] : parts) {
+    append_soup(input.soup, soup);
+    input.parts.push_back({name, soup.num_faces()});
+  }
+  return input;
 }
 
 }  // namespace nome

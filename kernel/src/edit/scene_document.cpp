@@ -2,24 +2,102 @@
 
 #include <algorithm>
 
+#include "nome/error.hpp"
+#include "nome/scene/save_nome.hpp"
+
 namespace nome {
 
-SceneDocument::SceneDocument(scene::Scene scene) : scene_(std::move(scene)) {
-  const std::vector<std::vector<std::string>> consolidated = scene_.consolidated_faces();
-  std::vector<std::string> deleted = scene_.deleted_faces();
-  scene_.set_consolidated_faces({});
-  scene_.set_deleted_faces({});
-  document_.set_scene_geometry(scene_.combined_soup());
+SceneDocument SceneDocument::from_scene(scene::Scene scene) {
+  SceneDocument doc;
+  doc.set_scene(std::move(scene));
+  return doc;
+}
+
+SceneDocument SceneDocument::from_polygons(PolygonSoup soup) {
+  if (soup.vertex_names.empty())
+    for (Index v = 0; v < soup.num_vertices(); ++v) soup.vertex_names.push_back("v" + std::to_string(v + 1));
+  if (soup.face_names.empty())
+    for (Index f = 0; f < soup.num_faces(); ++f) soup.face_names.push_back("f" + std::to_string(f + 1));
+  SceneDocument doc;
+  doc.document_ = Document(std::move(soup));
+  return doc;
+}
+
+void SceneDocument::set_scene(scene::Scene scene) {
+  // Edits name vertices by their full hierarchical names; a file may give any unique suffix.
+  std::vector<std::vector<std::string>> consolidated = scene.consolidated_faces();
+  for (std::vector<std::string>& face : consolidated)
+    for (std::string& name : face) name = scene.resolve_vertex_name(name);
+  std::vector<std::string> deleted = scene.deleted_faces();
+  scene.set_consolidated_faces({});
+  scene.set_deleted_faces({});
+  scene_.emplace(std::move(scene));
+  document_.set_scene_geometry(scene_->combined_soup());
   document_.load_edits(consolidated, std::move(deleted));
 }
 
 std::vector<Index> SceneDocument::set_parameter(Index parameter, double value) {
-  std::vector<Index> changed = scene_.set_parameter(parameter, value);
-  document_.set_scene_geometry(scene_.combined_soup());
+  if (!scene_) throw InvalidInputError("set: flat geometry has no sliders");
+  std::vector<Index> changed = scene_->set_parameter(parameter, value);
+  document_.set_scene_geometry(scene_->combined_soup());
   return changed;
 }
 
+std::vector<Index> SceneDocument::set_parameter(const std::string& name, double value) {
+  if (!scene_) throw InvalidInputError("set: flat geometry has no sliders");
+  const auto id = scene_->find_parameter(name);
+  if (!id) {
+    std::vector<std::string> known;
+    for (const scene::Parameter& p : scene_->parameters()) known.push_back(p.full_name);
+    throw InvalidInputError("set: no slider '" + name + "'" + scene::did_you_mean(name, known));
+  }
+  return set_parameter(*id, value);
+}
+
+void SceneDocument::apply_anom(std::string_view text, const std::string& file) {
+  if (!scene_)
+    throw InvalidInputError(file + ": an .anom file applies to an open scene: open its .nome first");
+  // The .anom's working mesh replaces the consolidated faces; the deletions stay.
+  scene::Scene next = *scene_;
+  next.apply_anom(text, file);
+  std::vector<std::string> deleted = document_.deleted_faces();
+  set_scene(std::move(next));
+  std::vector<std::vector<std::string>> consolidated;
+  for (const EditedFace& face : document_.consolidated_faces()) consolidated.push_back(face.vertices);
+  document_.load_edits(consolidated, std::move(deleted));
+}
+
+void SceneDocument::reload(scene::Scene fresh) {
+  if (scene_) {
+    // The user's slider values survive an edit of the text (where the slider is still there and in range).
+    for (const scene::Parameter& p : scene_->parameters()) {
+      const auto id = fresh.find_parameter(p.full_name);
+      if (!id) continue;
+      const scene::Parameter& q = fresh.parameters()[*id];
+      if (p.value != q.value && p.value >= q.min && p.value <= q.max) fresh.set_parameter(*id, p.value);
+    }
+  }
+  // The file's own edits are those the document holds already.
+  fresh.set_consolidated_faces({});
+  fresh.set_deleted_faces({});
+  scene_.emplace(std::move(fresh));
+  document_.set_scene_geometry(scene_->combined_soup());
+}
+
+void SceneDocument::reload(PolygonSoup polygons) {
+  document_.set_scene_geometry(from_polygons(std::move(polygons)).document_.scene_geometry());
+}
+
+FaceParts SceneDocument::face_parts(const PipelineInput& input) const {
+  FaceParts parts;
+  Index* counts[] = {&parts.scene, &parts.consolidated, &parts.temporary};
+  for (size_t i = 0; i < input.parts.size() && i < 3; ++i) *counts[i] = input.parts[i].faces;
+  return parts;
+}
+
 scene::Scene SceneDocument::scene_for_saving(std::vector<std::string>* left_out) const {
+  if (!scene_)
+    throw InvalidInputError("save: only scene files are saved as .nome (export writes .obj and .stl)");
   std::vector<std::string> unresolved, skipped;
   for (const UnresolvedEdit& edit : document_.unresolved()) unresolved.push_back(edit.face);
   auto keep = [&](const std::string& name) {
@@ -35,10 +113,16 @@ scene::Scene SceneDocument::scene_for_saving(std::vector<std::string>* left_out)
     if (keep(name)) deleted.push_back(name);
   if (left_out) *left_out = std::move(skipped);
 
-  scene::Scene out = scene_;
+  scene::Scene out = *scene_;
   out.set_consolidated_faces(std::move(consolidated));
   out.set_deleted_faces(std::move(deleted));
   return out;
+}
+
+std::vector<std::string> SceneDocument::save(const std::filesystem::path& path) {
+  std::vector<std::string> left_out;
+  scene::write_nome(scene_for_saving(&left_out), path);
+  return left_out;
 }
 
 }  // namespace nome

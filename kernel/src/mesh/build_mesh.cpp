@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -44,9 +45,16 @@ Buffer<Index> csr_offsets(std::span<const Index> keys, Index num_keys) {
   return offsets;
 }
 
+std::atomic<std::uint64_t> meshes_built{0};
+
 }  // namespace
 
+std::uint64_t build_mesh_count() {
+  return meshes_built.load(std::memory_order_relaxed);
+}
+
 Mesh build_mesh(PolygonSoup soup) {
+  meshes_built.fetch_add(1, std::memory_order_relaxed);
   Mesh m;
   Problems problems;
   const Index nv = soup.num_vertices();

@@ -351,60 +351,78 @@ double bounding_box_diagonal(std::span<const Vec3> positions) {
 
 }  // namespace
 
-MergeResult merge_boundaries(const Mesh& mesh, const MergeOptions& options) {
-  MergeResult result;
-  result.tolerance = options.tolerance > 0
-                         ? options.tolerance
-                         : options.relative_tolerance * bounding_box_diagonal(mesh.positions());
+MergePlan plan_merge(const Mesh& mesh, const MergeOptions& options) {
+  MergePlan plan;
+  plan.tolerance = options.tolerance > 0
+                       ? options.tolerance
+                       : options.relative_tolerance * bounding_box_diagonal(mesh.positions());
 
   // phase: glue matching boundary edge pairs, closest first, each only if the surface stays 2-manifold.
   VertexClasses classes(mesh.num_vertices());
   GlueCheck check(mesh, classes);
-  for (const Candidate& c : find_candidates(mesh, result.tolerance)) {
+  for (const Candidate& c : find_candidates(mesh, plan.tolerance)) {
     if (check.is_glued(c)) continue;
     if (const auto problem = check.problem(c)) {
-      result.skipped.push_back(describe(mesh, c, *problem));
+      plan.skipped.push_back(describe(mesh, c, *problem));
       continue;
     }
     classes.unite(c.ends_a[0], c.ends_b[0]);
     classes.unite(c.ends_a[1], c.ends_b[1]);
   }
 
-  // phase: one vertex per class, numbered by its lowest member, at the members' mean position.
-  PolygonSoup soup;
-  const bool has_names = !mesh.vertex_names().empty();
-  result.vertex_map.assign(mesh.num_vertices(), no_index);
+  // phase: one vertex per class, numbered by its lowest member.
+  plan.vertex_map.assign(mesh.num_vertices(), no_index);
   std::vector<Index> class_vertex(mesh.num_vertices(), no_index);
-  std::vector<Index> class_size;
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
     Index& id = class_vertex[classes.find(v)];
-    if (id == no_index) {
-      id = soup.add_vertex(Vec3(0.0));
-      class_size.push_back(0);
-      if (has_names) soup.vertex_names.push_back(mesh.vertex_names()[v]);
-    }
-    result.vertex_map[v] = id;
-    soup.positions[id] += mesh.position(v);
-    ++class_size[id];
+    if (id == no_index) id = plan.num_vertices++;
+    plan.vertex_map[v] = id;
   }
-  for (Index i = 0; i < soup.num_vertices(); ++i) soup.positions[i] /= double(class_size[i]);
+  return plan;
+}
 
+void merged_positions(const Mesh& mesh, const MergePlan& plan, Buffer<Vec3>& positions) {
+  positions.assign(plan.num_vertices, Vec3(0.0));
+  std::vector<Index> class_size(plan.num_vertices, 0);
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    positions[plan.vertex_map[v]] += mesh.position(v);
+    ++class_size[plan.vertex_map[v]];
+  }
+  for (Index i = 0; i < plan.num_vertices; ++i) positions[i] /= double(class_size[i]);
+}
+
+MergeResult merge_by_plan(const Mesh& mesh, MergePlan plan) {
+  PolygonSoup soup;
+  merged_positions(mesh, plan, soup.positions);
+  if (!mesh.vertex_names().empty()) {
+    soup.vertex_names.resize(plan.num_vertices);
+    for (Index v = mesh.num_vertices(); v-- > 0;)
+      soup.vertex_names[plan.vertex_map[v]] = mesh.vertex_names()[v];
+  }
   soup.face_offsets = mesh.face_offsets();
   soup.face_vertices.reserve(mesh.num_corners());
-  for (Index v : mesh.corner_vertices()) soup.face_vertices.push_back(result.vertex_map[v]);
+  for (Index v : mesh.corner_vertices()) soup.face_vertices.push_back(plan.vertex_map[v]);
   soup.face_names = mesh.face_names();
   soup.face_colors = mesh.face_colors();
   for (const Edge& e : mesh.edges())
     if (e.is_sharp)
-      soup.sharp_edges.emplace_back(result.vertex_map[e.vertices[0]], result.vertex_map[e.vertices[1]]);
-  result.mesh = build_mesh(std::move(soup));
+      soup.sharp_edges.emplace_back(plan.vertex_map[e.vertices[0]], plan.vertex_map[e.vertices[1]]);
 
+  MergeResult result;
+  result.mesh = build_mesh(std::move(soup));
   auto boundary_edges = [](const Mesh& m) {
     return Index(
         std::count_if(m.edges().begin(), m.edges().end(), [](const Edge& e) { return e.is_boundary(); }));
   };
   result.glued_edges = (boundary_edges(mesh) - boundary_edges(result.mesh)) / 2;
+  result.vertex_map = std::move(plan.vertex_map);
+  result.tolerance = plan.tolerance;
+  result.skipped = std::move(plan.skipped);
   return result;
+}
+
+MergeResult merge_boundaries(const Mesh& mesh, const MergeOptions& options) {
+  return merge_by_plan(mesh, plan_merge(mesh, options));
 }
 
 MergeResult merge_meshes(std::span<const Mesh> parts, const MergeOptions& options) {

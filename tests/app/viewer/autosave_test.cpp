@@ -61,7 +61,7 @@ TEST_CASE("autosave keeps unsaved changes in a recovery file: at once per edit, 
   delete_first_face(session);
   autosave.update(session, 32.0);
   const Session restored = Session::restore(document, recovery);
-  CHECK(restored.scene()->deleted_faces().size() == 1);
+  CHECK(restored.document().deleted_faces().size() == 1);
   CHECK(restored.scene_soup().num_faces() == 3);
   CHECK(restored.path() == document);
   CHECK(restored.is_modified());

@@ -51,7 +51,7 @@ TEST_CASE("an .anom file applies its saved sliders and working mesh to the open 
   session.apply_anom(original + "kleinbottle_s1.anom");
   // Its eight zipped faces join the five tunnels' 80.
   CHECK(session.scene_soup().num_faces() == 88);
-  CHECK(session.scene()->consolidated_faces().size() == 8);
+  CHECK(session.document().consolidated_faces().size() == 8);
   CHECK(session.is_modified());
 
   // A value outside its slider's range is refused and changes nothing.

@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "nome/edit/document.hpp"
+#include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
 #include "support/shapes.hpp"
@@ -36,7 +37,7 @@ PolygonSoup two_grids() {
 
 // The scene and every edited face in one mesh, sharing vertices by name.
 Mesh everything(const Document& doc) {
-  PolygonSoup soup = to_soup(doc.scene_mesh().mesh);
+  PolygonSoup soup = to_soup(glue_faces(doc.scene_soup()).mesh);
   auto id = [&](const std::string& name) {
     return Index(std::find(soup.vertex_names.begin(), soup.vertex_names.end(), name) -
                  soup.vertex_names.begin());
@@ -124,9 +125,9 @@ TEST_CASE("accept, clear and delete are undone and redone step by step", "[kerne
 
 TEST_CASE("deleting faces drops the edges and vertices no face uses any more", "[kernel]") {
   Document doc(two_grids());
-  CHECK(doc.scene_mesh().mesh.num_vertices() == 18);
+  CHECK(glue_faces(doc.scene_soup()).mesh.num_vertices() == 18);
   REQUIRE(doc.delete_faces({"left_f0_0"}).applied);
-  const Mesh m = doc.scene_mesh().mesh;
+  const Mesh m = glue_faces(doc.scene_soup()).mesh;
   CHECK(m.num_faces() == 7);
   CHECK(m.num_vertices() == 17);  // the corner left_v0_0 is gone
   CHECK(m.num_edges() == 24 - 2);
@@ -135,7 +136,7 @@ TEST_CASE("deleting faces drops the edges and vertices no face uses any more", "
 
   // Deleting two diagonal faces leaves the centre vertex pinched: it becomes one vertex per fan.
   REQUIRE(doc.delete_faces({"left_f1_1"}).applied);
-  const Mesh pinched = doc.scene_mesh().mesh;
+  const Mesh pinched = glue_faces(doc.scene_soup()).mesh;
   CHECK(pinched.num_vertices() == 7 + 1 + 9);
   CHECK(pinched.num_components() == 3);
 }
@@ -159,12 +160,12 @@ TEST_CASE("edits follow vertex names through geometry changes and report what va
   CHECK(gone[0].face == doc.temporary_faces()[0].name);
   CHECK(gone[0].missing == std::vector<std::string>{"right_v0_2"});
   CHECK(gone[1].face == "right_f1_1");
-  CHECK(doc.temporary_mesh().mesh.num_faces() == 0);
+  CHECK(glue_faces(doc.temporary_soup()).mesh.num_faces() == 0);
   CHECK(doc.temporary_faces().size() == 1);  // kept, not dropped
 
   doc.set_scene_geometry(two_grids());
   CHECK(doc.unresolved().empty());
-  const Mesh temporary = doc.temporary_mesh().mesh;
+  const Mesh temporary = glue_faces(doc.temporary_soup()).mesh;
   REQUIRE(temporary.num_faces() == 1);
   const auto& names = temporary.vertex_names();
   const Index back = Index(std::find(names.begin(), names.end(), "right_v0_2") - names.begin());
@@ -177,9 +178,9 @@ TEST_CASE("the temporary mesh may touch itself at a vertex before the face betwe
   // Two triangles sharing only left_v2_1 (the report's example), then the one joining them.
   REQUIRE(doc.add_polygon({"left_v2_0", "left_v2_1", "right_v0_0"}).applied);
   REQUIRE(doc.add_polygon({"left_v2_1", "left_v2_2", "right_v0_2"}).applied);
-  CHECK(doc.temporary_mesh().mesh.num_vertices() == 6);
+  CHECK(glue_faces(doc.temporary_soup()).mesh.num_vertices() == 6);
   REQUIRE(doc.add_polygon({"left_v2_1", "right_v0_2", "right_v0_1", "right_v0_0"}).applied);
-  const Mesh temporary = doc.temporary_mesh().mesh;
+  const Mesh temporary = glue_faces(doc.temporary_soup()).mesh;
   CHECK(temporary.num_vertices() == 6);
   CHECK(temporary.num_components() == 1);
   CHECK(topology_report(temporary).mobius_edges == 0);
@@ -187,7 +188,7 @@ TEST_CASE("the temporary mesh may touch itself at a vertex before the face betwe
 
 TEST_CASE("zipper adds a strip to the temporary mesh; accepted and merged it closes the gap", "[kernel]") {
   Document doc(two_grids());
-  const Mesh shown = doc.scene_mesh().mesh;
+  const Mesh shown = glue_faces(doc.scene_soup()).mesh;
   auto vertex = [&](const std::string& name) {
     const auto& names = shown.vertex_names();
     return Index(std::find(names.begin(), names.end(), name) - names.begin());
@@ -205,7 +206,7 @@ TEST_CASE("zipper adds a strip to the temporary mesh; accepted and merged it clo
   CHECK(doc.temporary_faces().size() == 2);
   REQUIRE(doc.accept_temporary().applied);
 
-  const MergeResult merged = merge_meshes(doc.parts());
+  const MergeResult merged = merge_boundaries(glue_faces(doc.pipeline_input().soup).mesh);
   const TopologyReport r = topology_report(merged.mesh);
   CHECK(r.faces == 10);
   CHECK(r.components.size() == 1);
@@ -222,7 +223,7 @@ TEST_CASE("saved edits load without history", "[kernel]") {
   CHECK(doc.consolidated_faces().size() == 1);
   CHECK(doc.deleted_faces().size() == 1);
   CHECK_FALSE(doc.can_undo());
-  CHECK(doc.parts().size() == 2);
+  CHECK(doc.consolidated_soup().num_faces() == 1);
 }
 
 TEST_CASE("glue_faces splits vertices where faces only touch and leaves three-face edges apart", "[kernel]") {

@@ -2,7 +2,7 @@
 
 #include <numeric>
 
-#include "nome/edit/glue_faces.hpp"
+#include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
 #include "support/shapes.hpp"

@@ -10,8 +10,8 @@ using namespace nome;
 
 namespace {
 
-PipelineOptions full_options() {
-  PipelineOptions o;
+PipelineSettings full_options() {
+  PipelineSettings o;
   o.subdivision_levels = 2;
   o.offset_distance = 0.04;
   o.subdivision_after = 1;
@@ -35,62 +35,62 @@ TEST_CASE("the pipeline composes subdivision, offset and subdivision after", "[k
   CHECK(result.corner_vertices() == expected.corner_vertices());
   const TopologyReport r = topology_report(result);
   CHECK((r.chi == 0 && r.orientable && r.borders == 0 && r.components.size() == 1));
-  CHECK(pipeline.subdivision_work() == StageWork::rebuilt);
-  CHECK(pipeline.offset_work() == StageWork::rebuilt);
-  CHECK(pipeline.subdivision_after_work() == StageWork::rebuilt);
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::rebuilt);
+  CHECK(pipeline.work(Stage::offset) == StageWork::rebuilt);
+  CHECK(pipeline.work(Stage::subdivided_offset) == StageWork::rebuilt);
 }
 
 TEST_CASE("the pipeline redoes only what an input or option change invalidates", "[kernel]") {
   const Mesh band = build_mesh(test::mobius_band(12, 2));
   Pipeline pipeline;
-  PipelineOptions o = full_options();
+  PipelineSettings o = full_options();
   pipeline.run(band, o);
 
   pipeline.run(band, o);
-  CHECK(pipeline.subdivision_work() == StageWork::cached);
-  CHECK(pipeline.offset_work() == StageWork::cached);
-  CHECK(pipeline.subdivision_after_work() == StageWork::cached);
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::cached);
+  CHECK(pipeline.work(Stage::offset) == StageWork::cached);
+  CHECK(pipeline.work(Stage::subdivided_offset) == StageWork::cached);
 
   // A slider moved vertices: every stage re-runs its position pass only, and gets what a fresh
   // pipeline gets, bit for bit.
   const Mesh dragged = moved(band, 0.2);
   const Buffer<Vec3> fast = pipeline.run(dragged, o).positions();
-  CHECK(pipeline.subdivision_work() == StageWork::positions);
-  CHECK(pipeline.offset_work() == StageWork::positions);
-  CHECK(pipeline.subdivision_after_work() == StageWork::positions);
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::positions);
+  CHECK(pipeline.work(Stage::offset) == StageWork::positions);
+  CHECK(pipeline.work(Stage::subdivided_offset) == StageWork::positions);
   CHECK(fast == Pipeline().run(dragged, o).positions());
 
   o.offset_distance = 0.08;  // a thicker slab: the subdivision before the offset is kept
   const Buffer<Vec3> thicker = pipeline.run(dragged, o).positions();
-  CHECK(pipeline.subdivision_work() == StageWork::cached);
-  CHECK(pipeline.offset_work() == StageWork::positions);
-  CHECK(pipeline.subdivision_after_work() == StageWork::positions);
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::cached);
+  CHECK(pipeline.work(Stage::offset) == StageWork::positions);
+  CHECK(pipeline.work(Stage::subdivided_offset) == StageWork::positions);
   CHECK(thicker == Pipeline().run(dragged, o).positions());
 
   o.rule = SubdivisionRule::report;
   pipeline.run(dragged, o);
-  CHECK(pipeline.subdivision_work() == StageWork::positions);
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::positions);
   CHECK(pipeline.run(dragged, o).positions() == Pipeline().run(dragged, o).positions());
 
   o.subdivision_levels = 1;
   pipeline.run(dragged, o);
-  CHECK(pipeline.subdivision_work() == StageWork::rebuilt);
-  CHECK(pipeline.offset_work() == StageWork::rebuilt);
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::rebuilt);
+  CHECK(pipeline.work(Stage::offset) == StageWork::rebuilt);
 
   const Mesh other = build_mesh(test::mobius_band(10, 2));
   const Mesh& result = pipeline.run(other, o);
-  CHECK(pipeline.subdivision_work() == StageWork::rebuilt);
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::rebuilt);
   CHECK(result.positions() == Pipeline().run(other, o).positions());
 
   o.offset_distance = 0;
   o.subdivision_after = 0;
   CHECK(pipeline.run(other, o).num_faces() == other.num_corners());
-  CHECK(pipeline.offset_work() == StageWork::skipped);
+  CHECK(pipeline.work(Stage::offset) == StageWork::skipped);
 }
 
 TEST_CASE("the pipeline refuses a result over the memory budget unless forced", "[kernel]") {
   const Mesh cube = build_mesh(test::cube());
-  PipelineOptions o;
+  PipelineSettings o;
   o.subdivision_levels = 12;
   const PipelineEstimate e = estimate_pipeline(cube, o);
   CHECK(e.faces == 24.0 * (1 << 22));
@@ -110,7 +110,7 @@ TEST_CASE("the pipeline refuses a result over the memory budget unless forced", 
 
 TEST_CASE("the pipeline checks its options and passes on the offset's warnings", "[kernel]") {
   const Mesh cube = build_mesh(test::cube());
-  PipelineOptions o;
+  PipelineSettings o;
   o.offset_distance = -1;
   CHECK_THROWS_AS(Pipeline().run(cube, o), InvalidInputError);
   o.offset_distance = 0;
@@ -124,7 +124,7 @@ TEST_CASE("the pipeline checks its options and passes on the offset's warnings",
   s.positions[4] = s.positions[1];
   s.positions[5] = s.positions[2];
   Pipeline pipeline;
-  PipelineOptions thick;
+  PipelineSettings thick;
   thick.offset_distance = 0.1;
   pipeline.run(build_mesh(s), thick);
   REQUIRE(pipeline.warnings().size() == 1);

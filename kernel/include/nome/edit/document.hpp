@@ -5,8 +5,8 @@
 #include <variant>
 #include <vector>
 
-#include "nome/edit/glue_faces.hpp"
 #include "nome/mesh/mesh.hpp"
+#include "nome/ops/pipeline_input.hpp"
 #include "nome/ops/zipper.hpp"
 
 namespace nome {
@@ -74,13 +74,14 @@ class Document {
   const std::vector<std::string>& deleted_faces() const { return deleted_; }
   std::vector<UnresolvedEdit> unresolved() const;
 
-  // Derived geometry: the scene without its deleted faces, the consolidated and the temporary mesh.
-  // Faces that only touch at a vertex keep separate vertices there (see glue_faces).
-  GluedFaces scene_mesh() const;
-  GluedFaces consolidated_mesh() const;
-  GluedFaces temporary_mesh() const;
-  // The three meshes, for the merge stage and the viewer.
-  std::vector<Mesh> parts() const;
+  // Derived polygons: the scene without its deleted faces, the consolidated and the temporary faces (each
+  // with its own copies of the vertices it uses; edits whose vertices are gone are left out).
+  PolygonSoup scene_soup() const;
+  PolygonSoup consolidated_soup() const;
+  PolygonSoup temporary_soup() const;
+  // The three as the pipeline's input, in that order, parts named "scene", "consolidated" and
+  // "temporary": faces that only touch at a vertex keep separate vertices there (Joining::across_edges).
+  PipelineInput pipeline_input() const;
 
  private:
   struct AddTemporary {
@@ -114,7 +115,7 @@ class Document {
   // or empty; with `orient`, reverses it where its neighbours disagree with it.
   std::string check_face(EditedFace& face, const std::vector<EditedFace>& pending, bool orient) const;
   Index vertex_id(const std::string& name) const;
-  GluedFaces edited_mesh(const std::vector<EditedFace>& faces) const;
+  PolygonSoup edited_soup(const std::vector<EditedFace>& faces) const;
   std::string next_face_name() { return "edit" + std::to_string(++face_counter_); }
 
   PolygonSoup scene_;

@@ -1,36 +1,76 @@
 #pragma once
 
+#include <cstdint>
+#include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "nome/edit/document.hpp"
+#include "nome/ops/pipeline_input.hpp"
 #include "nome/scene/scene.hpp"
 
 namespace nome {
 
-// The editing model over a parametric scene: the scene evaluated without its editing data is the
-// document's geometry; the consolidated mesh and the deletions live in the document (with undo) and go
-// back into the scene for saving. Sliders re-evaluate the scene and the edits follow by name.
+// The faces of a document's pipeline input, by kind: the scene's first, then the consolidated, then the
+// temporary ones (faces keep this order through the scene and merged stages).
+struct FaceParts {
+  Index scene = 0;
+  Index consolidated = 0;
+  Index temporary = 0;
+};
+
+// The one model of what a user edits: a parametric scene (or the polygons of a flat file) and the edits
+// over it (report 7.3.3: temporary and consolidated faces, deleted faces, undo and redo). The scene is
+// evaluated without its editing data; the consolidated faces and deletions read from a file live in the
+// edits, name the scene's vertices and faces, follow the sliders by name and go back into the scene when
+// it is saved. Edits whose vertices a slider removed are kept (unresolved) and come back with them.
 class SceneDocument {
  public:
   // Takes over the scene's consolidated faces and deletions (as read from a saved .nome file).
-  explicit SceneDocument(scene::Scene scene);
+  static SceneDocument from_scene(scene::Scene scene);
+  // The polygons of a flat file (.obj .stl .sif); unnamed vertices and faces get the names their lines
+  // give them (`v12`, `f3`), for the edits to refer to.
+  static SceneDocument from_polygons(PolygonSoup polygons);
 
-  const scene::Scene& scene() const { return scene_; }
+  // The scene of a scene file; none for flat geometry (no sliders, no .nome saving).
+  const scene::Scene* scene() const { return scene_ ? &*scene_ : nullptr; }
   Document& edits() { return document_; }
   const Document& edits() const { return document_; }
 
-  // Moves a slider (see Scene::set_parameter) and resolves the edits again; returns the top-level
-  // instances whose geometry changed.
+  // Moves a slider (by id, or by `bank_name` / `bank.name`) and resolves the edits again; returns the
+  // top-level instances whose geometry changed. Throws InvalidInputError outside the slider's range or
+  // for an unknown name (naming close ones), SceneError when the scene cannot be evaluated with the value
+  // (nothing changes then).
   std::vector<Index> set_parameter(Index parameter, double value);
+  std::vector<Index> set_parameter(const std::string& name, double value);
 
-  // The scene carrying the document's consolidated mesh and deletions, for scene::write_nome. Edits
-  // whose vertices or faces are gone at the current slider values cannot be written: they are listed in
-  // `left_out` (face names).
+  // Applies an .anom text (the original program's saved slider values and working mesh, which replaces
+  // the consolidated faces). Throws InvalidInputError for flat geometry, SceneError (nothing changes)
+  // when its names or values do not fit the scene.
+  void apply_anom(std::string_view text, const std::string& file);
+  // The file read again, keeping the edits and (where still in range) the slider values.
+  void reload(scene::Scene fresh);
+  void reload(PolygonSoup polygons);
+
+  // The scene stage's polygons for the pipeline: the scene without its deleted faces, the consolidated
+  // and the temporary faces (face_parts() says how many of each).
+  PipelineInput pipeline_input() const { return document_.pipeline_input(); }
+  FaceParts face_parts(const PipelineInput& input) const;
+
+  // The scene carrying the consolidated faces and deletions, for scene::write_nome. Edits whose vertices
+  // or faces are gone at the current slider values cannot be written: they are listed in `left_out`
+  // (face names). Throws InvalidInputError for flat geometry.
   scene::Scene scene_for_saving(std::vector<std::string>* left_out = nullptr) const;
+  // Writes scene_for_saving as .nome, atomically (the temporary faces, not accepted, are not written);
+  // the edits and their undo history stay as they are. Returns the edits left out.
+  std::vector<std::string> save(const std::filesystem::path& path);
 
  private:
-  scene::Scene scene_;
+  void set_scene(scene::Scene scene);
+
+  std::optional<scene::Scene> scene_;
   Document document_;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -191,6 +192,10 @@ std::vector<std::string> validate(const Mesh& mesh);
 // third face on an edge, a vertex whose faces do not form one fan. Vertices used by no face are kept
 // as isolated vertices (they belong to no component).
 Mesh build_mesh(PolygonSoup soup);
+
+// How many meshes build_mesh has been asked to build in this process: the interactive paths build none
+// when only positions move, and tests hold them to it.
+std::uint64_t build_mesh_count();
 
 // The mesh's polygons and attributes as a soup (round trip: build_mesh(to_soup(m)) equals m).
 PolygonSoup to_soup(const Mesh& mesh);

@@ -38,4 +38,9 @@ struct PolygonSoup {
   Index num_faces() const { return static_cast<Index>(face_offsets.size() - 1); }
 };
 
+// Appends `part` to `into` as separate vertices and faces, keeping names, colours and sharp marks: where
+// only one of them has names, the other's elements get empty ones; where only one has colours, the
+// other's faces get default_face_color.
+void append_soup(PolygonSoup& into, const PolygonSoup& part);
+
 }  // namespace nome

@@ -14,4 +14,7 @@ inline constexpr Index no_index = std::numeric_limits<Index>::max();
 using Vec3 = glm::dvec3;
 using Color = glm::vec3;
 
+// The colour of a face that has none, where faces beside it have one (parts of one soup or mesh).
+inline constexpr Color default_face_color{0.75f, 0.75f, 0.75f};
+
 }  // namespace nome

@@ -30,6 +30,15 @@ struct SkippedMerge {
   std::string message;         // the edges by vertex name and position, and why, for users
 };
 
+// Which vertices a merge joins, decided before the merged mesh is built: after a move of the vertices a
+// caller holding the merged mesh compares plans, and only a different plan needs a new mesh.
+struct MergePlan {
+  std::vector<Index> vertex_map;  // input vertex -> merged vertex (numbered by its lowest member)
+  Index num_vertices = 0;         // of the merged mesh
+  double tolerance = 0.0;         // the absolute tolerance used
+  std::vector<SkippedMerge> skipped;
+};
+
 struct MergeResult {
   Mesh mesh;
   std::vector<Index> vertex_map;  // input vertex -> vertex of `mesh`
@@ -46,6 +55,14 @@ struct MergeResult {
 // colours and sharp marks are kept; the merged vertex takes the name of its lowest-numbered member.
 // Candidate pairs come from a spatial hash grid: O(n) expected in the number of boundary vertices.
 MergeResult merge_boundaries(const Mesh& mesh, const MergeOptions& options = {});
+
+// The matching and gluing decisions of merge_boundaries, without the merged mesh.
+MergePlan plan_merge(const Mesh& mesh, const MergeOptions& options = {});
+// The merged mesh of a plan made for `mesh` (merge_boundaries is plan_merge, then this).
+MergeResult merge_by_plan(const Mesh& mesh, MergePlan plan);
+// The merged vertices' positions (each the mean of its members) for a plan of `mesh`: what moving the
+// vertices changes when the plan stays the same.
+void merged_positions(const Mesh& mesh, const MergePlan& plan, Buffer<Vec3>& positions);
 
 // The parts side by side as one mesh (vertex and face ids offset part by part), then merged.
 MergeResult merge_meshes(std::span<const Mesh> parts, const MergeOptions& options = {});

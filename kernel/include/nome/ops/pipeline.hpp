@@ -1,25 +1,16 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
-#include "nome/ops/normals.hpp"
-#include "nome/ops/subdivide.hpp"
+#include "nome/ops/merge.hpp"
+#include "nome/ops/pipeline_input.hpp"
+#include "nome/ops/pipeline_settings.hpp"
 
 namespace nome {
-
-struct PipelineOptions {
-  int subdivision_levels = 0;  // Catmull-Clark levels before the offset
-  SubdivisionRule rule = SubdivisionRule::classic;
-  double offset_distance = 0.0;  // 0: no offset; otherwise positive and finite
-  int subdivision_after = 0;     // levels after the offset (needs an offset)
-  bool force = false;            // compute even when the estimate exceeds the memory budget
-  std::uint64_t memory_budget = std::uint64_t(4) << 30;
-  int threads = 1;
-};
 
 // The size of a pipeline's result, estimated from counts before anything is computed.
 struct PipelineEstimate {
@@ -27,61 +18,70 @@ struct PipelineEstimate {
   double bytes = 0;  // every cached stage together
 };
 
-PipelineEstimate estimate_pipeline(const Mesh& input, const PipelineOptions& options);
+// The estimate for the stages after the merge, from the mesh they start from.
+PipelineEstimate estimate_pipeline(const Mesh& input, const PipelineSettings& settings);
 
 // What a stage did in the last run.
 enum class StageWork { skipped, cached, positions, rebuilt };
 
-// The stages after the scene (DESIGN.md: subdivide k -> offset d -> subdivide j), each result cached.
-// A run redoes only what its inputs invalidate: a new input topology (or other level counts) rebuilds
-// a stage's topology; new positions, another rule or another distance only re-run its position pass
-// over the cached topology (the interactive fast path: a slider that moves vertices).
+// What the merge stage did, for the caller to tell.
+struct MergeSummary {
+  Index glued_edges = 0;  // pairs of boundary edges that became one edge
+  double tolerance = 0;   // the absolute tolerance used
+  std::vector<SkippedMerge> skipped;
+};
+
+class SceneStage;
+class MergeStage;
+class SolidStages;
+
+// The whole way from a scene's polygons to a printable solid (DESIGN.md's data flow): scene -> merged ->
+// subdivided -> offset -> subdivided offset, each stage's result cached. A run redoes only what changed:
+// an input whose polygons are the same as last time (a slider that moves vertices) flows its positions
+// into the cached meshes and builds none; a new topology rebuilds the stages from the first it reaches;
+// other settings re-run only the stages they touch (another offset distance keeps the subdivision).
 class Pipeline {
  public:
-  // Returns the result (valid until the next run). Throws InvalidInputError for options out of range
-  // and BudgetError, with the estimate, when the result would exceed the memory budget unless forced.
-  const Mesh& run(const Mesh& input, const PipelineOptions& options);
+  Pipeline();
+  ~Pipeline();
+  Pipeline(Pipeline&&) noexcept;
+  Pipeline& operator=(Pipeline&&) noexcept;
 
-  // Moves the last result out (for a one-shot caller such as the CLI); the caches start over.
-  Mesh take_result(const Mesh& input);
+  // The polygons of the scene stage: makes the scene mesh, or only moves its vertices when the polygons
+  // are those of the last input. Throws TopologyError naming the input part at fault.
+  void set_input(PipelineInput input);
+  // The scene stage as a mesh the caller built (compared with the last one).
+  void set_input(const Mesh& scene_mesh);
 
-  // Warnings of the last run (degenerate faces met by the offset's normals), for the caller to show.
+  // Makes settings.stage from the input and returns it (valid until the next run or input). Throws
+  // InvalidInputError for settings out of range and BudgetError, with the estimate, when the result
+  // would exceed the memory budget unless forced.
+  const Mesh& run(const PipelineSettings& settings);
+  // The same, with the scene mesh given (set_input, then run).
+  const Mesh& run(const Mesh& scene_mesh, const PipelineSettings& settings);
+  // Moves the last result out (for a one-shot caller such as the command line); the caches start over.
+  Mesh take_result();
+
+  // What each stage did in the last run.
+  StageWork work(Stage stage) const;
+  const MergeSummary& merge_summary() const;
+  // Warnings of the last run's new work: edges joining no faces, merges skipped, degenerate faces met by
+  // the offset's normals.
   const std::vector<std::string>& warnings() const { return warnings_; }
-  StageWork subdivision_work() const { return before_.work; }
-  StageWork offset_work() const { return offset_.work; }
-  StageWork subdivision_after_work() const { return after_.work; }
 
  private:
-  struct SubdivisionStage {
-    std::optional<Refinement> refinement;
-    Mesh result;
-    int levels = 0;
-    StageWork work = StageWork::skipped;
-  };
-  struct OffsetStage {
-    Normals normals;  // of the stage's input; kept for their blocks, as is the result's
-    Mesh result;
-    bool has_result = false;
-    StageWork work = StageWork::skipped;
-  };
+  void input_changed(int change);
 
-  const Mesh& run_stages(const Mesh& input, const PipelineOptions& o, const PipelineOptions& previous,
-                         bool first_run);
-  // Each returns the stage's output and updates the change flags for the stages after it.
-  Mesh& subdivide_stage(SubdivisionStage& stage, const Mesh& in, int levels, const PipelineOptions& o);
-  Mesh& offset_stage(const Mesh& in, const PipelineOptions& o);
-
-  // What the last run saw: the input's topology and positions, and the options.
-  Buffer<Index> input_face_offsets_, input_corners_;
-  std::vector<Index> input_sharp_;
-  Buffer<Vec3> input_positions_;
-  std::optional<PipelineOptions> last_options_;
-  bool topology_changed_ = true;   // of the current stage's input, during a run
-  bool positions_changed_ = true;  // likewise
-  SubdivisionStage before_, after_;
-  OffsetStage offset_;
+  std::unique_ptr<SceneStage> scene_;
+  std::unique_ptr<MergeStage> merged_;
+  std::unique_ptr<SolidStages> solid_;
+  // What changed in the scene mesh since the merge stage, and in its input since the solid stages, last
+  // ran (an InputChange: stages that a run skips catch up at the next run that reaches them).
+  int merge_change_ = 0, solid_change_ = 0;
+  int solid_source_ = -1;  // the stage the solid stages last started from
+  const Mesh* result_ = nullptr;
+  std::vector<std::string> input_warnings_;
   std::vector<std::string> warnings_;
-  Mesh* result_ = nullptr;  // the last stage that ran, or none when the result is the input
 };
 
 }  // namespace nome

@@ -1,4 +1,4 @@
-#include "nome/edit/glue_faces.hpp"
+#include "nome/mesh/glue_faces.hpp"
 
 #include <algorithm>
 #include <numeric>

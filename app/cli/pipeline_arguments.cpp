@@ -1,0 +1,65 @@
+#include "cli/pipeline_arguments.hpp"
+
+#include <algorithm>
+#include <thread>
+
+#include "nome/error.hpp"
+
+namespace nome::cli {
+
+std::vector<OptionSpec> pipeline_option_specs() {
+  return {
+      {"--merge", "", "", "glue boundary edges of all parts whose end points coincide (report 3.3)"},
+      {"--tolerance", "", "T", "merge distance (default 1e-3 of the bounding box diagonal)"},
+      {"--subdiv", "", "N", "Catmull-Clark subdivision levels (default 0)"},
+      {"--rule", "", "RULE",
+       "smooth-vertex rule: classic (Catmull-Clark, default) or report (the 2016 report's)"},
+      {"--offset", "", "D", "thicken into a closed solid, D on each side of the surface (D > 0)"},
+      {"--subdiv-after", "", "M", "Catmull-Clark levels after --offset, to round the rims (default 0)"},
+      {"--force", "", "",
+       "compute results whose estimated size exceeds the memory budget (4 GB), expand scenes of more than "
+       "1000000 instances"},
+  };
+}
+
+namespace {
+
+void read_merge(const Arguments& args, PipelineSettings& s) {
+  s.merge = args.has("--merge");
+  if (!s.merge) {
+    if (args.has("--tolerance")) throw UsageError("--tolerance applies with --merge only");
+    return;
+  }
+  s.merge_tolerance = args.double_value("--tolerance", 0.0);
+  if (args.has("--tolerance") && !(s.merge_tolerance > 0))
+    throw UsageError("--tolerance expects a positive distance, found '" + *args.value("--tolerance") + "'");
+}
+
+}  // namespace
+
+PipelineSettings pipeline_settings(const Arguments& args, Stage stage) {
+  PipelineSettings s;
+  s.stage = stage;
+  read_merge(args, s);
+  s.subdivision_levels = args.int_value("--subdiv", 0, 0, 12);
+  s.subdivision_after = args.int_value("--subdiv-after", 0, 0, 12);
+  if (const auto rule = args.value("--rule")) {
+    if (*rule == "classic")
+      s.rule = SubdivisionRule::classic;
+    else if (*rule == "report")
+      s.rule = SubdivisionRule::report;
+    else
+      throw UsageError("--rule expects classic or report, found '" + *rule + "'");
+  }
+  if (args.has("--offset")) {
+    s.offset_distance = args.double_value("--offset", 0.0);
+    if (s.offset_distance <= 0.0)
+      throw UsageError("--offset expects a positive distance, found " + *args.value("--offset"));
+  }
+  if (s.subdivision_after > 0 && !args.has("--offset")) throw UsageError("--subdiv-after needs --offset");
+  s.force = args.has("--force");
+  s.threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  return s;
+}
+
+}  // namespace nome::cli

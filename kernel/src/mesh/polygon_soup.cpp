@@ -1,0 +1,33 @@
+#include "nome/mesh/polygon_soup.hpp"
+
+namespace nome {
+
+void append_soup(PolygonSoup& into, const PolygonSoup& part) {
+  const Index base = into.num_vertices(), corner_base = Index(into.face_vertices.size());
+  const bool has_names = !into.vertex_names.empty() || !part.vertex_names.empty();
+  const bool has_face_names = !into.face_names.empty() || !part.face_names.empty();
+  const bool has_colors = !into.face_colors.empty() || !part.face_colors.empty();
+  if (has_names) into.vertex_names.resize(into.positions.size());
+  if (has_face_names) into.face_names.resize(into.num_faces());
+  if (has_colors) into.face_colors.resize(into.num_faces(), default_face_color);
+
+  into.positions.insert(into.positions.end(), part.positions.begin(), part.positions.end());
+  for (Index v : part.face_vertices) into.face_vertices.push_back(v + base);
+  for (size_t f = 1; f < part.face_offsets.size(); ++f)
+    into.face_offsets.push_back(part.face_offsets[f] + corner_base);
+  if (has_names) {
+    into.vertex_names.insert(into.vertex_names.end(), part.vertex_names.begin(), part.vertex_names.end());
+    into.vertex_names.resize(into.positions.size());
+  }
+  if (has_face_names) {
+    into.face_names.insert(into.face_names.end(), part.face_names.begin(), part.face_names.end());
+    into.face_names.resize(into.num_faces());
+  }
+  if (has_colors) {
+    into.face_colors.insert(into.face_colors.end(), part.face_colors.begin(), part.face_colors.end());
+    into.face_colors.resize(into.num_faces(), default_face_color);
+  }
+  for (auto [a, b] : part.sharp_edges) into.sharp_edges.emplace_back(a + base, b + base);
+}
+
+}  // namespace nome

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "nome/mesh/mesh.hpp"
+#include "nome/ops/pipeline_input.hpp"
+#include "ops/solid_stages.hpp"
+
+namespace nome {
+
+// The pipeline's first stage: the input's polygons as one mesh. It keeps what the mesh was built from, so
+// that an input whose polygons are the same (only positions or colours moved) updates the mesh in place:
+// a slider that moves vertices builds no mesh.
+class SceneStage {
+ public:
+  // Takes the next input and brings the mesh up to date. Throws TopologyError naming the part at fault;
+  // the stage then starts over.
+  InputChange update(PipelineInput input);
+  // Takes a mesh built by the caller as the stage's result (compared with the last one).
+  InputChange update(const Mesh& mesh);
+
+  const Mesh& mesh() const { return mesh_; }
+  Mesh& mesh() { return mesh_; }
+  StageWork work() const { return work_; }
+  // Edges that joined no faces (three or more faces on them; across_edges joining only), when rebuilt.
+  const std::vector<std::string>& problems() const { return problems_; }
+
+ private:
+  // What the mesh was built from, except positions and colours.
+  struct Structure {
+    Buffer<Index> face_offsets, face_vertices;
+    std::vector<std::pair<Index, Index>> sharp_edges;
+    std::vector<std::string> vertex_names, face_names;
+    Index num_vertices = 0;
+    Joining joining = Joining::manifold;
+    bool has_colors = false;
+    bool operator==(const Structure&) const = default;
+  };
+
+  void rebuild(PipelineInput input);
+
+  Structure structure_;
+  bool has_mesh_ = false;
+  Mesh mesh_;
+  std::vector<Index> vertex_sources_;  // mesh vertex -> input vertex (empty: the same numbers)
+  std::vector<std::string> problems_;
+  StageWork work_ = StageWork::skipped;
+};
+
+}  // namespace nome

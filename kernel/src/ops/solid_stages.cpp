@@ -1,0 +1,131 @@
+#include "ops/solid_stages.hpp"
+
+#include <cmath>
+
+#include "nome/error.hpp"
+#include "nome/ops/offset.hpp"
+
+namespace nome {
+namespace {
+
+constexpr int max_levels = 16;
+
+void check_settings(const PipelineSettings& s) {
+  if (s.levels_before() < 0 || s.levels_before() > max_levels || s.levels_after() < 0 ||
+      s.levels_after() > max_levels)
+    throw InvalidInputError("pipeline: subdivision levels must be between 0 and " +
+                            std::to_string(max_levels));
+  if (s.distance() != 0.0 && !(s.distance() > 0.0 && std::isfinite(s.distance())))
+    throw InvalidInputError("pipeline: the offset distance must be positive and finite, got " +
+                            std::to_string(s.distance()));
+  if (s.levels_after() > 0 && s.distance() == 0.0)
+    throw InvalidInputError("pipeline: subdivision after the offset needs an offset distance");
+}
+
+}  // namespace
+
+const Mesh& SolidStages::run(const Mesh& input, InputChange change, const PipelineSettings& s) {
+  check_settings(s);
+  warnings_.clear();
+  const bool is_first_run = !last_settings_;
+  const PipelineSettings previous = last_settings_.value_or(s);
+  last_settings_ = s;
+  has_new_topology_ = is_first_run || change == InputChange::topology;
+  has_new_positions_ = has_new_topology_ || change == InputChange::positions;
+  try {
+    return run_stages(input, s, previous);
+  } catch (...) {
+    // A stage left half done must not pass for a cached one next time.
+    *this = SolidStages();
+    throw;
+  }
+}
+
+const Mesh& SolidStages::run_stages(const Mesh& input, const PipelineSettings& s,
+                                    const PipelineSettings& previous) {
+  const Mesh* current = &input;
+  result_ = nullptr;
+  before_.work = after_.work = offset_.work = StageWork::skipped;
+  if (s.levels_before() > 0) {
+    has_new_positions_ = has_new_positions_ || s.rule != previous.rule;
+    current = result_ = &subdivide_stage(before_, *current, s.levels_before(), s);
+  } else {
+    before_ = {};
+  }
+  if (s.distance() > 0) {
+    has_new_positions_ = has_new_positions_ || s.distance() != previous.distance();
+    current = result_ = &offset_stage(*current, s);
+    if (s.levels_after() > 0) {
+      has_new_positions_ = has_new_positions_ || s.rule != previous.rule;
+      current = result_ = &subdivide_stage(after_, *current, s.levels_after(), s);
+    } else {
+      after_ = {};
+    }
+  } else {
+    offset_ = {};
+    after_ = {};
+  }
+  return *current;
+}
+
+std::optional<Mesh> SolidStages::take_result() {
+  std::optional<Mesh> out;
+  if (result_) out = std::move(*result_);
+  *this = SolidStages();
+  return out;
+}
+
+StageWork SolidStages::work(Stage stage) const {
+  switch (stage) {
+    case Stage::subdivided:
+      return before_.work;
+    case Stage::offset:
+      return offset_.work;
+    case Stage::subdivided_offset:
+      return after_.work;
+    default:
+      return StageWork::skipped;
+  }
+}
+
+Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int levels,
+                                   const PipelineSettings& s) {
+  if (has_new_topology_ || !stage.refinement || stage.levels != levels) {
+    stage.refinement.emplace(in, levels, s.threads);
+    stage.levels = levels;
+    Buffer<Vec3> positions(stage.refinement->num_vertices());
+    stage.refinement->refine_positions(in, s.rule, positions, s.threads);
+    stage.result = stage.refinement->mesh(in, std::move(positions), s.threads);
+    stage.work = StageWork::rebuilt;
+    has_new_topology_ = has_new_positions_ = true;
+  } else if (has_new_positions_) {
+    stage.refinement->refine_positions(in, s.rule, stage.result.positions(), s.threads);
+    stage.work = StageWork::positions;
+  } else {
+    stage.work = StageWork::cached;
+  }
+  return stage.result;
+}
+
+Mesh& SolidStages::offset_stage(const Mesh& in, const PipelineSettings& s) {
+  if (!has_new_topology_ && !has_new_positions_ && offset_.has_result) {
+    offset_.work = StageWork::cached;
+    return offset_.result;
+  }
+  const Normals& normals = offset_.normals;
+  compute_normals(in, offset_.normals);
+  if (std::string warning = degeneracy_warning(in, normals); !warning.empty())
+    warnings_.push_back("offset: " + warning);
+  if (has_new_topology_ || !offset_.has_result) {
+    offset_into(in, normals, s.distance(), offset_.result, s.threads);
+    offset_.has_result = true;
+    offset_.work = StageWork::rebuilt;
+    has_new_topology_ = has_new_positions_ = true;
+  } else {
+    offset_positions(in, normals, s.distance(), offset_.result.positions());
+    offset_.work = StageWork::positions;
+  }
+  return offset_.result;
+}
+
+}  // namespace nome

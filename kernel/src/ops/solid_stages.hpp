@@ -1,0 +1,61 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nome/mesh/mesh.hpp"
+#include "nome/ops/normals.hpp"
+#include "nome/ops/pipeline.hpp"
+#include "nome/ops/subdivide.hpp"
+
+namespace nome {
+
+// What changed in a stage's input since the stage last ran.
+enum class InputChange { none, positions, topology };
+
+// The stages after the merge (subdivide k -> offset d -> subdivide j), each result cached. A run redoes
+// only what its input's change and the settings invalidate: a new topology (or other level counts)
+// rebuilds a stage's topology; new positions, another rule or another distance only re-run its position
+// pass over the cached topology (the interactive fast path: a slider that moves vertices).
+class SolidStages {
+ public:
+  // The last stage's result, or `input` when no stage runs (valid until the next run). Throws
+  // InvalidInputError for settings out of range.
+  const Mesh& run(const Mesh& input, InputChange change, const PipelineSettings& settings);
+  // Moves the last stage's result out (none ran: none); the caches start over.
+  std::optional<Mesh> take_result();
+
+  StageWork work(Stage stage) const;
+  // Warnings of the last run (degenerate faces met by the offset's normals).
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
+  struct SubdivisionStage {
+    std::optional<Refinement> refinement;
+    Mesh result;
+    int levels = 0;
+    StageWork work = StageWork::skipped;
+  };
+  struct OffsetStage {
+    Normals normals;  // of the stage's input; kept for their blocks, as is the result's
+    Mesh result;
+    bool has_result = false;
+    StageWork work = StageWork::skipped;
+  };
+
+  const Mesh& run_stages(const Mesh& input, const PipelineSettings& s, const PipelineSettings& previous);
+  // Each returns the stage's output and updates the change flags for the stages after it.
+  Mesh& subdivide_stage(SubdivisionStage& stage, const Mesh& in, int levels, const PipelineSettings& s);
+  Mesh& offset_stage(const Mesh& in, const PipelineSettings& s);
+
+  std::optional<PipelineSettings> last_settings_;
+  bool has_new_topology_ = true;   // of the current stage's input, during a run
+  bool has_new_positions_ = true;  // likewise
+  SubdivisionStage before_, after_;
+  OffsetStage offset_;
+  std::vector<std::string> warnings_;
+  Mesh* result_ = nullptr;  // the last stage that ran, or none when the result is the input
+};
+
+}  // namespace nome

@@ -1,0 +1,69 @@
+#include <catch2/catch.hpp>
+
+#include "nome/edit/scene_document.hpp"
+#include "nome/mesh/topology_report.hpp"
+#include "nome/ops/pipeline.hpp"
+#include "scene/scene_support.hpp"
+
+using namespace nome;
+
+namespace {
+
+// The viewer's solid stage over the report's consolidated funnel cube: merged, subdivided, thickened.
+PipelineSettings solid_settings() {
+  PipelineSettings s;
+  s.stage = Stage::subdivided_offset;
+  s.merge = true;
+  s.subdivision_levels = 2;
+  s.offset_distance = 0.03;
+  s.subdivision_after = 1;
+  return s;
+}
+
+SceneDocument funnel_cube() {
+  return SceneDocument::from_scene(
+      test::load_scene_file(test::assets_dir() + "funnel_cube_consolidated.nome"));
+}
+
+// One slider tick as the viewer makes it: the document moves the slider, the pipeline takes its input.
+const Mesh& tick(SceneDocument& doc, Pipeline& pipeline, const std::string& slider, double value) {
+  doc.set_parameter(slider, value);
+  pipeline.set_input(doc.pipeline_input());
+  return pipeline.run(solid_settings());
+}
+
+}  // namespace
+
+TEST_CASE("a slider tick that moves vertices builds no mesh, from the scene to the solid", "[scene]") {
+  SceneDocument doc = funnel_cube();
+  Pipeline pipeline;
+  pipeline.set_input(doc.pipeline_input());
+  pipeline.run(solid_settings());
+  for (const double height : {0.35, 0.4, 0.3}) {
+    const std::uint64_t before = build_mesh_count();
+    const Mesh& solid = tick(doc, pipeline, "fp_h", height);
+    CHECK(build_mesh_count() == before);
+    for (const Stage stage :
+         {Stage::scene, Stage::merged, Stage::subdivided, Stage::offset, Stage::subdivided_offset})
+      CHECK(pipeline.work(stage) == StageWork::positions);
+    // The fast path gives what a fresh pipeline gives, bit for bit.
+    Pipeline fresh;
+    fresh.set_input(doc.pipeline_input());
+    CHECK(solid.positions() == fresh.run(solid_settings()).positions());
+    CHECK(topology_report(solid).borders == 0);
+  }
+}
+
+TEST_CASE("a slider tick that changes the topology builds the scene mesh and the merged mesh once",
+          "[scene]") {
+  SceneDocument doc = funnel_cube();
+  Pipeline pipeline;
+  pipeline.set_input(doc.pipeline_input());
+  const Index faces_at_8 = pipeline.run(solid_settings()).num_faces();
+  const std::uint64_t before = build_mesh_count();
+  const Index faces_at_7 = tick(doc, pipeline, "fp_n", 7).num_faces();
+  CHECK(build_mesh_count() - before == 2);
+  CHECK(pipeline.work(Stage::scene) == StageWork::rebuilt);
+  CHECK(pipeline.work(Stage::subdivided_offset) == StageWork::rebuilt);
+  CHECK(faces_at_7 != faces_at_8);
+}
