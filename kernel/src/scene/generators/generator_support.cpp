@@ -23,7 +23,10 @@ void parse(StatementParser& parser, Index kind) {
   while (!parser.peek().is_symbol(")") && parser.peek().kind != TokenKind::end)
     g.args.push_back(parser.value());
   parser.expect_symbol(")");
-  if (g.args.size() != row.argument_count && g.args.size() != row.alternative_argument_count)
+  // No alternative count (0) must not let an empty list through: the evaluator reads its arguments.
+  const bool is_alternative =
+      row.alternative_argument_count != 0 && g.args.size() == row.alternative_argument_count;
+  if (g.args.size() != row.argument_count && !is_alternative)
     parser.diagnostics().error(open.location, keyword.text + " '" + g.name.text + "' takes " +
                                                   std::to_string(row.argument_count) + " arguments " +
                                                   std::string(row.signature) + ", found " +
