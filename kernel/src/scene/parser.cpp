@@ -8,7 +8,7 @@ namespace nome::scene {
 
 SceneAst StatementParser::parse_scene() {
   ast_.file = diagnostics_.file();
-  const Context top{{}, nullptr};
+  const Context top{{}, {}};
   while (peek().kind != TokenKind::end) {
     const size_t start = pos_;
     try {
@@ -74,7 +74,7 @@ void StatementParser::choose_slf_roots() {
 
 AnomAst StatementParser::parse_anom() {
   AnomAst anom;
-  const Context top{{"savedparameter", "savedworkingmesh"}, nullptr};
+  const Context top{{"savedparameter", "savedworkingmesh"}, {}};
   while (peek().kind != TokenKind::end) {
     const size_t start = pos_;
     try {

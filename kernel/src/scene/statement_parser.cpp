@@ -64,14 +64,14 @@ void StatementParser::resynchronise(const Context& context, size_t statement_sta
     // Statements usually start a line: a keyword in mid-line (`surface` in an instance) is no restart.
     const bool starts_line = pos_ == 0 || tokens_[pos_ - 1].location.line != t.location.line;
     if (t.kind == TokenKind::word &&
-        ((context.end_word && t.text == context.end_word) || (starts_line && is_starter(t))))
+        ((!context.end_word.empty() && t.text == context.end_word) || (starts_line && is_starter(t))))
       break;
     take();
   }
   statement_end_ = {};
 }
 
-bool StatementParser::block_closed(const Token& opener, const char* end_word, const Context& inner) {
+bool StatementParser::block_closed(const Token& opener, std::string_view end_word, const Context& inner) {
   const Token& t = peek();
   if (t.is_word(end_word)) {
     take();
@@ -80,8 +80,9 @@ bool StatementParser::block_closed(const Token& opener, const char* end_word, co
   const bool foreign = is_top_level_keyword(t) && std::find(inner.starters.begin(), inner.starters.end(),
                                                             t.text) == inner.starters.end();
   if (t.kind == TokenKind::end || foreign) {
-    diagnostics_.error(opener.location, "'" + opener.text + "' is never closed: expected '" + end_word +
-                                            "', found " + t.describe() + " at " + location_text(t.location));
+    diagnostics_.error(opener.location, "'" + opener.text + "' is never closed: expected '" +
+                                            std::string(end_word) + "', found " + t.describe() + " at " +
+                                            location_text(t.location));
     return true;
   }
   return false;
@@ -194,7 +195,7 @@ void StatementParser::instance_transform(const Token& t, InstanceDecl& inst) {
   inst.transforms.push_back(tr);
 }
 
-std::vector<Name> StatementParser::vertex_blocks(const char* end_word, const Token& opener) {
+std::vector<Name> StatementParser::vertex_blocks(std::string_view end_word, const Token& opener) {
   std::vector<Name> names;
   const Context inner{{"vertex"}, end_word};
   while (!block_closed(opener, end_word, inner)) {

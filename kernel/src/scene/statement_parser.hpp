@@ -18,7 +18,7 @@ struct SyntaxError {};
 // Where the parser is: which tokens start a statement here and which word closes the enclosing block.
 struct Context {
   std::vector<std::string_view> starters;
-  const char* end_word;
+  std::string_view end_word;
 };
 
 // The tokens of one text and the AST being built, with what every statement's parser needs: taking
@@ -42,7 +42,7 @@ class StatementParser {
   void set_statement_end(std::string_view word) { statement_end_ = word; }
   // True (and consumes it) at the block's end word. At the end of the input, or at a statement that cannot
   // stand inside this block, reports the unclosed block at its opener and stops the block.
-  bool block_closed(const Token& opener, const char* end_word, const Context& inner);
+  bool block_closed(const Token& opener, std::string_view end_word, const Context& inner);
   // Skips to the end of the failed statement or the next statement the context knows. Always moves on.
   void resynchronise(const Context& context, size_t statement_start);
   size_t position() const { return pos_; }
@@ -58,7 +58,7 @@ class StatementParser {
   std::optional<Name> optional_surface();
   FaceDecl face_statement();
   InstanceDecl instance_statement();
-  std::vector<Name> vertex_blocks(const char* end_word, const Token& opener);
+  std::vector<Name> vertex_blocks(std::string_view end_word, const Token& opener);
   // .slf: colours are not read; say so once per use.
   void ignore_surface(const Token& at, std::optional<Name>& surface);
 

@@ -19,12 +19,13 @@ SharpDecl sharp(StatementParser& parser) {
   return s;
 }
 
-void parse(StatementParser& parser, Index) {
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
   MeshDecl m;
   m.name = parser.take_name("a mesh name");
-  const Context inner{{"face", "sharp"}, "endmesh"};
-  while (!parser.block_closed(opener, "endmesh", inner)) {
+  const Context inner{{"face", "sharp"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
     const size_t start = parser.position();
     try {
       if (parser.peek().is_word("face"))

@@ -7,13 +7,14 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index) {
-  parser.set_statement_end("endobject");
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  parser.set_statement_end(end);
   parser.take();
   ObjectDecl o;
   o.name = parser.take_name("an object name");
   o.faces = parser.name_list("a face name or ')'");
-  parser.expect_word("endobject");
+  parser.expect_word(end);
   parser.ast().objects.push_back(std::move(o));
 }
 

@@ -7,8 +7,9 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index) {
-  parser.set_statement_end("endpolyline");
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  parser.set_statement_end(end);
   parser.take();
   PolylineDecl p;
   p.name = parser.take_name("a polyline name");
@@ -22,7 +23,7 @@ void parse(StatementParser& parser, Index) {
     parser.take();
     p.is_loop = true;
   }
-  parser.expect_word("endpolyline");
+  parser.expect_word(end);
   parser.ast().polylines.push_back(std::move(p));
 }
 

@@ -33,12 +33,13 @@ SliderDecl slider(StatementParser& parser, const std::string& bank) {
   return s;
 }
 
-void parse(StatementParser& parser, Index) {
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
   BankDecl b;
   b.name = parser.take_name("a bank name");
-  const Context inner{{"set"}, "endbank"};
-  while (!parser.block_closed(opener, "endbank", inner)) {
+  const Context inner{{"set"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
     const size_t start = parser.position();
     try {
       b.sliders.push_back(slider(parser, b.name.text));

@@ -7,10 +7,11 @@
 namespace nome::scene {
 namespace {
 
-void parse_delete(StatementParser& parser, Index) {
+void parse_delete(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
-  const Context inner{{"face"}, "enddelete"};
-  while (!parser.block_closed(opener, "enddelete", inner)) {
+  const Context inner{{"face"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
     parser.set_statement_end("endface");
     parser.expect_word("face");
     parser.ast().deleted_faces.push_back(parser.take_name("a face name"));
@@ -27,10 +28,11 @@ void save_delete(SceneWriter& writer, Index) {
   writer.out() << "enddelete\n";
 }
 
-void parse_consolidate(StatementParser& parser, Index) {
+void parse_consolidate(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
-  const Context inner{{"consolidateface"}, "endconsolidate"};
-  while (!parser.block_closed(opener, "endconsolidate", inner)) {
+  const Context inner{{"consolidateface"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
     const Token face = parser.peek();
     parser.expect_word("consolidateface");
     NamedFace f{parser.vertex_blocks("endconsolidateface", face), face.location};

@@ -6,12 +6,13 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index) {
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
   GroupDecl g;
   g.name = parser.take_name("a group name");
-  const Context inner{{"instance"}, "endgroup"};
-  while (!parser.block_closed(opener, "endgroup", inner)) {
+  const Context inner{{"instance"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
     const size_t start = parser.position();
     try {
       if (!parser.peek().is_word("instance")) parser.fail(parser.peek(), "'instance' or 'endgroup'");

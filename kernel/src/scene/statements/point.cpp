@@ -6,13 +6,14 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index) {
-  parser.set_statement_end("endpoint");
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  parser.set_statement_end(end);
   parser.take();
   PointDecl p;
   p.name = parser.take_name("a point name");
   parser.value_tuple(p.xyz, 3, "point");
-  parser.expect_word("endpoint");
+  parser.expect_word(end);
   parser.ast().points.push_back(std::move(p));
 }
 

@@ -6,14 +6,15 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index) {
-  parser.set_statement_end("endsurface");
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  parser.set_statement_end(end);
   const Token t = parser.take();
   SurfaceDecl s;
   s.name = parser.take_name("a surface name");
   parser.expect_word("color");
   parser.value_tuple(s.rgb, 3, "color");
-  parser.expect_word("endsurface");
+  parser.expect_word(end);
   if (parser.is_slf())
     parser.diagnostics().warning(t.location,
                                  "surface '" + s.name.text + "' ignored: colours of .slf files are not read");
