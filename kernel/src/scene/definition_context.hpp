@@ -46,7 +46,6 @@ class DefinitionContext : public DefinitionScope {
   void add_rim(const Name& name, const std::vector<Name>& vertices, bool is_loop);
   Color surface_color(const Name& surface);
   void error(SourceLocation at, std::string message);
-  std::vector<Diagnostic>& errors() { return errors_; }
 
   Piece& piece() { return piece_; }
 

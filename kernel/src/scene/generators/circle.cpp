@@ -1,5 +1,5 @@
 // `circle NAME (n r) endcircle` (NOME 2.x): a closed rim line.
-#include "nome/scene/generators.hpp"
+#include "nome/scene/generators/circle.hpp"
 #include "scene/generators/generator_support.hpp"
 
 namespace nome::scene {

@@ -1,5 +1,5 @@
 // `funnel NAME (n ro ratio h) endfunnel` (report 6.3).
-#include "nome/scene/generators.hpp"
+#include "nome/scene/generators/funnel.hpp"
 #include "scene/generators/generator_support.hpp"
 
 namespace nome::scene {

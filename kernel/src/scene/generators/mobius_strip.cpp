@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "nome/scene/generators.hpp"
+#include "nome/scene/generators/mobius_strip.hpp"
 #include "scene/generators/generator_support.hpp"
 
 namespace nome::scene {

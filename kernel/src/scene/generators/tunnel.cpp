@@ -1,5 +1,5 @@
 // `tunnel NAME (n ro ratio h [ratio_low h_low]) endtunnel`: two funnels sharing the base circle.
-#include "nome/scene/generators.hpp"
+#include "nome/scene/generators/tunnel.hpp"
 #include "scene/generators/generator_support.hpp"
 
 namespace nome::scene {
