@@ -90,7 +90,7 @@ void Scene::define_names(std::vector<Diagnostic>& errors) {
   std::unordered_map<std::string, SourceLocation> surface_at, point_at, definition_at;
   for (Index i = 0; i < ast_.surfaces.size(); ++i) define(surfaces_, ast_.surfaces[i].name, i, surface_at);
   for (Index i = 0; i < ast_.points.size(); ++i) define(points_, ast_.points[i].name, i, point_at);
-  std::vector<std::pair<DeclaredName, Index>> declared;  // and the kind
+  std::vector<std::pair<DeclaredName, Index>> declared;  // with the row of its kind
   const std::span<const StatementKind> kinds = statement_kinds();
   for (Index k = 0; k < kinds.size(); ++k) {
     if (!kinds[k].is_definition()) continue;

@@ -28,10 +28,21 @@ std::span<const StatementKind> statement_kinds() {
   // In the order error messages list the keywords and the writer writes the statements (any order
   // reads back: names are resolved after parsing).
   static const std::vector<StatementKind> table = {
-      bank_statement(),     surface_statement(),      point_statement(),       polyline_statement(),
-      face_statement(),     object_statement(),       funnel_statement(),      tunnel_statement(),
-      circle_statement(),   mobius_strip_statement(), mesh_statement(),        group_statement(),
-      instance_statement(), delete_statement(),       consolidate_statement(),
+      bank_statement(),          // sliders
+      surface_statement(),       // a colour
+      point_statement(),         // a named position
+      polyline_statement(),      // a rim line over named vertices
+      face_statement(),          // one face over named vertices
+      object_statement(),        // a mesh of top-level faces
+      funnel_statement(),        // generator (report 6.3)
+      tunnel_statement(),        // generator: two funnels
+      circle_statement(),        // generator: a closed rim line
+      mobius_strip_statement(),  // generator: mobiusstrip
+      mesh_statement(),          // faces and sharp edges over named vertices
+      group_statement(),         // instances
+      instance_statement(),      // a top-level instance: a root of the scene
+      delete_statement(),        // faces deleted by name
+      consolidate_statement(),   // the consolidated mesh
   };
   return table;
 }
