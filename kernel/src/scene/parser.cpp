@@ -8,7 +8,7 @@ namespace nome::scene {
 
 SceneAst StatementParser::parse_scene() {
   ast_.file = diagnostics_.file();
-  const Context top{{}, {}};
+  const BlockContext top{{}, {}};
   while (peek().kind != TokenKind::end) {
     const size_t start = pos_;
     try {
@@ -74,7 +74,7 @@ void StatementParser::choose_slf_roots() {
 
 AnomAst StatementParser::parse_anom() {
   AnomAst anom;
-  const Context top{{"savedparameter", "savedworkingmesh"}, {}};
+  const BlockContext top{{"savedparameter", "savedworkingmesh"}, {}};
   while (peek().kind != TokenKind::end) {
     const size_t start = pos_;
     try {
@@ -86,7 +86,7 @@ AnomAst StatementParser::parse_anom() {
   return anom;
 }
 
-void StatementParser::anom_statement(AnomAst& anom, const Context& top) {
+void StatementParser::anom_statement(AnomAst& anom, const BlockContext& top) {
   const Token opener = take();
   if (opener.is_word("savedparameter")) {
     statement_end_ = "endsavedparameter";
@@ -98,7 +98,7 @@ void StatementParser::anom_statement(AnomAst& anom, const Context& top) {
   } else if (opener.is_word("savedworkingmesh")) {
     statement_end_ = "endsavedworkingmesh";
     take_name("the working mesh's name");
-    const Context faces{{"face"}, "endsavedworkingmesh"};
+    const BlockContext faces{{"face"}, "endsavedworkingmesh"};
     while (!block_closed(opener, "endsavedworkingmesh", faces)) {
       const Token face = peek();
       expect_word("face");

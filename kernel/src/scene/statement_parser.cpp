@@ -49,7 +49,7 @@ Name StatementParser::take_name(const char* what) {
   return {normalize_name(t.text), t.location};
 }
 
-void StatementParser::resynchronise(const Context& context, size_t statement_start) {
+void StatementParser::resynchronise(const BlockContext& context, size_t statement_start) {
   if (pos_ == statement_start) take();
   const auto is_starter = [&](const Token& t) {
     return is_top_level_keyword(t) ||
@@ -71,7 +71,8 @@ void StatementParser::resynchronise(const Context& context, size_t statement_sta
   statement_end_ = {};
 }
 
-bool StatementParser::block_closed(const Token& opener, std::string_view end_word, const Context& inner) {
+bool StatementParser::block_closed(const Token& opener, std::string_view end_word,
+                                   const BlockContext& inner) {
   const Token& t = peek();
   if (t.is_word(end_word)) {
     take();
@@ -197,7 +198,7 @@ void StatementParser::instance_transform(const Token& t, InstanceDecl& inst) {
 
 std::vector<Name> StatementParser::vertex_blocks(std::string_view end_word, const Token& opener) {
   std::vector<Name> names;
-  const Context inner{{"vertex"}, end_word};
+  const BlockContext inner{{"vertex"}, end_word};
   while (!block_closed(opener, end_word, inner)) {
     expect_word("vertex");
     names.push_back(take_name("a vertex name"));

@@ -16,7 +16,7 @@ namespace nome::scene {
 struct SyntaxError {};
 
 // Where the parser is: which tokens start a statement here and which word closes the enclosing block.
-struct Context {
+struct BlockContext {
   std::vector<std::string_view> starters;
   std::string_view end_word;
 };
@@ -42,9 +42,9 @@ class StatementParser {
   void set_statement_end(std::string_view word) { statement_end_ = word; }
   // True (and consumes it) at the block's end word. At the end of the input, or at a statement that cannot
   // stand inside this block, reports the unclosed block at its opener and stops the block.
-  bool block_closed(const Token& opener, std::string_view end_word, const Context& inner);
+  bool block_closed(const Token& opener, std::string_view end_word, const BlockContext& inner);
   // Skips to the end of the failed statement or the next statement the context knows. Always moves on.
-  void resynchronise(const Context& context, size_t statement_start);
+  void resynchronise(const BlockContext& context, size_t statement_start);
   size_t position() const { return pos_; }
 
   // --- values and expressions
@@ -73,7 +73,7 @@ class StatementParser {
   void instance_transform(const Token& t, InstanceDecl& inst);
   void skip_unsupported(const std::string& word);
   void choose_slf_roots();
-  void anom_statement(AnomAst& anom, const Context& top);
+  void anom_statement(AnomAst& anom, const BlockContext& top);
 
   // The expression grammar (expression_parser.cpp).
   ExprId node(ExprOp op, SourceLocation at, ExprId a = no_index, ExprId b = no_index);

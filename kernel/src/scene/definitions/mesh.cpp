@@ -24,7 +24,7 @@ void parse(StatementParser& parser, Index kind) {
   const Token opener = parser.take();
   MeshDecl m;
   m.name = parser.take_name("a mesh name");
-  const Context inner{{"face", "sharp"}, end};
+  const BlockContext inner{{"face", "sharp"}, end};
   while (!parser.block_closed(opener, end, inner)) {
     const size_t start = parser.position();
     try {

@@ -38,7 +38,7 @@ void parse(StatementParser& parser, Index kind) {
   const Token opener = parser.take();
   BankDecl b;
   b.name = parser.take_name("a bank name");
-  const Context inner{{"set"}, end};
+  const BlockContext inner{{"set"}, end};
   while (!parser.block_closed(opener, end, inner)) {
     const size_t start = parser.position();
     try {

@@ -10,7 +10,7 @@ namespace {
 void parse_delete(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
-  const Context inner{{"face"}, end};
+  const BlockContext inner{{"face"}, end};
   while (!parser.block_closed(opener, end, inner)) {
     parser.set_statement_end("endface");
     parser.expect_word("face");
@@ -31,7 +31,7 @@ void save_delete(SceneWriter& writer, Index) {
 void parse_consolidate(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
-  const Context inner{{"consolidateface"}, end};
+  const BlockContext inner{{"consolidateface"}, end};
   while (!parser.block_closed(opener, end, inner)) {
     const Token face = parser.peek();
     parser.expect_word("consolidateface");

@@ -11,7 +11,7 @@ void parse(StatementParser& parser, Index kind) {
   const Token opener = parser.take();
   GroupDecl g;
   g.name = parser.take_name("a group name");
-  const Context inner{{"instance"}, end};
+  const BlockContext inner{{"instance"}, end};
   while (!parser.block_closed(opener, end, inner)) {
     const size_t start = parser.position();
     try {
