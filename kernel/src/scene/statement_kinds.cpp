@@ -1,7 +1,7 @@
 // The one table of the .nome language's statements. Each row is made by its statement's own file (its
 // keywords, argument shape, parser, writer and evaluator); this file only lists them. To add a generator:
-// write generators/NAME.cpp returning its row from NAME_statement(), declare that function below and
-// add it to the table.
+// write generators/NAME.cpp (its geometry, its evaluator and NAME_statement() returning its row), declare
+// NAME_statement() below and add it to the table; then its section in docs/language.md and its tests.
 #include "nome/scene/statement_kinds.hpp"
 
 #include <algorithm>
