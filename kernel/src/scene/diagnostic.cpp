@@ -32,6 +32,10 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+std::string location_text(SourceLocation at) {
+  return std::to_string(at.line) + ":" + std::to_string(at.column);
+}
+
 std::string Diagnostic::to_string() const {
   std::string out = file.empty() ? std::string("<input>") : file;
   out += ":" + std::to_string(location.line) + ":" + std::to_string(location.column) + ": ";

@@ -114,11 +114,46 @@ const char* function_name(Function function) {
   return "?";
 }
 
+namespace {
+
+// An arithmetic or comparison operator on its two evaluated operands.
+double binary(ExprOp op, double a, double b) {
+  switch (op) {
+    case ExprOp::add:
+      return a + b;
+    case ExprOp::subtract:
+      return a - b;
+    case ExprOp::multiply:
+      return a * b;
+    case ExprOp::divide:
+      return a / b;
+    case ExprOp::modulo:
+      return std::fmod(a, b);
+    case ExprOp::power:
+      return std::pow(a, b);
+    case ExprOp::less:
+      return a < b;
+    case ExprOp::less_equal:
+      return a <= b;
+    case ExprOp::greater:
+      return a > b;
+    case ExprOp::greater_equal:
+      return a >= b;
+    case ExprOp::equal:
+      return a == b;
+    case ExprOp::not_equal:
+      return a != b;
+    default:
+      return 0;
+  }
+}
+
+}  // namespace
+
 double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> parameters,
                 std::vector<Index>* reads) {
   const ExprNode& n = pool.node(id);
   auto arg = [&](int i) { return evaluate(pool, n.args[i], parameters, reads); };
-  double result = 0;
   switch (n.op) {
     case ExprOp::number:
       return n.number;
@@ -131,55 +166,23 @@ double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> p
       return parameters[n.parameter];
     case ExprOp::negate:
       return -arg(0);
-    case ExprOp::add:
-      result = arg(0) + arg(1);
-      break;
-    case ExprOp::subtract:
-      result = arg(0) - arg(1);
-      break;
-    case ExprOp::multiply:
-      result = arg(0) * arg(1);
-      break;
-    case ExprOp::divide:
-    case ExprOp::modulo: {
-      const double a = arg(0), b = arg(1);
-      if (b == 0)
-        throw EvaluationError(n.location, std::string("division by zero in '") + operator_text(n.op) + "'");
-      result = n.op == ExprOp::divide ? a / b : std::fmod(a, b);
-      break;
-    }
-    case ExprOp::power:
-      result = std::pow(arg(0), arg(1));
-      break;
-    case ExprOp::less:
-      result = arg(0) < arg(1);
-      break;
-    case ExprOp::less_equal:
-      result = arg(0) <= arg(1);
-      break;
-    case ExprOp::greater:
-      result = arg(0) > arg(1);
-      break;
-    case ExprOp::greater_equal:
-      result = arg(0) >= arg(1);
-      break;
-    case ExprOp::equal:
-      result = arg(0) == arg(1);
-      break;
-    case ExprOp::not_equal:
-      result = arg(0) != arg(1);
-      break;
     case ExprOp::call: {
       const double a = arg(0);
       const double b = n.args[1] == no_index ? 0.0 : arg(1);
-      result = apply(n.function, a, b);
+      const double result = apply(n.function, a, b);
       if (!std::isfinite(result))
         throw EvaluationError(n.location, std::string(function_name(n.function)) + "(" + format_number(a) +
                                               (n.args[1] == no_index ? "" : ", " + format_number(b)) +
                                               ") is not a finite number");
       return result;
     }
+    default:
+      break;
   }
+  const double a = arg(0), b = arg(1);
+  if (b == 0 && (n.op == ExprOp::divide || n.op == ExprOp::modulo))
+    throw EvaluationError(n.location, std::string("division by zero in '") + operator_text(n.op) + "'");
+  const double result = binary(n.op, a, b);
   if (!std::isfinite(result))
     throw EvaluationError(n.location,
                           std::string("the result of '") + operator_text(n.op) + "' is not finite");

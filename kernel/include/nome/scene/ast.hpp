@@ -58,12 +58,10 @@ struct ObjectDecl {
   std::vector<Name> faces;
 };
 
-enum class GeneratorKind { funnel, tunnel, circle, mobius_strip };
-
-// `funnel NAME (n ro ratio h)`, `tunnel NAME (n ro ratio h [ratio_low h_low])`, `circle NAME (n r)`,
-// `mobiusstrip NAME (radius twists cuts segs)`.
+// `KEYWORD NAME (arguments) endKEYWORD`: a generator (funnel, tunnel, circle, mobiusstrip, ...), whose
+// keyword, argument count and evaluator are its row of statement_kinds().
 struct GeneratorDecl {
-  GeneratorKind kind = GeneratorKind::funnel;
+  Index kind = 0;  // row of statement_kinds()
   Name name;
   std::vector<Value> args;
 };

@@ -14,6 +14,9 @@ struct SourceLocation {
   bool operator==(const SourceLocation&) const = default;
 };
 
+// `line:col`, as messages that point at a second place write it.
+std::string location_text(SourceLocation at);
+
 enum class Severity { error, warning };
 
 // One message about user content, printed as `file:line:col: message`.

@@ -101,10 +101,15 @@ class Scene {
   std::size_t placement_evaluations() const { return placement_evaluations_; }
 
  private:
-  enum class DefinitionKind { face, polyline, object, generator, mesh, group, consolidated };
+  friend class DefinitionScope;
+  friend class DefinitionContext;
+
+  // What a name instantiates: a definition of a row of statement_kinds() (a group, or a kind that makes
+  // geometry), or the consolidated mesh, which no statement defines.
+  static constexpr Index consolidated_kind = no_index;
   struct Definition {
-    DefinitionKind kind;
-    Index index;
+    Index kind;   // row of statement_kinds(), or consolidated_kind
+    Index index;  // which of that kind's declarations
   };
   struct Placement {
     std::string path;
@@ -112,7 +117,7 @@ class Scene {
     Index top = 0;               // the top-level instance it belongs to
     Index group = no_index;      // where its instance statement is: a group, or no_index for top level
     Index statement = no_index;  // index of the statement there; no_index: the consolidated mesh itself
-    Definition target{DefinitionKind::group, no_index};
+    Definition target{no_index, no_index};
     bool references = false;  // its vertices are copied from other placements
     Piece world;
     std::vector<Index> reads;
@@ -123,29 +128,46 @@ class Scene {
   };
 
   Scene() = default;
+  // scene.cpp: the sliders and the names of definitions, then the whole evaluation.
+  void register_parameters(std::vector<Diagnostic>& errors);
+  void define_names(std::vector<Diagnostic>& errors);
   void build(std::vector<Diagnostic>& errors);
+  Diagnostic located(SourceLocation at, std::string message) const;
+
+  // instance_expansion.cpp: the placements of the instance tree, counted against the budget first.
+  void expand_roots(std::vector<Diagnostic>& errors);
   std::vector<double> group_expansion_sizes() const;
   // False (with the error) when `placements` cannot be numbered; throws BudgetError when over the budget.
   bool within_instance_budget(double placements, const InstanceDecl& crossing,
                               std::vector<Diagnostic>& errors) const;
   void expand(const InstanceDecl& decl, Index group, Index statement, Index parent, Index top,
               std::vector<Index>& stack, std::vector<Diagnostic>& errors);
+  void expand_group(Index group, Index placement, Index top, std::vector<Index>& stack,
+                    std::vector<Diagnostic>& errors);
+  void report_unknown_target(const InstanceDecl& decl, std::vector<Diagnostic>& errors) const;
   const InstanceDecl* statement(const Placement& p) const;
-  bool is_leaf(const Placement& p) const { return p.target.kind != DefinitionKind::group; }
+  bool is_group(const Definition& d) const;
+  bool is_leaf(const Placement& p) const { return !is_group(p.target); }
+
+  // placement_evaluation.cpp: one placement's piece in world space, and the passes over many.
   Piece evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors);
   Piece definition_piece(const Placement& p, std::vector<Index>& reads, std::vector<Diagnostic>& errors);
   glm::dmat4 world_matrix(Index placement, std::vector<Index>& reads) const;
   std::optional<Color> placement_color(Index placement, std::vector<Index>& reads) const;
   Color surface_color(const Name& surface, std::vector<Index>& reads) const;
-  void index_vertex_names();
-  const VertexRef* lookup_vertex(const Name& name, std::vector<Diagnostic>& errors) const;
+  void mark_references(const std::vector<Index>& placements);
   // Returns the BudgetError message when the pieces' faces passed the face budget (evaluation stopped).
   std::optional<std::string> evaluate_all(const std::vector<Index>& placements,
                                           std::vector<Diagnostic>& errors);
+
+  // vertex_names.cpp: names by unique suffix.
+  void index_vertex_names();
+  const VertexRef* lookup_vertex(const Name& name, std::vector<Diagnostic>& errors) const;
+  std::vector<std::string> resolve_deleted(const std::vector<Name>& names, std::vector<Diagnostic>& errors);
+
+  // assembly.cpp: the placements of one top-level instance joined into its geometry.
   void assemble(Index top);
   void assemble_all();
-  std::vector<std::string> resolve_deleted(const std::vector<Name>& names, std::vector<Diagnostic>& errors);
-  Diagnostic located(SourceLocation at, std::string message) const;
 
   SceneAst ast_;
   SceneOptions options_;

@@ -1,0 +1,16 @@
+#pragma once
+
+#include "nome/scene/piece.hpp"
+
+namespace nome::scene {
+
+// Funnel (report 6.3): the n-gon base circle of radius ro at z = 0 (vertices bc0..bc{n-1}) joined by n
+// quads (f0..) to the high circle of radius ro*(1+ratio) at z = h (hc0..); vertex i at 360*i/n degrees
+// from +x. Faces are oriented with their normals pointing away from the axis.
+struct FunnelParams {
+  int n = 8;
+  double ro = 1, ratio = 0, h = 1;
+};
+Piece funnel(const FunnelParams& p);
+
+}  // namespace nome::scene

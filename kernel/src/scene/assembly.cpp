@@ -1,0 +1,97 @@
+// The placements of each top-level instance joined into its geometry (deleted faces left out), and all
+// top-level instances as one soup.
+#include <unordered_set>
+
+#include "nome/scene/scene.hpp"
+
+namespace nome::scene {
+namespace {
+
+bool is_same_topology(const PolygonSoup& a, const PolygonSoup& b) {
+  return a.num_vertices() == b.num_vertices() && a.face_offsets == b.face_offsets &&
+         a.face_vertices == b.face_vertices;
+}
+
+// Appends the piece's faces but the deleted ones, and its vertices unless every face using them is
+// deleted; returns whether any appended face carries its own colour.
+bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::string>& deleted) {
+  const PolygonSoup& s = piece.soup;
+  std::vector<unsigned char> is_used(s.num_vertices(), 0), is_kept(s.num_vertices(), 0);
+  for (Index f = 0; f < s.num_faces(); ++f) {
+    const bool keep = !deleted.count(s.face_names[f]);
+    for (Index c = s.face_offsets[f]; c < s.face_offsets[f + 1]; ++c) {
+      is_used[s.face_vertices[c]] = 1;
+      if (keep) is_kept[s.face_vertices[c]] = 1;
+    }
+  }
+  std::vector<Index> new_id(s.num_vertices(), no_index);
+  for (Index v = 0; v < s.num_vertices(); ++v)
+    if (is_kept[v] || !is_used[v]) new_id[v] = out.add_vertex(s.positions[v], s.vertex_names[v]);
+  bool has_color = false;
+  for (Index f = 0; f < s.num_faces(); ++f) {
+    if (deleted.count(s.face_names[f])) continue;
+    std::vector<Index> corners;
+    for (Index c = s.face_offsets[f]; c < s.face_offsets[f + 1]; ++c)
+      corners.push_back(new_id[s.face_vertices[c]]);
+    out.add_face(corners, s.face_names[f]);
+    out.soup.face_colors.back() = s.face_colors[f];
+    out.face_has_color.back() = piece.face_has_color[f];
+    has_color = has_color || piece.face_has_color[f];
+  }
+  for (auto [a, b] : s.sharp_edges)
+    if (new_id[a] != no_index && new_id[b] != no_index)
+      out.soup.sharp_edges.emplace_back(new_id[a], new_id[b]);
+  for (const RimLine& r : piece.rims) {
+    RimLine rim{r.name, {}, r.is_loop};
+    for (Index v : r.vertices) rim.vertices.push_back(new_id[v]);
+    out.rims.push_back(std::move(rim));
+  }
+  return has_color;
+}
+
+}  // namespace
+
+void Scene::assemble(Index top) {
+  const std::unordered_set<std::string> deleted(deleted_.begin(), deleted_.end());
+  Piece out;
+  bool has_color = false;
+  for (const Placement& p : placements_)
+    if (p.top == top && is_leaf(p)) has_color = append_piece(out, p.world, deleted) || has_color;
+  if (!has_color) {
+    out.soup.face_colors.clear();
+  } else {
+    for (Index f = 0; f < out.soup.num_faces(); ++f)
+      if (!out.face_has_color[f]) out.soup.face_colors[f] = Color(0.75f);
+  }
+  SceneInstance& inst = instances_[top];
+  if (!is_same_topology(inst.geometry.soup, out.soup) || inst.geometry_version == 0) ++inst.topology_version;
+  ++inst.geometry_version;
+  inst.geometry = std::move(out);
+}
+
+void Scene::assemble_all() {
+  for (Index t = 0; t < instances_.size(); ++t) assemble(t);
+}
+
+PolygonSoup Scene::combined_soup() const {
+  PolygonSoup out;
+  bool has_color = false;
+  for (const SceneInstance& i : instances_) has_color = has_color || !i.geometry.soup.face_colors.empty();
+  for (const SceneInstance& i : instances_) {
+    const PolygonSoup& s = i.geometry.soup;
+    const Index base = out.num_vertices();
+    out.positions.insert(out.positions.end(), s.positions.begin(), s.positions.end());
+    out.vertex_names.insert(out.vertex_names.end(), s.vertex_names.begin(), s.vertex_names.end());
+    for (Index f = 0; f < s.num_faces(); ++f) {
+      for (Index c = s.face_offsets[f]; c < s.face_offsets[f + 1]; ++c)
+        out.face_vertices.push_back(s.face_vertices[c] + base);
+      out.face_offsets.push_back(Index(out.face_vertices.size()));
+      if (has_color) out.face_colors.push_back(s.face_colors.empty() ? Color(0.75f) : s.face_colors[f]);
+    }
+    out.face_names.insert(out.face_names.end(), s.face_names.begin(), s.face_names.end());
+    for (auto [a, b] : s.sharp_edges) out.sharp_edges.emplace_back(a + base, b + base);
+  }
+  return out;
+}
+
+}  // namespace nome::scene

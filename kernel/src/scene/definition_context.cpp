@@ -1,0 +1,92 @@
+#include "scene/definition_context.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nome::scene {
+namespace {
+
+constexpr int max_ring_vertices = 100000;
+
+}  // namespace
+
+Index DefinitionScope::top_level_face(const std::string& name) const {
+  const auto it = scene_.definitions_.find(name);
+  if (it == scene_.definitions_.end() || it->second.kind == Scene::consolidated_kind ||
+      statement_kinds()[it->second.kind].keyword != "face")
+    return no_index;
+  return it->second.index;
+}
+
+double DefinitionContext::number(const Value& v) {
+  return evaluate(scene_.ast_.expressions, v, scene_.values_, &reads_);
+}
+
+int DefinitionContext::whole(const Value& v, int min, const char* what) {
+  const double x = number(v);
+  if (std::abs(x - std::round(x)) > 1e-9 || x < min || x > max_ring_vertices)
+    throw EvaluationError(v.location, std::string(what) + " must be a whole number in [" +
+                                          std::to_string(min) + ", " + std::to_string(max_ring_vertices) +
+                                          "], found " + format_number(x));
+  return int(std::lround(x));
+}
+
+double DefinitionContext::positive(const Value& v, const char* what) {
+  const double x = number(v);
+  if (!(x > 0))
+    throw EvaluationError(v.location, std::string(what) + " must be positive, found " + format_number(x));
+  return x;
+}
+
+double DefinitionContext::ratio(const Value& v) {
+  const double x = number(v);
+  if (!(x > -1)) throw EvaluationError(v.location, "ratio must be above -1, found " + format_number(x));
+  return x;
+}
+
+Index DefinitionContext::vertex(const Name& name) {
+  const bool is_pt = is_point(name.text);
+  const std::string key = (is_pt ? "p:" : "r:") + name.text;
+  if (const auto it = local_.find(key); it != local_.end()) return it->second;
+  Index v = no_index;
+  if (is_pt) {
+    const PointDecl& pt = scene_.ast_.points[scene_.points_.at(name.text)];
+    v = piece_.add_vertex({number(pt.xyz[0]), number(pt.xyz[1]), number(pt.xyz[2])}, name.text);
+  } else if (const Scene::VertexRef* ref = scene_.lookup_vertex(name, errors_)) {
+    const Scene::Placement& source = scene_.placements_[ref->placement];
+    v = piece_.add_vertex(source.world.soup.positions[ref->vertex],
+                          source.world.soup.vertex_names[ref->vertex]);
+    reads_.insert(reads_.end(), source.reads.begin(), source.reads.end());
+  }
+  if (v != no_index) local_[key] = v;
+  return v;
+}
+
+void DefinitionContext::add_face(const std::vector<Name>& names, const std::string& face_name,
+                                 const std::optional<Name>& surface) {
+  std::vector<Index> corners;
+  for (const Name& n : names) corners.push_back(vertex(n));
+  if (std::find(corners.begin(), corners.end(), no_index) != corners.end()) return;
+  piece_.add_face(corners, face_name);
+  if (surface) {
+    piece_.soup.face_colors.back() = surface_color(*surface);
+    piece_.face_has_color.back() = 1;
+  }
+}
+
+void DefinitionContext::add_rim(const Name& name, const std::vector<Name>& vertices, bool is_loop) {
+  RimLine rim{name.text, {}, is_loop};
+  for (const Name& n : vertices) rim.vertices.push_back(vertex(n));
+  if (std::find(rim.vertices.begin(), rim.vertices.end(), no_index) == rim.vertices.end())
+    piece_.rims.push_back(std::move(rim));
+}
+
+Color DefinitionContext::surface_color(const Name& surface) {
+  return scene_.surface_color(surface, reads_);
+}
+
+void DefinitionContext::error(SourceLocation at, std::string message) {
+  errors_.push_back(scene_.located(at, std::move(message)));
+}
+
+}  // namespace nome::scene

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "nome/scene/scene.hpp"
+#include "nome/scene/statement_kinds.hpp"
+
+namespace nome::scene {
+
+// What a definition kind may look up in the scene without evaluating anything.
+class DefinitionScope {
+ public:
+  explicit DefinitionScope(const Scene& scene) : scene_(scene) {}
+  const SceneAst& ast() const { return scene_.ast_; }
+  bool is_point(const std::string& name) const { return scene_.points_.count(name) > 0; }
+  // The top-level face definition of that name (objects are made of them), or no_index.
+  Index top_level_face(const std::string& name) const;
+
+ protected:
+  const Scene& scene_;
+};
+
+// One definition being evaluated into a piece: its numbers (recording the sliders they read), its
+// vertices (points, or other placements' vertices by unique name suffix, whose world positions are
+// copied), faces, rim lines, and the errors found on the way.
+class DefinitionContext : public DefinitionScope {
+ public:
+  DefinitionContext(const Scene& scene, std::vector<Index>& reads, std::vector<Diagnostic>& errors)
+      : DefinitionScope(scene), reads_(reads), errors_(errors) {}
+
+  double number(const Value& v);
+  // A whole number in [min, 100000] (a generator makes at most 100,000 segments).
+  int whole(const Value& v, int min, const char* what);
+  double positive(const Value& v, const char* what);
+  // A funnel's ratio: above -1, so that the high circle keeps a positive radius.
+  double ratio(const Value& v);
+
+  // The piece's vertex for a name: a point, or a placed vertex; no_index (with the error) if unknown.
+  Index vertex(const Name& name);
+  // A face over named vertices; left out when one of them is unknown.
+  void add_face(const std::vector<Name>& names, const std::string& face_name,
+                const std::optional<Name>& surface);
+  void add_rim(const Name& name, const std::vector<Name>& vertices, bool is_loop);
+  Color surface_color(const Name& surface);
+  void error(SourceLocation at, std::string message);
+
+  Piece& piece() { return piece_; }
+
+ private:
+  std::vector<Index>& reads_;
+  std::vector<Diagnostic>& errors_;
+  Piece piece_;
+  std::unordered_map<std::string, Index> local_;  // "p:NAME" (a point) or "r:NAME" (a reference) -> vertex
+};
+
+}  // namespace nome::scene

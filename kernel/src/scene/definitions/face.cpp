@@ -1,0 +1,46 @@
+// `face NAME (v1 v2 ...) [surface S] endface` at top level: one face, instantiable or part of objects.
+#include "nome/scene/statement_kinds.hpp"
+#include "scene/definition_context.hpp"
+#include "scene/scene_writer.hpp"
+#include "scene/statement_parser.hpp"
+
+namespace nome::scene {
+namespace {
+
+void parse(StatementParser& parser, Index) {
+  parser.ast().faces.push_back(parser.face_statement());
+}
+
+void save(SceneWriter& writer, Index) {
+  for (const FaceDecl& f : writer.ast().faces) writer.face(f, "");
+}
+
+void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+  for (Index i = 0; i < ast.faces.size(); ++i) out.push_back({&ast.faces[i].name, i});
+}
+
+Piece evaluate(DefinitionContext& context, Index decl) {
+  const FaceDecl& f = context.ast().faces[decl];
+  context.add_face(f.vertices, f.name.text, f.surface);
+  return std::move(context.piece());
+}
+
+void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+  out.push_back(&scope.ast().faces[decl].vertices);
+}
+
+}  // namespace
+
+StatementKind face_statement() {
+  return {.keyword = "face",
+          .end_keyword = "endface",
+          .is_slf = true,
+          .parse = parse,
+          .save = save,
+          .declare = declare,
+          .evaluate = evaluate,
+          .vertex_lists = vertex_lists,
+          .example = "(p0 p1 p2)"};
+}
+
+}  // namespace nome::scene

@@ -1,0 +1,87 @@
+// `mesh NAME face ... endface ... [sharp (v1 v2 ...) endsharp] endmesh`: faces over named vertices.
+#include "nome/scene/statement_kinds.hpp"
+#include "scene/definition_context.hpp"
+#include "scene/scene_writer.hpp"
+#include "scene/statement_parser.hpp"
+
+namespace nome::scene {
+namespace {
+
+SharpDecl sharp(StatementParser& parser) {
+  parser.set_statement_end("endsharp");
+  SharpDecl s;
+  s.location = parser.take().location;
+  s.vertices = parser.name_list("a vertex name or ')'");
+  if (s.vertices.size() < 2)
+    parser.diagnostics().error(s.location,
+                               "sharp needs at least 2 vertices, found " + std::to_string(s.vertices.size()));
+  parser.expect_word("endsharp");
+  return s;
+}
+
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  const Token opener = parser.take();
+  MeshDecl m;
+  m.name = parser.take_name("a mesh name");
+  const BlockContext inner{{"face", "sharp"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
+    const size_t start = parser.position();
+    try {
+      if (parser.peek().is_word("face"))
+        m.faces.push_back(parser.face_statement());
+      else if (parser.peek().is_word("sharp"))
+        m.sharps.push_back(sharp(parser));
+      else
+        parser.fail(parser.peek(), "'face', 'sharp' or 'endmesh'");
+    } catch (const SyntaxError&) {
+      parser.resynchronise(inner, start);
+    }
+  }
+  parser.ast().meshes.push_back(std::move(m));
+}
+
+void save(SceneWriter& writer, Index) {
+  for (const MeshDecl& m : writer.ast().meshes) {
+    writer.out() << "mesh " << m.name.text << "\n";
+    for (const FaceDecl& f : m.faces) writer.face(f, "    ");
+    for (const SharpDecl& s : m.sharps)
+      writer.out() << "    sharp (" << writer.names(s.vertices) << ") endsharp\n";
+    writer.out() << "endmesh\n";
+  }
+}
+
+void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+  for (Index i = 0; i < ast.meshes.size(); ++i) out.push_back({&ast.meshes[i].name, i});
+}
+
+Piece evaluate(DefinitionContext& context, Index decl) {
+  const MeshDecl& m = context.ast().meshes[decl];
+  for (const FaceDecl& f : m.faces) context.add_face(f.vertices, f.name.text, f.surface);
+  // A sharp chain v1-v2, v2-v3, ... marks the edges between consecutive vertices.
+  for (const SharpDecl& s : m.sharps)
+    for (size_t i = 0; i + 1 < s.vertices.size(); ++i) {
+      const Index a = context.vertex(s.vertices[i]), b = context.vertex(s.vertices[i + 1]);
+      if (a != no_index && b != no_index) context.piece().soup.sharp_edges.emplace_back(a, b);
+    }
+  return std::move(context.piece());
+}
+
+void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+  for (const FaceDecl& f : scope.ast().meshes[decl].faces) out.push_back(&f.vertices);
+}
+
+}  // namespace
+
+StatementKind mesh_statement() {
+  return {.keyword = "mesh",
+          .end_keyword = "endmesh",
+          .parse = parse,
+          .save = save,
+          .declare = declare,
+          .evaluate = evaluate,
+          .vertex_lists = vertex_lists,
+          .example = "face f (p0 p1 p2) endface face g (p0 p2 p3) endface sharp (p0 p2) endsharp"};
+}
+
+}  // namespace nome::scene

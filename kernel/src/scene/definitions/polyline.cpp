@@ -1,0 +1,63 @@
+// `polyline NAME (v1 v2 ...) [isloop] endpolyline`: a rim line over named vertices.
+#include "nome/scene/statement_kinds.hpp"
+#include "scene/definition_context.hpp"
+#include "scene/scene_writer.hpp"
+#include "scene/statement_parser.hpp"
+
+namespace nome::scene {
+namespace {
+
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  parser.set_statement_end(end);
+  parser.take();
+  PolylineDecl p;
+  p.name = parser.take_name("a polyline name");
+  const Token open = parser.peek();
+  p.vertices = parser.name_list("a vertex name or ')'");
+  if (p.vertices.size() < 2)
+    parser.diagnostics().error(open.location, "polyline '" + p.name.text +
+                                                  "' needs at least 2 vertices, found " +
+                                                  std::to_string(p.vertices.size()));
+  if (parser.peek().is_word("isloop")) {
+    parser.take();
+    p.is_loop = true;
+  }
+  parser.expect_word(end);
+  parser.ast().polylines.push_back(std::move(p));
+}
+
+void save(SceneWriter& writer, Index) {
+  for (const PolylineDecl& p : writer.ast().polylines)
+    writer.out() << "polyline " << p.name.text << " (" << writer.names(p.vertices) << ")"
+                 << (p.is_loop ? " isloop" : "") << " endpolyline\n";
+}
+
+void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+  for (Index i = 0; i < ast.polylines.size(); ++i) out.push_back({&ast.polylines[i].name, i});
+}
+
+Piece evaluate(DefinitionContext& context, Index decl) {
+  const PolylineDecl& line = context.ast().polylines[decl];
+  context.add_rim(line.name, line.vertices, line.is_loop);
+  return std::move(context.piece());
+}
+
+void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+  out.push_back(&scope.ast().polylines[decl].vertices);
+}
+
+}  // namespace
+
+StatementKind polyline_statement() {
+  return {.keyword = "polyline",
+          .end_keyword = "endpolyline",
+          .parse = parse,
+          .save = save,
+          .declare = declare,
+          .evaluate = evaluate,
+          .vertex_lists = vertex_lists,
+          .example = "(p0 p1 p2) isloop"};
+}
+
+}  // namespace nome::scene

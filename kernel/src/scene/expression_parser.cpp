@@ -1,0 +1,177 @@
+// The expression grammar of `{expr ...}` values: comparison, sum, product, unary and power, primaries.
+#include <algorithm>
+
+#include "scene/statement_parser.hpp"
+
+namespace nome::scene {
+namespace {
+
+// Expressions are parsed and evaluated recursively: deeper ones (a million parentheses, a sum of
+// 200,000 terms) would overflow the stack, so they are refused. No real scene comes close.
+constexpr int max_expression_depth = 256;
+
+// Counts one level of recursion for as long as it lives.
+struct DepthGuard {
+  explicit DepthGuard(int& depth) : depth_(++depth) {}
+  ~DepthGuard() { --depth_; }
+  DepthGuard(const DepthGuard&) = delete;
+  DepthGuard& operator=(const DepthGuard&) = delete;
+  int& depth_;
+};
+
+}  // namespace
+
+Value StatementParser::value() {
+  const Token start = peek();
+  if (start.is_symbol("{")) {
+    take();
+    if (peek().is_word("expr")) take();
+    const ExprId e = expression();
+    expect_symbol("}");
+    return {0, e, start.location};
+  }
+  if (start.kind == TokenKind::parameter) return {0, primary(), start.location};
+  if (start.kind == TokenKind::number || start.is_symbol("-") || start.is_symbol("+")) return literal_value();
+  fail(start, "a number or '{expr ...}'");
+}
+
+ExprId StatementParser::node(ExprOp op, SourceLocation at, ExprId a, ExprId b) {
+  int depth = 1;
+  for (ExprId child : {a, b})
+    if (child != no_index) depth = std::max(depth, expression_depth_[child] + 1);
+  if (depth > max_expression_depth) expression_too_deep(at);
+  ExprNode n;
+  n.op = op;
+  n.location = at;
+  n.args[0] = a;
+  n.args[1] = b;
+  const ExprId id = ast_.expressions.add(std::move(n));
+  expression_depth_.resize(size_t(id) + 1, 0);
+  expression_depth_[id] = depth;
+  return id;
+}
+
+void StatementParser::expression_too_deep(SourceLocation at) {
+  diagnostics_.error(at,
+                     "expression nested more than " + std::to_string(max_expression_depth) + " levels deep");
+  throw SyntaxError{};
+}
+
+ExprId StatementParser::expression() {
+  const ExprId left = additive();
+  static constexpr std::pair<const char*, ExprOp> comparisons[] = {
+      {"<", ExprOp::less},           {"<=", ExprOp::less_equal}, {">", ExprOp::greater},
+      {">=", ExprOp::greater_equal}, {"==", ExprOp::equal},      {"!=", ExprOp::not_equal}};
+  for (auto [text, op] : comparisons)
+    if (peek().is_symbol(text)) {
+      const Token t = take();
+      return node(op, t.location, left, additive());
+    }
+  return left;
+}
+
+ExprId StatementParser::additive() {
+  ExprId left = term();
+  while (peek().is_symbol("+") || peek().is_symbol("-")) {
+    const Token t = take();
+    left = node(t.text == "+" ? ExprOp::add : ExprOp::subtract, t.location, left, term());
+  }
+  return left;
+}
+
+ExprId StatementParser::term() {
+  ExprId left = unary();
+  while (peek().is_symbol("*") || peek().is_symbol("/") || peek().is_symbol("%")) {
+    const Token t = take();
+    const ExprOp op = t.text == "*" ? ExprOp::multiply : t.text == "/" ? ExprOp::divide : ExprOp::modulo;
+    left = node(op, t.location, left, unary());
+  }
+  return left;
+}
+
+ExprId StatementParser::unary() {
+  // Every recursion of the expression grammar passes here.
+  const DepthGuard guard(parse_depth_);
+  if (parse_depth_ > max_expression_depth) expression_too_deep(peek().location);
+  if (peek().is_symbol("-")) {
+    const Token t = take();
+    return node(ExprOp::negate, t.location, unary());
+  }
+  if (peek().is_symbol("+")) {
+    take();
+    return unary();
+  }
+  const ExprId base = primary();
+  if (peek().is_symbol("^")) {
+    const Token t = take();
+    return node(ExprOp::power, t.location, base, unary());
+  }
+  return base;
+}
+
+ExprId StatementParser::primary() {
+  const Token t = peek();
+  if (t.kind == TokenKind::number) {
+    take();
+    const ExprId id = node(ExprOp::number, t.location);
+    ast_.expressions.node(id).number = t.number;
+    return id;
+  }
+  if (t.kind == TokenKind::parameter) {
+    take();
+    const ExprId id = node(ExprOp::parameter, t.location);
+    ast_.expressions.node(id).parameter_name = normalize_name(t.text);
+    return id;
+  }
+  if (t.is_symbol("(")) {
+    take();
+    const ExprId inner = expression();
+    expect_symbol(")");
+    return inner;
+  }
+  if (t.is_word("pi")) {
+    take();
+    return node(ExprOp::pi, t.location);
+  }
+  if (t.kind == TokenKind::word && peek(1).is_symbol("(")) return call(t);
+  if (t.kind == TokenKind::word) {
+    diagnostics_.error(t.location,
+                       "unknown name '" + t.text + "' in an expression (parameters are written $bank_name)");
+    throw SyntaxError{};
+  }
+  fail(t, "a number, '$parameter', a function or '('");
+}
+
+ExprId StatementParser::call(const Token& t) {
+  Function f{};
+  int arity = 0;
+  if (!find_function(t.text, f, arity)) {
+    diagnostics_.error(t.location,
+                       "unknown function '" + t.text + "'" +
+                           did_you_mean(t.text, {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt",
+                                                 "abs", "pow", "exp", "log", "floor", "ceil", "min", "max"}));
+    throw SyntaxError{};
+  }
+  take();
+  take();
+  ExprId args[2] = {no_index, no_index};
+  int n = 0;
+  if (!peek().is_symbol(")")) {
+    do {
+      const ExprId a = expression();
+      if (n < 2) args[n] = a;
+      ++n;
+    } while (peek().is_symbol(",") && (take(), true));
+  }
+  expect_symbol(")");
+  if (n != arity) {
+    diagnostics_.error(t.location, "function '" + t.text + "' takes " + std::to_string(arity) + " argument" +
+                                       (arity == 1 ? "" : "s") + ", found " + std::to_string(n));
+    throw SyntaxError{};
+  }
+  const ExprId id = node(ExprOp::call, t.location, args[0], args[1]);
+  ast_.expressions.node(id).function = f;
+  return id;
+}
+
+}  // namespace nome::scene

@@ -1,0 +1,34 @@
+// `funnel NAME (n ro ratio h) endfunnel` (report 6.3).
+#include "nome/scene/generators/funnel.hpp"
+#include "scene/generators/generator_support.hpp"
+
+namespace nome::scene {
+
+Piece funnel(const FunnelParams& p) {
+  require(p.n >= 3, "funnel: n must be at least 3");
+  Piece piece;
+  const Index base = ring(piece, p.n, p.ro, 0, "bc");
+  const Index high = ring(piece, p.n, p.ro * (1 + p.ratio), p.h, "hc");
+  band(piece, p.n, base, high, "f");
+  return piece;
+}
+
+namespace {
+
+Piece evaluate(DefinitionContext& c, Index decl) {
+  const std::vector<Value>& a = generator_arguments(c, decl);
+  return funnel({c.whole(a[0], 3, "n"), c.positive(a[1], "ro"), c.ratio(a[2]), c.number(a[3])});
+}
+
+}  // namespace
+
+StatementKind funnel_statement() {
+  return with_generator_syntax({.keyword = "funnel",
+                                .end_keyword = "endfunnel",
+                                .signature = "(n ro ratio h)",
+                                .argument_count = 4,
+                                .evaluate = evaluate,
+                                .example = "(4 1 0.5 1)"});
+}
+
+}  // namespace nome::scene

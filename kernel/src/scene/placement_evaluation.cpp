@@ -1,0 +1,197 @@
+// A placement's piece in world space: its definition evaluated by the definition's kind, moved by the
+// transforms of its instance statement and its ancestors', coloured by the nearest surface, named by
+// its path; and the passes that evaluate many placements within the face budget.
+#include <algorithm>
+#include <cstdio>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
+#include "nome/scene/scene.hpp"
+#include "nome/scene/statement_kinds.hpp"
+#include "scene/definition_context.hpp"
+#include "scene/index_sets.hpp"
+
+namespace nome::scene {
+namespace {
+
+// One transform as a matrix; `a` holds its evaluated arguments.
+glm::dmat4 transform_matrix(const TransformDecl& t, const double* a) {
+  const Vec3 v(a[0], a[1], a[2]);
+  switch (t.kind) {
+    case TransformKind::translate:
+      return glm::translate(glm::dmat4(1.0), v);
+    case TransformKind::scale:
+      return glm::scale(glm::dmat4(1.0), v);
+    case TransformKind::rotate:
+      if (glm::length(v) == 0) throw EvaluationError(t.location, "rotate needs a non-zero axis");
+      return glm::rotate(glm::dmat4(1.0), a[3] * std::numbers::pi / 180, glm::normalize(v));
+    case TransformKind::mirror:
+      break;
+  }
+  // Reflection in the plane a x + b y + c z + d = 0: p' = p - 2 (n.p + d) n / |n|^2.
+  const double nn = glm::dot(v, v);
+  if (nn == 0) throw EvaluationError(t.location, "mirror needs a non-zero plane normal (a b c)");
+  glm::dmat4 step(1.0);
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) step[c][r] = (r == c ? 1.0 : 0.0) - 2 * v[r] * v[c] / nn;
+  for (int r = 0; r < 3; ++r) step[3][r] = -2 * a[3] * v[r] / nn;
+  return step;
+}
+
+// A reflection turns every face inside out: reverse the corner order so normals stay outward.
+void reverse_faces(PolygonSoup& soup) {
+  for (Index f = 0; f < soup.num_faces(); ++f)
+    std::reverse(soup.face_vertices.begin() + soup.face_offsets[f],
+                 soup.face_vertices.begin() + soup.face_offsets[f + 1]);
+}
+
+}  // namespace
+
+glm::dmat4 Scene::world_matrix(Index placement, std::vector<Index>& reads) const {
+  glm::dmat4 m(1.0);
+  for (Index p = placement; p != no_index; p = placements_[p].parent) {
+    const InstanceDecl* decl = statement(placements_[p]);
+    if (!decl) continue;
+    glm::dmat4 local(1.0);
+    for (const TransformDecl& t : decl->transforms) {
+      double a[4];
+      const int count = t.kind == TransformKind::translate || t.kind == TransformKind::scale ? 3 : 4;
+      for (int k = 0; k < count; ++k) a[k] = evaluate(ast_.expressions, t.args[k], values_, &reads);
+      local = transform_matrix(t, a) * local;
+    }
+    m = local * m;
+  }
+  return m;
+}
+
+Color Scene::surface_color(const Name& surface, std::vector<Index>& reads) const {
+  const auto it = surfaces_.find(surface.text);
+  if (it == surfaces_.end()) {
+    std::vector<std::string> names;
+    for (const auto& [n, i] : surfaces_) names.push_back(n);
+    throw EvaluationError(surface.location,
+                          "unknown surface '" + surface.text + "'" + did_you_mean(surface.text, names));
+  }
+  const SurfaceDecl& s = ast_.surfaces[it->second];
+  Color c;
+  for (int k = 0; k < 3; ++k)
+    c[k] = float(std::clamp(evaluate(ast_.expressions, s.rgb[k], values_, &reads), 0.0, 1.0));
+  return c;
+}
+
+std::optional<Color> Scene::placement_color(Index placement, std::vector<Index>& reads) const {
+  for (Index p = placement; p != no_index; p = placements_[p].parent) {
+    const InstanceDecl* decl = statement(placements_[p]);
+    if (decl && decl->surface) return surface_color(*decl->surface, reads);
+  }
+  return std::nullopt;
+}
+
+Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads,
+                              std::vector<Diagnostic>& errors) {
+  DefinitionContext context(*this, reads, errors);
+  if (p.target.kind != consolidated_kind)
+    return statement_kinds()[p.target.kind].evaluate(context, p.target.index);
+  const size_t first_error = errors.size();
+  for (size_t i = 0; i < ast_.consolidated_faces.size(); ++i)
+    context.add_face(ast_.consolidated_faces[i].vertices, "cf" + std::to_string(i), std::nullopt);
+  // The names are located in the file that gave them: the scene, or an .anom file's working mesh.
+  if (!consolidated_file_.empty())
+    for (size_t e = first_error; e < errors.size(); ++e) errors[e].file = consolidated_file_;
+  return std::move(context.piece());
+}
+
+Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors) {
+  ++placement_evaluations_;
+  reads.clear();
+  const Placement& p = placements_[placement];
+  try {
+    const glm::dmat4 m = world_matrix(placement, reads);
+    const std::optional<Color> color = placement_color(placement, reads);
+    Piece piece = definition_piece(p, reads, errors);
+    for (Vec3& x : piece.soup.positions) x = Vec3(m * glm::dvec4(x, 1.0));
+    if (glm::determinant(m) < 0) reverse_faces(piece.soup);
+    for (std::string& n : piece.soup.vertex_names) n = p.path + "_" + n;
+    for (std::string& n : piece.soup.face_names) n = p.path + "_" + n;
+    for (RimLine& r : piece.rims) r.name = r.name.empty() ? p.path : p.path + "_" + r.name;
+    if (color)
+      for (Index f = 0; f < piece.soup.num_faces(); ++f)
+        if (!piece.face_has_color[f]) {
+          piece.soup.face_colors[f] = *color;
+          piece.face_has_color[f] = 1;
+        }
+    sort_unique(reads);
+    return piece;
+  } catch (const EvaluationError& e) {
+    errors.push_back(located(e.where(), e.what()));
+  }
+  sort_unique(reads);
+  return {};
+}
+
+// A placement references other placements when its definition names a vertex that is not a point.
+void Scene::mark_references(const std::vector<Index>& placements) {
+  const DefinitionScope scope(*this);
+  for (Index i : placements) {
+    Placement& p = placements_[i];
+    if (p.target.kind == consolidated_kind) {
+      p.references = true;
+      continue;
+    }
+    const StatementKind& kind = statement_kinds()[p.target.kind];
+    if (!kind.vertex_lists) continue;
+    std::vector<const std::vector<Name>*> lists;
+    kind.vertex_lists(scope, p.target.index, lists);
+    p.references = std::any_of(lists.begin(), lists.end(), [&](const std::vector<Name>* names) {
+      return std::any_of(names->begin(), names->end(),
+                         [&](const Name& n) { return !scope.is_point(n.text); });
+    });
+  }
+}
+
+std::optional<std::string> Scene::evaluate_all(const std::vector<Index>& placements,
+                                               std::vector<Diagnostic>& errors) {
+  // The faces of every piece, those about to be made again left out; each new piece is counted in as it
+  // comes, so that evaluation stops within one piece (at most a generator's 100,000 segments) of the budget.
+  double faces = 0;
+  for (const Placement& p : placements_) faces += p.world.soup.num_faces();
+  for (Index i : placements) faces -= placements_[i].world.soup.num_faces();
+  Index evaluated = 0;
+  const auto over_budget = [&](Index i) -> std::optional<std::string> {
+    faces += placements_[i].world.soup.num_faces();
+    ++evaluated;
+    if (options_.force || faces <= double(options_.face_budget)) return std::nullopt;
+    // The pieces not made yet are taken to be as large as those made so far.
+    const double estimate = faces / evaluated * double(placements.size());
+    char count[32];
+    std::snprintf(count, sizeof count, "%.0f", std::max(estimate, faces));
+    const InstanceDecl* at = statement(placements_[i]);
+    return located(at ? at->location : SourceLocation{}, std::string("the scene's pieces would have about ") +
+                                                             count + " faces, over the budget of " +
+                                                             std::to_string(options_.face_budget))
+        .to_string();
+  };
+  mark_references(placements);
+  // Placements whose vertices others copy go first; the name index follows their vertex names.
+  bool has_new_names = vertex_suffixes_.empty();
+  for (const bool is_referencing : {false, true}) {
+    if (is_referencing && has_new_names) index_vertex_names();
+    for (Index i : placements) {
+      if (placements_[i].references != is_referencing) continue;
+      std::vector<Index> reads;
+      Piece piece = evaluate_placement(i, reads, errors);
+      Placement& p = placements_[i];
+      has_new_names =
+          has_new_names || (!is_referencing && piece.soup.vertex_names != p.world.soup.vertex_names);
+      p.world = std::move(piece);
+      p.reads = std::move(reads);
+      if (auto over = over_budget(i)) return over;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace nome::scene

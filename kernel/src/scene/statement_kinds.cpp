@@ -1,0 +1,65 @@
+// The one table of the .nome language's statements. Each row is made by its statement's own file (its
+// keywords, argument shape, parser, writer and evaluator); this file only lists them. To add a generator:
+// write generators/NAME.cpp (its geometry, its evaluator and NAME_statement() returning its row), declare
+// NAME_statement() below and add it to the table; then its section in docs/language.md and its tests.
+#include "nome/scene/statement_kinds.hpp"
+
+#include <algorithm>
+
+namespace nome::scene {
+
+StatementKind bank_statement();
+StatementKind surface_statement();
+StatementKind point_statement();
+StatementKind polyline_statement();
+StatementKind face_statement();
+StatementKind object_statement();
+StatementKind funnel_statement();
+StatementKind tunnel_statement();
+StatementKind circle_statement();
+StatementKind mobius_strip_statement();
+StatementKind mesh_statement();
+StatementKind group_statement();
+StatementKind instance_statement();
+StatementKind delete_statement();
+StatementKind consolidate_statement();
+
+std::span<const StatementKind> statement_kinds() {
+  // In the order error messages list the keywords and the writer writes the statements (any order
+  // reads back: names are resolved after parsing).
+  static const std::vector<StatementKind> table = {
+      bank_statement(),          // sliders
+      surface_statement(),       // a colour
+      point_statement(),         // a named position
+      polyline_statement(),      // a rim line over named vertices
+      face_statement(),          // one face over named vertices
+      object_statement(),        // a mesh of top-level faces
+      funnel_statement(),        // generator (report 6.3)
+      tunnel_statement(),        // generator: two funnels
+      circle_statement(),        // generator: a closed rim line
+      mobius_strip_statement(),  // generator: mobiusstrip
+      mesh_statement(),          // faces and sharp edges over named vertices
+      group_statement(),         // instances
+      instance_statement(),      // a top-level instance: a root of the scene
+      delete_statement(),        // faces deleted by name
+      consolidate_statement(),   // the consolidated mesh
+  };
+  return table;
+}
+
+std::optional<Index> find_statement_kind(std::string_view keyword) {
+  const std::span<const StatementKind> kinds = statement_kinds();
+  const auto it =
+      std::find_if(kinds.begin(), kinds.end(), [&](const StatementKind& k) { return k.keyword == keyword; });
+  if (it == kinds.end()) return std::nullopt;
+  return Index(it - kinds.begin());
+}
+
+std::string statement_keyword_list(bool is_slf) {
+  std::string list;
+  for (const StatementKind& k : statement_kinds())
+    if (!is_slf || k.is_slf) list += (list.empty() ? "" : ", ") + std::string(k.keyword);
+  return list;
+}
+
+}  // namespace nome::scene

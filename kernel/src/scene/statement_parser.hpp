@@ -1,0 +1,100 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "nome/scene/ast.hpp"
+#include "nome/scene/lexer.hpp"
+#include "nome/scene/parser.hpp"
+#include "nome/scene/statement_kinds.hpp"
+
+namespace nome::scene {
+
+// Thrown after a syntax error has been reported: unwinds to the statement loop that resynchronises.
+struct SyntaxError {};
+
+// Where the parser is: which tokens start a statement here and which word closes the enclosing block.
+struct BlockContext {
+  std::vector<std::string_view> starters;
+  std::string_view end_word;
+};
+
+// The tokens of one text and the AST being built, with what every statement's parser needs: taking
+// tokens, reporting `expected X, found Y`, values, expressions, names, blocks and resynchronising.
+// The statements themselves are the rows of statement_kinds().
+class StatementParser {
+ public:
+  StatementParser(std::string_view text, Diagnostics& diagnostics, bool is_slf);
+
+  SceneAst parse_scene();
+  AnomAst parse_anom();
+
+  // --- tokens
+  const Token& peek(size_t ahead = 0) const { return tokens_[std::min(pos_ + ahead, tokens_.size() - 1)]; }
+  Token take();
+  [[noreturn]] void fail(const Token& found, const std::string& expected);
+  void expect_word(std::string_view word);
+  void expect_symbol(const char* symbol);
+  Name take_name(const char* what);
+  // The word that closes the statement being parsed: where resynchronising stops after an error in it.
+  void set_statement_end(std::string_view word) { statement_end_ = word; }
+  // True (and consumes it) at the block's end word. At the end of the input, or at a statement that cannot
+  // stand inside this block, reports the unclosed block at its opener and stops the block.
+  bool block_closed(const Token& opener, std::string_view end_word, const BlockContext& inner);
+  // Skips to the end of the failed statement or the next statement the context knows. Always moves on.
+  void resynchronise(const BlockContext& context, size_t statement_start);
+  size_t position() const { return pos_; }
+
+  // --- values and expressions
+  Value literal_value();
+  Value value();
+  // `( v v v )` with exactly `count` values.
+  void value_tuple(Value* out, int count, const char* what);
+
+  // --- shared pieces of statements
+  std::vector<Name> name_list(const char* what);
+  std::optional<Name> optional_surface();
+  FaceDecl face_statement();
+  InstanceDecl instance_statement();
+  std::vector<Name> vertex_blocks(std::string_view end_word, const Token& opener);
+  // .slf: colours are not read; say so once per use.
+  void ignore_surface(const Token& at, std::optional<Name>& surface);
+
+  bool is_slf() const { return is_slf_; }
+  SceneAst& ast() { return ast_; }
+  Diagnostics& diagnostics() { return diagnostics_; }
+
+ private:
+  // A closing word misspelt by a letter or two (hild.nom's `enintance`) is read as meant, with a warning.
+  bool near_miss(std::string_view end_word);
+  void top_level_statement();
+  void instance_transform(const Token& t, InstanceDecl& inst);
+  void skip_unsupported(const std::string& word);
+  void choose_slf_roots();
+  void anom_statement(AnomAst& anom, const BlockContext& top);
+
+  // The expression grammar (expression_parser.cpp).
+  ExprId node(ExprOp op, SourceLocation at, ExprId a = no_index, ExprId b = no_index);
+  [[noreturn]] void expression_too_deep(SourceLocation at);
+  ExprId expression();
+  ExprId additive();
+  ExprId term();
+  ExprId unary();
+  ExprId primary();
+  ExprId call(const Token& name);
+
+  Diagnostics& diagnostics_;
+  std::vector<Token> tokens_;
+  size_t pos_ = 0;
+  bool is_slf_ = false;             // the SLIDE subset of .slf files
+  std::string_view statement_end_;  // the word that closes the statement being parsed
+  SceneAst ast_;
+  std::vector<int> expression_depth_;  // height of each expression node's subtree
+  int parse_depth_ = 0;                // expression grammar levels being parsed
+};
+
+bool is_top_level_keyword(const Token& t);
+
+}  // namespace nome::scene

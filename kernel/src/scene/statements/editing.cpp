@@ -1,0 +1,71 @@
+// The editing model's statements (report 7.3.3): `delete face NAME endface ... enddelete` and
+// `consolidate consolidateface vertex N endvertex ... endconsolidateface ... endconsolidate`.
+#include "nome/scene/statement_kinds.hpp"
+#include "scene/scene_writer.hpp"
+#include "scene/statement_parser.hpp"
+
+namespace nome::scene {
+namespace {
+
+void parse_delete(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  const Token opener = parser.take();
+  const BlockContext inner{{"face"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
+    parser.set_statement_end("endface");
+    parser.expect_word("face");
+    parser.ast().deleted_faces.push_back(parser.take_name("a face name"));
+    parser.expect_word("endface");
+  }
+}
+
+// The deletions by full hierarchical name, as the scene resolved them.
+void save_delete(SceneWriter& writer, Index) {
+  const std::vector<std::string>& deleted = writer.scene().deleted_faces();
+  if (deleted.empty()) return;
+  writer.out() << "delete\n";
+  for (const std::string& f : deleted) writer.out() << "    face " << f << " endface\n";
+  writer.out() << "enddelete\n";
+}
+
+void parse_consolidate(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  const Token opener = parser.take();
+  const BlockContext inner{{"consolidateface"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
+    const Token face = parser.peek();
+    parser.expect_word("consolidateface");
+    NamedFace f{parser.vertex_blocks("endconsolidateface", face), face.location};
+    if (f.vertices.size() < 3)
+      parser.diagnostics().error(face.location, "a consolidated face needs at least 3 vertices, found " +
+                                                    std::to_string(f.vertices.size()));
+    parser.ast().consolidated_faces.push_back(std::move(f));
+  }
+}
+
+void save_consolidate(SceneWriter& writer, Index) {
+  const std::vector<NamedFace>& faces = writer.ast().consolidated_faces;
+  if (faces.empty()) return;
+  writer.out() << "consolidate\n";
+  for (const NamedFace& f : faces) {
+    writer.out() << "    consolidateface\n";
+    for (const Name& v : f.vertices) writer.out() << "        vertex " << v.text << " endvertex\n";
+    writer.out() << "    endconsolidateface\n";
+  }
+  writer.out() << "endconsolidate\n";
+}
+
+}  // namespace
+
+StatementKind delete_statement() {
+  return {.keyword = "delete", .end_keyword = "enddelete", .parse = parse_delete, .save = save_delete};
+}
+
+StatementKind consolidate_statement() {
+  return {.keyword = "consolidate",
+          .end_keyword = "endconsolidate",
+          .parse = parse_consolidate,
+          .save = save_consolidate};
+}
+
+}  // namespace nome::scene

@@ -1,0 +1,50 @@
+// `group NAME instance ... endgroup`: a definition made of instances, expanded by the scene.
+#include "nome/scene/statement_kinds.hpp"
+#include "scene/scene_writer.hpp"
+#include "scene/statement_parser.hpp"
+
+namespace nome::scene {
+namespace {
+
+void parse(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  const Token opener = parser.take();
+  GroupDecl g;
+  g.name = parser.take_name("a group name");
+  const BlockContext inner{{"instance"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
+    const size_t start = parser.position();
+    try {
+      if (!parser.peek().is_word("instance")) parser.fail(parser.peek(), "'instance' or 'endgroup'");
+      g.instances.push_back(parser.instance_statement());
+    } catch (const SyntaxError&) {
+      parser.resynchronise(inner, start);
+    }
+  }
+  parser.ast().groups.push_back(std::move(g));
+}
+
+void save(SceneWriter& writer, Index) {
+  for (const GroupDecl& g : writer.ast().groups) {
+    writer.out() << "group " << g.name.text << "\n";
+    for (const InstanceDecl& i : g.instances) writer.instance(i, "    ");
+    writer.out() << "endgroup\n";
+  }
+}
+
+void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+  for (Index i = 0; i < ast.groups.size(); ++i) out.push_back({&ast.groups[i].name, i});
+}
+
+}  // namespace
+
+StatementKind group_statement() {
+  return {.keyword = "group",
+          .end_keyword = "endgroup",
+          .is_slf = true,
+          .parse = parse,
+          .save = save,
+          .declare = declare};
+}
+
+}  // namespace nome::scene

@@ -1,0 +1,23 @@
+// `instance NAME TARGET [transforms] [surface S] endinstance` at top level: the scene's roots.
+#include "nome/scene/statement_kinds.hpp"
+#include "scene/scene_writer.hpp"
+#include "scene/statement_parser.hpp"
+
+namespace nome::scene {
+namespace {
+
+void parse(StatementParser& parser, Index) {
+  parser.ast().instances.push_back(parser.instance_statement());
+}
+
+void save(SceneWriter& writer, Index) {
+  for (const InstanceDecl& i : writer.ast().instances) writer.instance(i, "");
+}
+
+}  // namespace
+
+StatementKind instance_statement() {
+  return {.keyword = "instance", .end_keyword = "endinstance", .is_slf = true, .parse = parse, .save = save};
+}
+
+}  // namespace nome::scene
