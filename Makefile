@@ -2,7 +2,7 @@
 # The package list lives here and only here.
 PACKAGES := build-essential cmake pkg-config clang-format libglfw3-dev libimgui-dev libstb-dev libglm-dev \
             python3-glad libtinyobjloader-dev catch2 libegl-dev libgl1-mesa-dri libosmesa6-dev xvfb xauth \
-            libbenchmark-dev libopenmesh-dev clang-14 libclang-rt-14-dev
+            libbenchmark-dev libopenmesh-dev clang-14 libclang-rt-14-dev clang-tidy
 
 JOBS    ?= 2
 EXAMPLE ?= assets/funnel_cube.nome
@@ -20,7 +20,7 @@ SOURCES  = $(shell git ls-files '*.cpp' '*.hpp' 2>/dev/null | grep -v '^third_pa
 
 GALLERY_SIZE ?= 640x480
 
-.PHONY: run test deps release test-build format format-check bench clean soak fuzz fuzz-build tsan references gallery
+.PHONY: run test deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery
 
 deps:
 	@missing=""; for p in $(PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -78,6 +78,13 @@ format-check: deps
 
 format: deps
 	clang-format -i $(SOURCES)
+
+# clang-tidy with the checked-in .clang-tidy over the kernel and the app (not part of `make test`: it
+# takes longer than the build and is not clean yet).
+LINT_FILES ?= $(filter kernel/src/% app/%,$(filter %.cpp,$(SOURCES)))
+lint: deps
+	cmake -S . -B build/lint -DCMAKE_BUILD_TYPE=Debug -DNOME_TESTS=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >/dev/null
+	clang-tidy -p build/lint --quiet $(LINT_FILES)
 
 # Rewrites tests/render/reference/*.png after an intended change to the pictures (look at them first).
 references: test-build

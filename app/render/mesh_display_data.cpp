@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "nome/ops/normals.hpp"
+#include "nome/mesh/normals.hpp"
 #include "nome/query/display_triangles.hpp"
 
 namespace nome::render {

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <string>
 
+#include "nome/atomic_file.hpp"
 #include "nome/error.hpp"
-#include "nome/io/atomic_file.hpp"
 
 namespace nome::viewer {
 

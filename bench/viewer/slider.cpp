@@ -28,6 +28,7 @@ double ms_since(Clock::time_point start) {
 }  // namespace
 
 int main() {
+  using namespace nome;
   using namespace nome::viewer;
   Session session = Session::open(NOME_SOURCE_DIR "/assets/funnel_cube_consolidated.nome");
   StagePipeline pipeline;

@@ -4,9 +4,9 @@
 #include <cstdlib>
 
 #include "nome/error.hpp"
+#include "nome/mesh/normals.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
-#include "nome/ops/normals.hpp"
 #include "nome/ops/offset.hpp"
 #include "nome/ops/subdivide.hpp"
 #include "support/brute_force_topology.hpp"

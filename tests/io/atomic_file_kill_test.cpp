@@ -11,7 +11,7 @@
 #include <sstream>
 #include <thread>
 
-#include "nome/io/atomic_file.hpp"
+#include "nome/atomic_file.hpp"
 
 using namespace nome;
 namespace fs = std::filesystem;

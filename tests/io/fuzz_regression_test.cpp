@@ -10,8 +10,8 @@
 #include "nome/error.hpp"
 #include "nome/io/obj.hpp"
 #include "nome/io/stl.hpp"
+#include "nome/mesh/normals.hpp"
 #include "nome/mesh/topology_report.hpp"
-#include "nome/ops/normals.hpp"
 #include "support/brute_force_topology.hpp"
 
 using namespace nome;

@@ -13,8 +13,8 @@
 #include <string>
 #include <string_view>
 
+#include "nome/atomic_file.hpp"
 #include "nome/error.hpp"
-#include "nome/io/atomic_file.hpp"
 
 namespace nome {
 namespace {

@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "nome/assert.hpp"
 #include "nome/error.hpp"
 #include "nome/scene/lexer.hpp"
 
@@ -62,7 +63,7 @@ class SifParser {
   [[noreturn]] void fail_at(const Token& t, const std::string& message) {
     diagnostics_.error(t.location, message);
     throw_if_errors();
-    throw IoError("unreachable");
+    NOME_ASSERT(!"throw_if_errors throws once an error is recorded");
   }
   [[noreturn]] void fail(const std::string& expected) {
     fail_at(peek(), "expected " + expected + ", found " + peek().describe());

@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "nome/io/atomic_file.hpp"
-#include "nome/ops/normals.hpp"
+#include "nome/atomic_file.hpp"
+#include "nome/mesh/normals.hpp"
 
 namespace nome {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "nome/error.hpp"
 #include "nome/mesh/face_orientation.hpp"
-#include "nome/ops/normals.hpp"
+#include "nome/mesh/normals.hpp"
 
 namespace nome {
 namespace {

@@ -111,8 +111,14 @@ const Mesh& Pipeline::run(const PipelineSettings& s) {
 }
 
 Mesh Pipeline::take_result() {
-  std::optional<Mesh> solid = solid_->take_result();
-  Mesh out = solid ? std::move(*solid) : result_ ? *result_ : scene_->mesh();
+  Mesh out;
+  if (result_ == &scene_->mesh()) {
+    out = std::move(scene_->mesh());
+  } else if (merged_->has_mesh() && result_ == &merged_->mesh()) {
+    out = std::move(merged_->mesh());
+  } else if (std::optional<Mesh> solid = solid_->take_result()) {
+    out = std::move(*solid);
+  }
   *this = Pipeline();
   return out;
 }

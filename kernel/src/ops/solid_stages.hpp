@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
-#include "nome/ops/normals.hpp"
+#include "nome/mesh/normals.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/ops/subdivide.hpp"
 

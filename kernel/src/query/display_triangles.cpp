@@ -3,7 +3,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
-#include "nome/ops/normals.hpp"
+#include "nome/mesh/normals.hpp"
 
 namespace nome {
 namespace {

@@ -61,7 +61,7 @@ void Scene::assemble(Index top) {
     out.soup.face_colors.clear();
   } else {
     for (Index f = 0; f < out.soup.num_faces(); ++f)
-      if (!out.face_has_color[f]) out.soup.face_colors[f] = Color(0.75f);
+      if (!out.face_has_color[f]) out.soup.face_colors[f] = default_face_color;
   }
   SceneInstance& inst = instances_[top];
   if (!is_same_topology(inst.geometry.soup, out.soup) || inst.geometry_version == 0) ++inst.topology_version;
@@ -75,22 +75,7 @@ void Scene::assemble_all() {
 
 PolygonSoup Scene::combined_soup() const {
   PolygonSoup out;
-  bool has_color = false;
-  for (const SceneInstance& i : instances_) has_color = has_color || !i.geometry.soup.face_colors.empty();
-  for (const SceneInstance& i : instances_) {
-    const PolygonSoup& s = i.geometry.soup;
-    const Index base = out.num_vertices();
-    out.positions.insert(out.positions.end(), s.positions.begin(), s.positions.end());
-    out.vertex_names.insert(out.vertex_names.end(), s.vertex_names.begin(), s.vertex_names.end());
-    for (Index f = 0; f < s.num_faces(); ++f) {
-      for (Index c = s.face_offsets[f]; c < s.face_offsets[f + 1]; ++c)
-        out.face_vertices.push_back(s.face_vertices[c] + base);
-      out.face_offsets.push_back(Index(out.face_vertices.size()));
-      if (has_color) out.face_colors.push_back(s.face_colors.empty() ? Color(0.75f) : s.face_colors[f]);
-    }
-    out.face_names.insert(out.face_names.end(), s.face_names.begin(), s.face_names.end());
-    for (auto [a, b] : s.sharp_edges) out.sharp_edges.emplace_back(a + base, b + base);
-  }
+  for (const SceneInstance& i : instances_) append_soup(out, i.geometry.soup);
   return out;
 }
 

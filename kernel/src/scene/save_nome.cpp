@@ -1,6 +1,6 @@
 #include "nome/scene/save_nome.hpp"
 
-#include "nome/io/atomic_file.hpp"
+#include "nome/atomic_file.hpp"
 #include "nome/scene/statement_kinds.hpp"
 #include "scene/scene_writer.hpp"
 

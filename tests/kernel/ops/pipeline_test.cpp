@@ -131,3 +131,18 @@ TEST_CASE("the pipeline checks its options and passes on the offset's warnings",
   CHECK_THAT(pipeline.warnings()[0],
              Catch::StartsWith("offset: 1 degenerate faces") && Catch::Contains("f1"));
 }
+
+TEST_CASE("the pipeline's result is the stage asked for, also after a later stage ran", "[kernel]") {
+  PipelineInput input;
+  input.soup = test::mobius_band(12, 2);
+  Pipeline pipeline;
+  pipeline.set_input(input);
+  PipelineSettings s = full_options();
+  const Index solid_faces = pipeline.run(s).num_faces();
+  s.stage = Stage::merged;
+  s.merge = true;
+  const Index merged_faces = pipeline.run(s).num_faces();
+  CHECK(merged_faces == 24);
+  CHECK(solid_faces > merged_faces);
+  CHECK(pipeline.take_result().num_faces() == merged_faces);
+}

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "nome/ops/normals.hpp"
+#include "nome/mesh/normals.hpp"
 #include "nome/query/display_triangles.hpp"
 #include "support/shapes.hpp"
 

@@ -150,10 +150,6 @@ class Mesh {
   friend Mesh build_mesh(PolygonSoup soup);
   friend Mesh assemble_mesh(MeshArrays arrays);
 
-  // A mesh's arrays moved out, for a builder to refill and assemble again: they come out as in a default
-  // MeshArrays (empty), but keep their blocks, so a rebuild no larger than the mesh it replaces touches no
-  // fresh pages (a third of an offset's time). `mesh` is left empty.
-  MeshArrays take_arrays(Mesh&& mesh);
   friend MeshArrays take_arrays(Mesh&& mesh);
 
   // Derived arrays shared by both builders: each corner's face from the face offsets, boundary loops from

@@ -3,7 +3,7 @@
 #include <span>
 
 #include "nome/mesh/mesh.hpp"
-#include "nome/ops/normals.hpp"
+#include "nome/mesh/normals.hpp"
 #include "nome/ops/subdivide.hpp"
 
 namespace nome {

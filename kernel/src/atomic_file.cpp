@@ -1,4 +1,4 @@
-#include "nome/io/atomic_file.hpp"
+#include "nome/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "nome/ops/normals.hpp"
+#include "nome/mesh/normals.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;

@@ -1,4 +1,4 @@
-#include "nome/ops/normals.hpp"
+#include "nome/mesh/normals.hpp"
 
 #include <algorithm>
 
