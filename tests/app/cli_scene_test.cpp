@@ -3,12 +3,13 @@
 #include <fstream>
 
 #include "app/cli_support.hpp"
+#include "support/shared_examples.hpp"
 
 using nome::test::run_nome;
 
 namespace {
 const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
-const std::string originals = std::string(NOME_SOURCE_DIR) + "/tests/data/original/";
+const std::string originals = nome::test::shared_examples_dir("original");
 }  // namespace
 
 TEST_CASE("nome info lists a scene's banks, sliders and top-level instances", "[app]") {
@@ -40,6 +41,7 @@ TEST_CASE("nome info --set overrides a slider", "[app]") {
 }
 
 TEST_CASE("nome reports scene errors as FILE:LINE:COL", "[app]") {
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   const std::string dir = nome::test::scratch_dir("scene_errors");
   std::ofstream(dir + "/bad.nome") << "funnel f (8 1 0) endfunnel\ninstance i g endinstance\n";
   const auto r = run_nome("info " + dir + "/bad.nome");
@@ -78,6 +80,7 @@ TEST_CASE("nome export -o OUT.nome saves the scene with the sliders as set", "[a
 }
 
 TEST_CASE("nome info reads .sif (optionally as quads), .slf and .anom on top of a scene", "[app]") {
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   CHECK_THAT(run_nome("info " + assets + "mobius_band.sif --json").out,
              Catch::Contains("\"faces\": 48, \"chi\": 0, \"orientable\": false, \"borders\": 1"));
   CHECK_THAT(run_nome("info " + assets + "mobius_band.sif --quads --json").out,

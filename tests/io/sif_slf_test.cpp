@@ -11,6 +11,7 @@
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "scene/scene_support.hpp"
+#include "support/shared_examples.hpp"
 
 using namespace nome;
 
@@ -23,6 +24,7 @@ TopologyReport sif_report(const std::string& file, bool quads = false) {
 }  // namespace
 
 TEST_CASE("SIF files of the original programs read with their topology", "[io]") {
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   const TopologyReport kb8 = sif_report("KB8mesh.sif");
   CHECK(kb8.vertices == 20);
   CHECK(kb8.faces == 32);
@@ -38,6 +40,7 @@ TEST_CASE("SIF files of the original programs read with their topology", "[io]")
 }
 
 TEST_CASE("pairing triangles into quads keeps the topology", "[io]") {
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   for (const char* file : {"Tetra.sif", "arcA.sif", "borromean.sif", "zero.sif", "KB8mesh.sif"}) {
     INFO(file);
     const TopologyReport t = sif_report(file), q = sif_report(file, true);
@@ -111,6 +114,7 @@ TEST_CASE("the .slf subset reads points, faces, objects, groups and instances", 
 }
 
 TEST_CASE("minSubdiv.slf is refused: every unsupported construct is named with its place", "[io]") {
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   try {
     read_scene(test::originals_dir() + "minSubdiv.slf");
     FAIL("minSubdiv.slf should be refused");

@@ -7,6 +7,7 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/scene/save_nome.hpp"
 #include "scene/scene_support.hpp"
+#include "support/shared_examples.hpp"
 
 using namespace nome;
 using nome::scene::Scene;
@@ -86,6 +87,7 @@ TEST_CASE("unknown names in the editing data are refused with candidates", "[sce
 }
 
 TEST_CASE(".anom files apply saved slider values and a working mesh to an open scene", "[scene]") {
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   Scene s = test::load_scene_file(test::originals_dir() + "kleinbottle.nom");
   s.set_parameter(*s.find_parameter("tp3_x"), 1);
   s.apply_anom(test::read_text(test::originals_dir() + "kleinbottle_s1.anom"), "s1.anom");

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/shared_examples.hpp"
+
 namespace nome::test {
 
 std::string assets_dir() {
@@ -11,16 +13,17 @@ std::string assets_dir() {
 }
 
 std::string originals_dir() {
-  return std::string(NOME_SOURCE_DIR) + "/tests/data/original/";
+  return shared_examples_dir("original");
 }
 
 std::vector<std::string> scene_files() {
   std::vector<std::string> files;
   for (const std::string& dir : {assets_dir(), originals_dir()})
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-      const std::string ext = entry.path().extension().string();
-      if (ext == ".nome" || ext == ".nom") files.push_back(entry.path().string());
-    }
+    if (std::filesystem::is_directory(dir))
+      for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        const std::string ext = entry.path().extension().string();
+        if (ext == ".nome" || ext == ".nom") files.push_back(entry.path().string());
+      }
   return files;
 }
 

@@ -7,10 +7,11 @@
 
 namespace nome::test {
 
-// assets/ (the report's examples and ours) and tests/data/original/ (files of the original programs).
+// assets/ (the report's examples and ours) and ../shared/examples/original/ (files of the original
+// programs, written by others: tests that read them need NOME_NEEDS_SHARED_EXAMPLES).
 std::string assets_dir();
 std::string originals_dir();
-// Every .nome and .nom file of assets/ and the original program's examples.
+// Every .nome and .nom file of assets/ and (where present) the original program's examples.
 std::vector<std::string> scene_files();
 std::string read_text(const std::string& path);
 scene::Scene load_scene_file(const std::string& path);

@@ -6,6 +6,7 @@
 #include "nome/mesh/topology_report.hpp"
 #include "nome/scene/scene.hpp"
 #include "scene/scene_support.hpp"
+#include "support/shared_examples.hpp"
 
 using namespace nome;
 using nome::scene::Scene;
@@ -168,6 +169,7 @@ TEST_CASE("a face names a vertex by a unique suffix; ambiguity lists the candida
 }
 
 TEST_CASE("surfaces colour faces: a face's own surface wins over its instance's", "[scene]") {
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   const Scene s = nome::test::load_scene_file(nome::test::originals_dir() + "cube.nom");
   const auto& soup = s.instances()[0].geometry.soup;
   REQUIRE(soup.face_colors.size() == 6);

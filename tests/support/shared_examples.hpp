@@ -1,0 +1,19 @@
+#pragma once
+
+#include <string>
+
+namespace nome::test {
+
+// The example files written by others (`../shared/examples/<folder>/` beside the checkout; CI has it):
+// they are read from there, never copied into the project.
+std::string shared_examples_dir(const std::string& folder);
+bool has_shared_examples(const std::string& folder);
+
+}  // namespace nome::test
+
+// Ends the test case with a warning when the shared examples folder is absent.
+#define NOME_NEEDS_SHARED_EXAMPLES(folder)                                                    \
+  if (!nome::test::has_shared_examples(folder)) {                                             \
+    WARN("skipped: " << nome::test::shared_examples_dir(folder) << " is absent (../shared)"); \
+    return;                                                                                   \
+  }
