@@ -16,10 +16,31 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "render/scene_renderer.hpp"
 #include "viewer/window.hpp"
 
 namespace nome::viewer {
 namespace {
+
+class GlfwPlatform final : public Platform {
+ public:
+  explicit GlfwPlatform(GLFWwindow* window) : window_(window) {}
+  glm::dvec2 window_size() const override {
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    return {std::max(width, 1), std::max(height, 1)};
+  }
+  glm::ivec2 framebuffer_size() const override {
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_, &width, &height);
+    return {std::max(width, 1), std::max(height, 1)};
+  }
+  double now() const override { return glfwGetTime(); }
+  void set_title(const std::string& title) override { glfwSetWindowTitle(window_, title.c_str()); }
+
+ private:
+  GLFWwindow* window_;
+};
 
 Window* drop_target = nullptr;
 
@@ -87,7 +108,9 @@ int run_viewer(const ViewerOptions& options) {
 
   int status = 0;
   {
-    Window viewer(window, options);
+    GlfwPlatform platform(window);
+    const std::unique_ptr<render::SceneRenderer> renderer = render::make_gl_scene_renderer();
+    Window viewer(platform, *renderer, options, ViewerStores::from_environment());
     drop_target = &viewer;
     bool is_running = true;
     int frames_to_draw = 0;  // ImGui settles its layout over a frame or two after an input
@@ -106,7 +129,7 @@ int run_viewer(const ViewerOptions& options) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      is_running = viewer.frame();
+      is_running = viewer.frame(read_imgui_input());
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       viewer.after_draw();
       glfwSwapBuffers(window);

@@ -1,9 +1,14 @@
 #include "app/viewer_support.hpp"
 
+#include <sstream>
+
+#include <imgui.h>
 #include <glm/geometric.hpp>
 
+#include "nome/io/read_scene.hpp"
 #include "nome/query/pick.hpp"
 #include "render/camera.hpp"
+#include "viewer/window.hpp"
 
 namespace nome::test {
 
@@ -16,6 +21,72 @@ CommandResult run_viewer(const std::string& arguments) {
   const std::string auth = private_scratch_dir("xvfb") + "/auth-" + std::to_string(sessions++);
   return run_nome_prefixed(
       "env XDG_STATE_HOME=" + state + " xvfb-run -a -f " + auth + " -s \"-screen 0 1280x800x24\"", arguments);
+}
+
+TestViewer::TestViewer(const viewer::ViewerOptions& options, const viewer::ViewerStores& stores)
+    : context_(ImGui::CreateContext()), renderer_(render::make_null_scene_renderer()) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.DisplaySize = ImVec2(float(viewer_width), float(viewer_height));
+  io.DeltaTime = 1.0f / 60.0f;
+  // A font atlas is all ImGui needs to lay out panels; no texture is ever drawn.
+  unsigned char* pixels = nullptr;
+  int width = 0, height = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+  io.Fonts->SetTexID(ImTextureID(1));
+  window_ = std::make_unique<viewer::Window>(platform_, *renderer_, options, stores);
+}
+
+TestViewer::~TestViewer() {
+  window_.reset();
+  ImGui::DestroyContext(context_);
+}
+
+viewer::ViewerStores TestViewer::private_stores() {
+  const std::string state = private_scratch_dir("viewer_state");
+  return {state + "/recent", state + "/recovery"};
+}
+
+bool TestViewer::frame(const viewer::InputFrame& input) {
+  ImGui::NewFrame();
+  const bool is_open = window_->frame(input);
+  window_->after_draw();
+  platform_.advance();
+  return is_open;
+}
+
+int TestViewer::run() {
+  for (int i = 0; i < 100000 && frame();) ++i;
+  return window_->exit_status();
+}
+
+std::string TestViewer::messages() const {
+  std::string text;
+  for (const viewer::Message& m : window_->log().messages()) {
+    const char* prefix = m.level == viewer::MessageLevel::error     ? "error: "
+                         : m.level == viewer::MessageLevel::warning ? "warning: "
+                                                                    : "";
+    text += std::string("nome: ") + prefix + m.text + "\n";
+  }
+  return text;
+}
+
+CommandResult run_window(const std::string& arguments, const viewer::ViewerStores& stores) {
+  viewer::ViewerOptions options;
+  std::istringstream words(arguments);
+  for (std::string word; words >> word;) {
+    if (word == "--script" && words >> word)
+      options.script = word;
+    else if (is_anom_file(word) && options.file)
+      options.anom_files.emplace_back(word);
+    else
+      options.file = word;
+  }
+  TestViewer viewer(options, stores);
+  CommandResult result;
+  result.status = viewer.run();
+  result.err = viewer.messages();
+  return result;
 }
 
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation) {
