@@ -14,17 +14,8 @@ constexpr KeyModifier none = KeyModifier::none;
 constexpr KeyModifier shift = KeyModifier::shift;
 constexpr KeyModifier control = KeyModifier::control;
 
-// Edits first: the script's error message lists the names in this order.
+// In the help overlay's order; the actions without a key last.
 const ActionInfo table[] = {
-    {add_polygon, "add-polygon", GLFW_KEY_ENTER, none, "add a polygon through the selected vertices"},
-    {accept, "accept", GLFW_KEY_A, control, "accept the temporary faces (consolidate)"},
-    {clear_temporary, "clear", 0, none, "clear the temporary faces"},
-    {delete_faces, "delete", GLFW_KEY_DELETE, none, "delete the selected faces"},
-    {zip, "zip", 0, none, "zip the two selected borders"},
-    {merge, "merge", 0, none, "show the merged stage"},
-    {undo, "undo", GLFW_KEY_Z, control, "undo"},
-    {redo, "redo", GLFW_KEY_Y, control, "redo"},
-    {clear_selection, "clear-selection", GLFW_KEY_ESCAPE, none, "clear the selection"},
     {toggle_help, "help", GLFW_KEY_SLASH, shift, "show or hide this help"},
     {toggle_help, "help", GLFW_KEY_F1, none, "show or hide this help"},
     {open, "open", GLFW_KEY_O, control, "open a file"},
@@ -48,6 +39,15 @@ const ActionInfo table[] = {
     {view_top, "view-top", GLFW_KEY_KP_7, none, "view from the top"},
     {screenshot, "screenshot", GLFW_KEY_P, none, "save a screenshot PNG"},
     {toggle_log, "log", GLFW_KEY_L, none, "show or hide the log panel"},
+    {undo, "undo", GLFW_KEY_Z, control, "undo"},
+    {redo, "redo", GLFW_KEY_Y, control, "redo"},
+    {add_polygon, "add-polygon", GLFW_KEY_ENTER, none, "add a polygon through the selected vertices"},
+    {accept, "accept", GLFW_KEY_A, control, "accept the temporary faces (consolidate)"},
+    {delete_faces, "delete", GLFW_KEY_DELETE, none, "delete the selected faces"},
+    {clear_selection, "clear-selection", GLFW_KEY_ESCAPE, none, "clear the selection"},
+    {clear_temporary, "clear", 0, none, "clear the temporary faces"},
+    {zip, "zip", 0, none, "zip the two selected borders"},
+    {merge, "merge", 0, none, "show the merged stage"},
 };
 
 std::string lower(std::string s) {
@@ -99,10 +99,11 @@ std::string action_name(Action action) {
 }
 
 std::string action_names() {
-  std::string names;
-  for (const ActionInfo& row : table)
-    if (names.find(std::string(row.name) + ",") == std::string::npos) names += std::string(row.name) + ", ";
-  return names.substr(0, names.size() - 2);
+  // The rows of one action are neighbours: each name once.
+  std::string names = table[0].name;
+  for (std::size_t i = 1; i < std::size(table); ++i)
+    if (table[i].action != table[i - 1].action) names += std::string(", ") + table[i].name;
+  return names;
 }
 
 std::string shortcut(Action action) {

@@ -75,6 +75,18 @@ bool is_one_of(const std::string& word, const List& list) {
   return false;
 }
 
+// What the command's word argument should have been, or empty when it is one of its choices.
+std::string expected_word(const ScriptCommand& command) {
+  using Kind = ScriptCommand::Kind;
+  if (command.words.empty()) return {};
+  const std::string& word = command.words[0];
+  if (command.kind == Kind::mode && !is_one_of(word, modes)) return "vertex, face, border or border-partial";
+  if (command.kind == Kind::action && !find_action(word)) return "an action (" + action_names() + ")";
+  if (command.kind == Kind::recover && !is_one_of(word, recovery_answers)) return "restore or discard";
+  if (command.kind == Kind::prompt && !is_one_of(word, unsaved_answers)) return "save, discard or cancel";
+  return {};
+}
+
 }  // namespace
 
 const char* script_synopsis() {
@@ -144,21 +156,8 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
       command.numbers.push_back(value);
     }
     if (!is_valid) continue;
-    if (command.kind == ScriptCommand::Kind::mode && !is_one_of(command.words[0], modes)) {
-      fail(words[1].column,
-           "expected vertex, face, border or border-partial, found '" + command.words[0] + "'");
-      continue;
-    }
-    if (command.kind == ScriptCommand::Kind::action && !find_action(command.words[0])) {
-      fail(words[1].column, "expected " + action_names() + ", found '" + command.words[0] + "'");
-      continue;
-    }
-    if (command.kind == ScriptCommand::Kind::recover && !is_one_of(command.words[0], recovery_answers)) {
-      fail(words[1].column, "expected restore or discard, found '" + command.words[0] + "'");
-      continue;
-    }
-    if (command.kind == ScriptCommand::Kind::prompt && !is_one_of(command.words[0], unsaved_answers)) {
-      fail(words[1].column, "expected save, discard or cancel, found '" + command.words[0] + "'");
+    if (const std::string expected = expected_word(command); !expected.empty()) {
+      fail(words[1].column, "expected " + expected + ", found '" + command.words[0] + "'");
       continue;
     }
     commands.push_back(std::move(command));

@@ -50,6 +50,7 @@ TEST_CASE("every action of the table has one script name, and no two rows share 
     if (row.key != 0) CHECK(labels.insert(key_label(row.key, row.modifiers)).second);
   }
   CHECK(names.size() == std::size_t(Action::toggle_log) + 1);
+  CHECK(action_names().starts_with("help, open, open-recent-1"));
 }
 
 TEST_CASE("the log batches repeated warnings and keeps errors apart", "[app]") {
