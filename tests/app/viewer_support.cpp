@@ -23,8 +23,48 @@ CommandResult run_viewer(const std::string& arguments) {
       "env XDG_STATE_HOME=" + state + " xvfb-run -a -f " + auth + " -s \"-screen 0 1280x800x24\"", arguments);
 }
 
-TestViewer::TestViewer(const viewer::ViewerOptions& options, const viewer::ViewerStores& stores)
-    : context_(ImGui::CreateContext()), renderer_(render::make_null_scene_renderer()) {
+namespace {
+
+// The GL backend drawing into a multisampled framebuffer, whose pixels are read by resolving it.
+class FramebufferRenderer final : public render::SceneRenderer {
+ public:
+  explicit FramebufferRenderer(const render::Framebuffer& framebuffer)
+      : gl_(render::make_gl_scene_renderer()), framebuffer_(framebuffer) {}
+  void set_mesh(const render::MeshDisplayData& data) override { gl_->set_mesh(data); }
+  bool has_mesh() const override { return gl_->has_mesh(); }
+  void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) override {
+    gl_->set_face_colors(colors);
+  }
+  void set_selected_faces(std::span<const Index> faces) override { gl_->set_selected_faces(faces); }
+  void set_markers(std::span<const render::CubeMarker> markers) override { gl_->set_markers(markers); }
+  void set_lines(render::Overlay overlay, std::span<const glm::vec3> points,
+                 std::span<const std::uint32_t> segments) override {
+    gl_->set_lines(overlay, points, segments);
+  }
+  void draw(const render::Camera& camera, glm::ivec2 size, const render::DisplaySettings& display,
+            const glm::vec3& rim_color) override {
+    gl_->draw(camera, size, display, rim_color);
+  }
+  render::Image read_pixels(glm::ivec2) const override { return framebuffer_.read(false); }
+
+ private:
+  std::unique_ptr<render::SceneRenderer> gl_;
+  const render::Framebuffer& framebuffer_;
+};
+
+}  // namespace
+
+TestViewer::TestViewer(const viewer::ViewerOptions& options, const viewer::ViewerStores& stores,
+                       TestRenderer renderer)
+    : context_(ImGui::CreateContext()) {
+  if (renderer == TestRenderer::gl) {
+    gl_context_ = std::make_unique<render::OffscreenContext>();
+    framebuffer_ = std::make_unique<render::Framebuffer>(viewer_width, viewer_height);
+    framebuffer_->bind();
+    renderer_ = std::make_unique<FramebufferRenderer>(*framebuffer_);
+  } else {
+    renderer_ = render::make_null_scene_renderer();
+  }
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;
   io.DisplaySize = ImVec2(float(viewer_width), float(viewer_height));
@@ -39,6 +79,8 @@ TestViewer::TestViewer(const viewer::ViewerOptions& options, const viewer::Viewe
 
 TestViewer::~TestViewer() {
   window_.reset();
+  renderer_.reset();
+  framebuffer_.reset();
   ImGui::DestroyContext(context_);
 }
 
@@ -71,7 +113,8 @@ std::string TestViewer::messages() const {
   return text;
 }
 
-CommandResult run_window(const std::string& arguments, const viewer::ViewerStores& stores) {
+CommandResult run_window(const std::string& arguments, const viewer::ViewerStores& stores,
+                         TestRenderer renderer) {
   viewer::ViewerOptions options;
   std::istringstream words(arguments);
   for (std::string word; words >> word;) {
@@ -82,7 +125,7 @@ CommandResult run_window(const std::string& arguments, const viewer::ViewerStore
     else
       options.file = word;
   }
-  TestViewer viewer(options, stores);
+  TestViewer viewer(options, stores, renderer);
   CommandResult result;
   result.status = viewer.run();
   result.err = viewer.messages();

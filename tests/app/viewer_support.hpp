@@ -9,6 +9,8 @@
 #include "app/cli_support.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/query/screen_projection.hpp"
+#include "render/framebuffer.hpp"
+#include "render/offscreen_context.hpp"
 #include "render/scene_renderer.hpp"
 #include "viewer/platform.hpp"
 #include "viewer/session_controller.hpp"
@@ -45,12 +47,17 @@ class TestPlatform final : public viewer::Platform {
   std::string title_;
 };
 
-// A viewer window in this process: ImGui without a platform backend, the null renderer, a test clock
-// and state folders of its own (no recovery file or recent list of the user's is read or written).
+// null: draws nothing (logic only); gl: the GL backend into a headless (EGL, else OSMesa) framebuffer,
+// the scene without the panels (ImGui has no renderer backend here).
+enum class TestRenderer { null, gl };
+
+// A viewer window in this process: ImGui without a platform backend, a test clock and state folders of
+// its own (no recovery file or recent list of the user's is read or written).
 class TestViewer {
  public:
   explicit TestViewer(const viewer::ViewerOptions& options,
-                      const viewer::ViewerStores& stores = private_stores());
+                      const viewer::ViewerStores& stores = private_stores(),
+                      TestRenderer renderer = TestRenderer::null);
   ~TestViewer();
   TestViewer(const TestViewer&) = delete;
   TestViewer& operator=(const TestViewer&) = delete;
@@ -68,6 +75,8 @@ class TestViewer {
 
  private:
   ImGuiContext* context_;
+  std::unique_ptr<render::OffscreenContext> gl_context_;
+  std::unique_ptr<render::Framebuffer> framebuffer_;
   TestPlatform platform_;
   std::unique_ptr<render::SceneRenderer> renderer_;
   std::unique_ptr<viewer::Window> window_;
@@ -75,7 +84,8 @@ class TestViewer {
 
 // `nome ARGUMENTS` (FILE, .anom files, --script S.txt) in this process: the status and the log as err.
 CommandResult run_window(const std::string& arguments,
-                         const viewer::ViewerStores& stores = TestViewer::private_stores());
+                         const viewer::ViewerStores& stores = TestViewer::private_stores(),
+                         TestRenderer renderer = TestRenderer::null);
 
 // The camera of the viewer after the script command `view AZ EL` (framed to the mesh).
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation);

@@ -90,24 +90,6 @@ TEST_CASE("a scripted session picks a vertex and a face, exports and takes a scr
   CHECK(build_mesh(read_polygons(dir + "/cube.obj")).num_faces() == mesh.num_faces());
 }
 
-TEST_CASE("the Möbius band shows its back faces in their own colour", "[app]") {
-  const std::string dir = nome::test::private_scratch_dir("viewer_mobius");
-  const std::string script = write_script(dir, "view 20 35\nscreenshot " + dir + "/mobius.png\nquit\n");
-  const auto r = run_viewer(assets + "mobius_band.obj --script " + script);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const render::Image shot = render::read_png(dir + "/mobius.png");
-  int front = 0, back = 0;
-  for (int y = 0; y < shot.height; ++y)
-    for (int x = 0; x < shot.width; ++x) {
-      const auto* p = shot.pixel(x, y);
-      front += p[0] > p[2] + 40;  // gold
-      back += p[2] > p[0] + 40;   // blue
-    }
-  CHECK(front > 2000);
-  CHECK(back > 2000);
-}
-
 TEST_CASE("quitting with unsaved changes asks first, in a prompt over the dimmed window; save and quit saves",
           "[app]") {
   const std::string dir = nome::test::private_scratch_dir("viewer_quit_prompt");
@@ -127,15 +109,4 @@ TEST_CASE("quitting with unsaved changes asks first, in a prompt over the dimmed
   const int white_prompt = count_pixels(render::read_png(dir + "/prompt.png"), 255, 255, 255, 0);
   CHECK(white_before > 100000);
   CHECK(white_prompt < white_before / 10);
-}
-
-TEST_CASE("a scene's rim lines are drawn, though they have no faces", "[app]") {
-  const std::string dir = nome::test::private_scratch_dir("viewer_rim_lines");
-  const std::string script = write_script(dir, "view 30 25\nscreenshot " + dir + "/rim.png\nquit\n");
-  const auto r =
-      run_viewer(std::string(NOME_SOURCE_DIR) + "/tests/data/original/rimline.nom --script " + script);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  // The polyline's three segments in the rim colour (0.05, 0.45, 0.55).
-  CHECK(count_pixels(render::read_png(dir + "/rim.png"), 13, 115, 140, 20) > 300);
 }
