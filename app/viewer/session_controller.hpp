@@ -30,8 +30,14 @@ class SessionController {
  public:
   SessionController(MessageLog& log, const ViewerStores& stores);
 
+  // The stage jobs read the session's polygons; the window reads only what follows.
   const Session* session() const { return session_ ? &*session_ : nullptr; }
-  bool has_scene() const { return session_ && session_->scene(); }
+  bool has_session() const { return session_.has_value(); }
+  // The open file; empty without one.
+  std::filesystem::path path() const { return session_ ? session_->path() : std::filesystem::path{}; }
+  const Document* document() const { return session_ ? &session_->document() : nullptr; }
+  const scene::Scene* scene() const { return session_ ? session_->scene() : nullptr; }
+  bool has_scene() const { return scene() != nullptr; }
   bool is_modified() const { return session_ && session_->is_modified(); }
   const RecentFiles& recent() const { return recent_; }
 

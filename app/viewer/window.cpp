@@ -25,7 +25,7 @@ Window::Window(Platform& platform, render::SceneRenderer& renderer, const Viewer
     }
   }
   if (options.file) open(*options.file);
-  if (options.file && !sessions_.session()) exit_status_ = 1;
+  if (options.file && !sessions_.has_session()) exit_status_ = 1;
   for (const std::filesystem::path& anom : options.anom_files) drop({anom});
   log_.info("Press ? or F1 for the keys; left drag turns, right drag pans, the wheel zooms.");
 }
@@ -96,7 +96,7 @@ bool Window::drop(const std::vector<std::filesystem::path>& paths) {
   bool is_done = true;
   if (!files.empty()) {
     request_open(files.back());
-    is_done = prompts_.unsaved() || (session() && session()->path() == files.back());
+    is_done = prompts_.unsaved() || (sessions_.has_session() && sessions_.path() == files.back());
   }
   for (const std::filesystem::path& anom : anoms) {
     const bool is_applied = sessions_.apply_anom(anom);
@@ -117,7 +117,7 @@ void Window::request_open(const std::filesystem::path& path) {
     return;
   }
   prompts_.ask_unsaved({path});
-  log_.info("open " + path.filename().string() + ": " + session()->path().filename().string() +
+  log_.info("open " + path.filename().string() + ": " + sessions_.path().filename().string() +
             " has unsaved changes (save first, open without saving, or cancel)");
 }
 
@@ -223,9 +223,8 @@ void Window::frame_all() {
 // --------------------------------------------------------------------------------------------- panels
 
 void Window::draw_panels() {
-  const Session* session = sessions_.session();
-  const Document* document = session ? &session->document() : nullptr;
-  const MenuContext menu{sessions_.recent(), session != nullptr, sessions_.has_scene(),
+  const Document* document = sessions_.document();
+  const MenuContext menu{sessions_.recent(), sessions_.has_session(), sessions_.has_scene(),
                          document && document->can_undo(), document && document->can_redo()};
   if (const auto chosen = draw_main_menu(actions_, menu, display_, panels_)) request_open(*chosen);
   const ControlPanelChanges changes =
@@ -234,16 +233,15 @@ void Window::draw_panels() {
   if (changes.is_selection_changed) refresh_selection();
   if (changes.is_edit_color_changed && stage_.shown())
     show_face_colors(renderer_, *stage_.shown(), edit_colors_);
-  if (session && session->scene())
-    if (const auto moved = draw_slider_panels(*session->scene()))
-      sessions_.set_parameter(moved->first, moved->second);
+  if (const scene::Scene* scene = sessions_.scene())
+    if (const auto moved = draw_slider_panels(*scene)) sessions_.set_parameter(moved->first, moved->second);
   const StageResult* shown = stage_.shown();
   if (shown) draw_topology_panel(shown->topology);
   if (panels_.is_log_shown) draw_log_panel(log_, panels_.is_log_shown);
   std::optional<StatusLine> status;
-  if (session && shown)
-    status = StatusLine{session->path().filename().string(), session->is_modified(),   shown->stage,
-                        shown->mesh->num_vertices(),         shown->mesh->num_faces(), selection_.mode()};
+  if (sessions_.has_session() && shown)
+    status = StatusLine{sessions_.path().filename().string(), sessions_.is_modified(),  shown->stage,
+                        shown->mesh->num_vertices(),          shown->mesh->num_faces(), selection_.mode()};
   draw_status_bar(status, log_);
   if (panels_.is_help_shown) draw_help_overlay(panels_.is_help_shown);
   if (stage_.is_busy() && stage_.seconds_running() >= 0.03) draw_progress(stage_.seconds_running());
@@ -264,8 +262,7 @@ void Window::draw_panels() {
 void Window::draw_prompts() {
   if (const auto answer = prompts_.draw_unsaved(sessions_.has_scene())) answer_unsaved(*answer);
   const bool is_offered = sessions_.recovery_offer().has_value();
-  const std::filesystem::path document = session() ? session()->path() : std::filesystem::path{};
-  if (const auto restore = prompts_.draw_recovery(is_offered, document)) answer_recovery(*restore);
+  if (const auto restore = prompts_.draw_recovery(is_offered, sessions_.path())) answer_recovery(*restore);
 }
 
 }  // namespace nome::viewer

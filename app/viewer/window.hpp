@@ -60,7 +60,6 @@ class Window : private ScriptHost {
   const MessageLog& log() const { return log_; }
   const Selection& selection() const { return selection_; }
   const StageResult* shown() const { return stage_.shown(); }
-  const Session* session() const { return sessions_.session(); }
   const render::Camera& camera() const { return view_.camera(); }
   const render::DisplaySettings& display() const { return display_; }
   const PanelVisibility& panels() const { return panels_; }

@@ -87,27 +87,27 @@ void Window::bind_actions() {
 }
 
 void Window::open_browser(Action action) {
-  const Session* session = sessions_.session();
-  const std::filesystem::path folder = session ? session->path().parent_path() : std::filesystem::path{};
+  const std::filesystem::path path = sessions_.path();
+  const std::filesystem::path folder = path.parent_path();
   if (action == Action::open) {
     browser_.open("Open", folder, {".nome", ".anom", ".sif", ".slf", ".obj", ".stl"}, "Open");
   } else if (action == Action::save_as) {
     if (!sessions_.has_scene()) return;
-    browser_.open("Save As", folder, {".nome"}, "Save", session->path().filename().string());
+    browser_.open("Save As", folder, {".nome"}, "Save", path.filename().string());
   } else {
-    if (!session) return;
-    browser_.open("Export", folder, {".stl", ".obj"}, "Save", session->path().stem().string() + ".stl");
+    if (!sessions_.has_session()) return;
+    browser_.open("Export", folder, {".stl", ".obj"}, "Save", path.stem().string() + ".stl");
   }
   browser_purpose_ = action;
 }
 
 bool Window::can_edit() const {
-  return session() && stage_.shown() && is_editable(stage_.settings().stage);
+  return sessions_.has_session() && stage_.shown() && is_editable(stage_.settings().stage);
 }
 
 bool Window::edit(Action action) {
   const std::string name = action_name(action);
-  if (!session()) {
+  if (!sessions_.has_session()) {
     log_.error(name + ": no file is open");
     return false;
   }
