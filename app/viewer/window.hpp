@@ -23,10 +23,14 @@
 
 namespace nome::viewer {
 
-// One viewer window (DESIGN.md "App"): a thin loop over its rooms. Each frame reads the input (camera,
-// clicks, keys), lets the script take a step, shows the latest stage, draws the scene through the
-// renderer (GL, or null in tests) and the ImGui panels, and asks the prompts. Everything a key, menu,
-// button or script asks goes through the action registry.
+// One viewer window: a thin loop over its rooms. Each frame reads the input (camera, clicks, keys), lets
+// the script take a step, shows the latest stage, draws the scene through the renderer (GL, or null in
+// tests) and the ImGui panels, and asks the prompts. The rooms, one concern each:
+//   view_controller  camera and mouse         picking         clicks -> selection, overlays
+//   actions          the one table of keys, menu items, buttons and script names
+//   stage_view       stage jobs, picking BVH   session_controller  open, save, edits, autosave
+//   script_runner    script commands           prompts          unsaved changes, recovery
+//   panel_*.cpp      one panel each            window_actions   what each action does here
 class Window : private ScriptHost {
  public:
   // Needs ImGui initialised (a frame begun before each frame()); the platform and renderer outlive it.
@@ -79,7 +83,7 @@ class Window : private ScriptHost {
   void frame_all();
   void draw_panels();
   void draw_prompts();
-  // ScriptHost (window_script.cpp)
+  // ScriptHost (window_actions.cpp)
   void set_mode(SelectionMode mode) override { selection_.set_mode(mode); }
   void click(glm::dvec2 pixel) override;
   bool double_click(glm::dvec2 pixel) override;
