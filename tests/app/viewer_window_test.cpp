@@ -7,14 +7,12 @@
 #include "app/viewer_support.hpp"
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
-#include "nome/mesh/topology_report.hpp"
-#include "nome/query/border_lookup.hpp"
-#include "nome/query/pick.hpp"
 #include "render/image.hpp"
 
 using namespace nome;
 using nome::test::run_viewer;
 
+// The real window, end to end: the `nome` binary under Xvfb (GLFW, ImGui's GL backend, the swap).
 namespace {
 
 const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
