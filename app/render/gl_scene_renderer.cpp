@@ -12,7 +12,6 @@ namespace {
 class GlSceneRenderer final : public SceneRenderer {
  public:
   void set_mesh(const MeshDisplayData& data) override { buffers_ = std::make_unique<MeshBuffers>(data); }
-  bool has_mesh() const override { return buffers_ != nullptr; }
   void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) override {
     if (buffers_) buffers_->set_face_colors(colors);
   }

@@ -4,11 +4,10 @@
 namespace nome::render {
 namespace {
 
-// Keeps only whether there is a mesh: the viewer's logic asks nothing else of its renderer.
+// Keeps nothing: the viewer's logic never reads back from its renderer but for a screenshot.
 class NullSceneRenderer final : public SceneRenderer {
  public:
-  void set_mesh(const MeshDisplayData&) override { has_mesh_ = true; }
-  bool has_mesh() const override { return has_mesh_; }
+  void set_mesh(const MeshDisplayData&) override {}
   void set_face_colors(std::span<const std::array<std::uint8_t, 4>>) override {}
   void set_selected_faces(std::span<const Index>) override {}
   void set_markers(std::span<const CubeMarker>) override {}
@@ -17,9 +16,6 @@ class NullSceneRenderer final : public SceneRenderer {
   Image read_pixels(glm::ivec2) const override {
     throw Error("screenshot: the null renderer draws no picture");
   }
-
- private:
-  bool has_mesh_ = false;
 };
 
 }  // namespace

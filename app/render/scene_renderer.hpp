@@ -29,7 +29,6 @@ class SceneRenderer {
 
   // Replaces the displayed mesh (face colours and selection start from the data's own).
   virtual void set_mesh(const MeshDisplayData& data) = 0;
-  virtual bool has_mesh() const = 0;
   // Per-face RGBA colours (alpha 0: the display's front colour); one per face of the mesh.
   virtual void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) = 0;
   virtual void set_selected_faces(std::span<const Index> faces) = 0;

@@ -67,7 +67,6 @@ class Window : private ScriptHost {
   const render::Camera& camera() const { return view_.camera(); }
   const render::DisplaySettings& display() const { return display_; }
   const PanelVisibility& panels() const { return panels_; }
-  const Prompts& prompts() const { return prompts_; }
 
  private:
   // window_actions.cpp: what each action does here

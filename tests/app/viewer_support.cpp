@@ -31,7 +31,6 @@ class FramebufferRenderer final : public render::SceneRenderer {
   explicit FramebufferRenderer(const render::Framebuffer& framebuffer)
       : gl_(render::make_gl_scene_renderer()), framebuffer_(framebuffer) {}
   void set_mesh(const render::MeshDisplayData& data) override { gl_->set_mesh(data); }
-  bool has_mesh() const override { return gl_->has_mesh(); }
   void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) override {
     gl_->set_face_colors(colors);
   }
