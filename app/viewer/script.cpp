@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "nome/error.hpp"
+#include "viewer/actions.hpp"
 
 namespace nome::viewer {
 namespace {
@@ -50,8 +51,7 @@ const Syntax syntaxes[] = {
     {"click", ScriptCommand::Kind::click, 0, 2, "click X Y (window pixels)"},
     {"double-click", ScriptCommand::Kind::double_click, 0, 2, "double-click X Y (window pixels)"},
     {"key", ScriptCommand::Kind::key, 1, 0, "key LABEL (W, Ctrl+Z, F1, ...)"},
-    {"action", ScriptCommand::Kind::action, 1, 0,
-     "action add-polygon|accept|clear|delete|zip|merge|undo|redo"},
+    {"action", ScriptCommand::Kind::action, 1, 0, "action NAME (add-polygon, zip, undo, ...)"},
     {"subdiv", ScriptCommand::Kind::subdiv, 0, 1, "subdiv LEVEL"},
     {"offset", ScriptCommand::Kind::offset, 0, 1, "offset DISTANCE"},
     {"view", ScriptCommand::Kind::view, 0, 2, "view AZIMUTH ELEVATION (degrees)"},
@@ -67,13 +67,24 @@ const Syntax syntaxes[] = {
 const char* const modes[] = {"vertex", "face", "border", "border-partial"};
 const char* const recovery_answers[] = {"restore", "discard"};
 const char* const unsaved_answers[] = {"save", "discard", "cancel"};
-const char* const actions[] = {"add-polygon", "accept", "clear", "delete", "zip", "merge", "undo", "redo"};
 
 template <typename List>
 bool is_one_of(const std::string& word, const List& list) {
   for (const char* item : list)
     if (word == item) return true;
   return false;
+}
+
+// What the command's word argument should have been, or empty when it is one of its choices.
+std::string expected_word(const ScriptCommand& command) {
+  using Kind = ScriptCommand::Kind;
+  if (command.words.empty()) return {};
+  const std::string& word = command.words[0];
+  if (command.kind == Kind::mode && !is_one_of(word, modes)) return "vertex, face, border or border-partial";
+  if (command.kind == Kind::action && !find_action(word)) return "an action (" + action_names() + ")";
+  if (command.kind == Kind::recover && !is_one_of(word, recovery_answers)) return "restore or discard";
+  if (command.kind == Kind::prompt && !is_one_of(word, unsaved_answers)) return "save, discard or cancel";
+  return {};
 }
 
 }  // namespace
@@ -85,7 +96,8 @@ const char* script_synopsis() {
          "  click X Y                 left click at window pixel (X, Y), origin top-left\n"
          "  double-click X Y          move the orbit centre to the surface under pixel (X, Y)\n"
          "  key LABEL                 press a key of the help overlay (W, S, X, Ctrl+Z, ...)\n"
-         "  action add-polygon|accept|clear|delete|zip|merge|undo|redo\n"
+         "  action NAME               run an action: add-polygon, accept, clear, delete, zip, merge,\n"
+         "                            undo, redo, or any of the help overlay's (wireframe, frame, ...)\n"
          "  subdiv LEVEL              subdivision level 0-6\n"
          "  offset DISTANCE           offset distance (0 turns offsetting off)\n"
          "  view AZ EL                look from azimuth AZ and elevation EL (degrees), framed\n"
@@ -144,22 +156,8 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
       command.numbers.push_back(value);
     }
     if (!is_valid) continue;
-    if (command.kind == ScriptCommand::Kind::mode && !is_one_of(command.words[0], modes)) {
-      fail(words[1].column,
-           "expected vertex, face, border or border-partial, found '" + command.words[0] + "'");
-      continue;
-    }
-    if (command.kind == ScriptCommand::Kind::action && !is_one_of(command.words[0], actions)) {
-      fail(words[1].column, "expected add-polygon, accept, clear, delete, zip, merge, undo or redo, found '" +
-                                command.words[0] + "'");
-      continue;
-    }
-    if (command.kind == ScriptCommand::Kind::recover && !is_one_of(command.words[0], recovery_answers)) {
-      fail(words[1].column, "expected restore or discard, found '" + command.words[0] + "'");
-      continue;
-    }
-    if (command.kind == ScriptCommand::Kind::prompt && !is_one_of(command.words[0], unsaved_answers)) {
-      fail(words[1].column, "expected save, discard or cancel, found '" + command.words[0] + "'");
+    if (const std::string expected = expected_word(command); !expected.empty()) {
+      fail(words[1].column, "expected " + expected + ", found '" + command.words[0] + "'");
       continue;
     }
     commands.push_back(std::move(command));

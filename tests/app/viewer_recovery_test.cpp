@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "app/cli_support.hpp"
+#include "app/viewer_support.hpp"
 #include "viewer/autosave.hpp"
 #include "viewer/session.hpp"
 
@@ -21,7 +21,7 @@ const char* funnel_scene =
     "instance i f endinstance\n";
 
 // A scene and the recovery file a viewer that crashed after moving its slider to 1.7 left behind, in
-// the state folder XDG_STATE_HOME=dir/state gives the viewer.
+// the recovery folder the window under test is given.
 struct CrashedSession {
   fs::path dir, document, recovery;
   Autosave autosave;
@@ -43,9 +43,8 @@ struct CrashedSession {
   nome::test::CommandResult run_viewer(const std::string& script_text) const {
     const fs::path script = dir / "script.txt";
     std::ofstream(script) << script_text;
-    return nome::test::run_nome_prefixed(
-        "env XDG_STATE_HOME=" + (dir / "state").string() + " xvfb-run -a -s \"-screen 0 1280x800x24\"",
-        document.string() + " --script " + script.string());
+    return nome::test::run_window(document.string() + " --script " + script.string(),
+                                  {dir / "state" / "recent", dir / "state" / "nome" / "recovery"});
   }
 };
 

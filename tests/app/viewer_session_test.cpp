@@ -1,6 +1,5 @@
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -10,11 +9,11 @@
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "nome/query/pick.hpp"
-#include "render/image.hpp"
 
 using namespace nome;
-using nome::test::run_viewer;
+using nome::test::run_window;
 
+// The viewer's sessions in this process, on the null renderer: scripts, picks, edits, saves and prompts.
 namespace {
 
 const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
@@ -34,84 +33,12 @@ std::string click_line(glm::dvec2 p) {
   return "click " + std::to_string(int(p.x)) + " " + std::to_string(int(p.y)) + "\n";
 }
 
-// How many pixels of the picture are close to the colour (each channel within the tolerance).
-int count_pixels(const render::Image& image, int r, int g, int b, int tolerance) {
-  int n = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const auto* p = image.pixel(x, y);
-      n += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
-           std::abs(p[2] - b) <= tolerance;
-    }
-  return n;
-}
-
 }  // namespace
-
-TEST_CASE("without a display the viewer says so and points to nome render", "[app]") {
-  const auto r = nome::test::run_nome_prefixed("env -u DISPLAY -u WAYLAND_DISPLAY", assets + "cube.obj");
-  CHECK(r.status == 1);
-  CHECK_THAT(r.err, Catch::Contains("no display"));
-  CHECK_THAT(r.err, Catch::Contains("nome render"));
-}
-
-TEST_CASE("a scripted session picks a vertex and a face, exports and takes a screenshot", "[app]") {
-  const std::string dir = nome::test::private_scratch_dir("viewer_cube");
-  const Mesh mesh = build_mesh(read_polygons(assets + "cube.obj"));
-  const auto projection = nome::test::viewer_projection(mesh, 30.0, 25.0);
-  std::optional<glm::dvec2> vertex_click;
-  Index picked = no_index;
-  for (Index v = 0; v < mesh.num_vertices() && !vertex_click; ++v)
-    if ((vertex_click = nome::test::click_position(mesh, projection, v))) picked = v;
-  REQUIRE(vertex_click);
-  const std::string script = write_script(dir,
-                                          "view 30 25\n"
-                                          "mode vertex\n" +
-                                              click_line(*vertex_click) +
-                                              "mode face\n"
-                                              "click 640 400\n"
-                                              "key W\n"
-                                              "screenshot " +
-                                              dir +
-                                              "/cube.png\n"
-                                              "export " +
-                                              dir + "/cube.obj\nquit\n");
-  const auto r = run_viewer(assets + "cube.obj --script " + script);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  CHECK_THAT(r.err, Catch::Contains("vertex " + obj_vertex(picked) + " selected"));
-  CHECK_THAT(r.err, Catch::Contains("face "));
-  const render::Image shot = render::read_png(dir + "/cube.png");
-  CHECK(shot.width == nome::test::viewer_width);
-  CHECK(shot.height == nome::test::viewer_height);
-  // ImGui's light panels and the white background are both on screen.
-  CHECK(count_pixels(shot, 240, 240, 240, 3) > 20000);
-  CHECK(count_pixels(shot, 255, 255, 255, 0) > 100000);
-  CHECK(build_mesh(read_polygons(dir + "/cube.obj")).num_faces() == mesh.num_faces());
-}
-
-TEST_CASE("the Möbius band shows its back faces in their own colour", "[app]") {
-  const std::string dir = nome::test::private_scratch_dir("viewer_mobius");
-  const std::string script = write_script(dir, "view 20 35\nscreenshot " + dir + "/mobius.png\nquit\n");
-  const auto r = run_viewer(assets + "mobius_band.obj --script " + script);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const render::Image shot = render::read_png(dir + "/mobius.png");
-  int front = 0, back = 0;
-  for (int y = 0; y < shot.height; ++y)
-    for (int x = 0; x < shot.width; ++x) {
-      const auto* p = shot.pixel(x, y);
-      front += p[0] > p[2] + 40;  // gold
-      back += p[2] > p[0] + 40;   // blue
-    }
-  CHECK(front > 2000);
-  CHECK(back > 2000);
-}
 
 TEST_CASE("a bad script is refused before the window does anything", "[app]") {
   const std::string dir = nome::test::private_scratch_dir("viewer_bad_script");
   const std::string script = write_script(dir, "click 10\n");
-  const auto r = run_viewer(assets + "cube.obj --script " + script);
+  const auto r = run_window(assets + "cube.obj --script " + script);
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("script.txt:1:9: expected 'click X Y"));
 }
@@ -133,9 +60,8 @@ TEST_CASE("border modes select a whole loop from one click and a segment from th
   REQUIRE(expected);
   const std::string script =
       write_script(dir, "view 20 35\nmode border\n" + click_line(pa) + "mode border-partial\n" +
-                            click_line(pa) + click_line(pa) + click_line(pb) + click_line(ps) +
-                            "screenshot " + dir + "/border.png\nquit\n");
-  const auto r = run_viewer(assets + "mobius_band.obj --script " + script);
+                            click_line(pa) + click_line(pa) + click_line(pb) + click_line(ps) + "quit\n");
+  const auto r = run_window(assets + "mobius_band.obj --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("border of " + std::to_string(mesh.loop_vertices(0).size()) +
@@ -153,7 +79,7 @@ TEST_CASE("the merge action shows the merged stage, which export writes", "[app]
                                         "f 1 2 3 4\nf 5 6 7 8\n";
   const std::string script =
       write_script(dir, "export " + dir + "/before.obj\naction merge\nexport " + dir + "/after.obj\nquit\n");
-  const auto r = run_viewer(dir + "/pieces.obj --script " + script);
+  const auto r = run_window(dir + "/pieces.obj --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK(build_mesh(read_polygons(dir + "/before.obj")).num_vertices() == 8);
@@ -203,9 +129,8 @@ TEST_CASE("a session deletes a face, undoes and redoes it, then fills the hole a
   const std::string script = write_script(
       dir, "view 30 25\nmode face\n" + click_line(face_click) + "action delete\nexport " + dir +
                "/deleted.obj\naction undo\nexport " + dir + "/undone.obj\naction redo\nmode vertex\n" +
-               corner_clicks + "action add-polygon\naction accept\nscreenshot " + dir +
-               "/filled.png\nexport " + dir + "/filled.obj\nquit\n");
-  const auto r = run_viewer(assets + "cube.obj --script " + script);
+               corner_clicks + "action add-polygon\naction accept\nexport " + dir + "/filled.obj\nquit\n");
+  const auto r = run_window(assets + "cube.obj --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK(build_mesh(read_polygons(dir + "/deleted.obj")).num_faces() == 5);
@@ -222,7 +147,7 @@ TEST_CASE("subdiv and offset show the later stages, which export writes: the Mö
   const std::string script =
       write_script(dir, "subdiv 2\nexport " + dir + "/smooth.obj\noffset 0.05\nexport " + dir +
                             "/solid.obj\noffset 0\nsubdiv 1\nexport " + dir + "/once.obj\nquit\n");
-  const auto r = run_viewer(assets + "mobius_band.obj --script " + script);
+  const auto r = run_window(assets + "mobius_band.obj --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   const Mesh band = build_mesh(read_polygons(assets + "mobius_band.obj"));
@@ -245,7 +170,7 @@ TEST_CASE("a computed stage picks faces but refuses edits, and a bad level is re
                                           "view 30 25\nsubdiv 1\nmode face\nclick 640 400\naction delete\n"
                                           "subdiv 7\nexport " +
                                               dir + "/cube.obj\nquit\n");
-  const auto r = run_viewer(assets + "cube.obj --script " + script);
+  const auto r = run_window(assets + "cube.obj --script " + script);
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("selected in the subdivided stage"));
   CHECK_THAT(r.err, Catch::Contains("delete: the subdivided stage is computed from the scene; switch to the "
@@ -260,7 +185,7 @@ TEST_CASE("a double-click moves the orbit centre onto the surface, and a dropped
   const std::string dir = nome::test::private_scratch_dir("viewer_drop");
   const std::string script = write_script(dir, "view 30 25\ndouble-click 640 400\ndrop " + assets +
                                                    "tetrahedron.obj\nexport " + dir + "/dropped.obj\nquit\n");
-  const auto r = run_viewer(assets + "cube.obj --script " + script);
+  const auto r = run_window(assets + "cube.obj --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   // The cube spans [-1, 1]^3: the centre lies on one of its faces.
@@ -273,27 +198,6 @@ TEST_CASE("a double-click moves the orbit centre onto the surface, and a dropped
   CHECK(build_mesh(read_polygons(dir + "/dropped.obj")).num_faces() == 4);
 }
 
-TEST_CASE("quitting with unsaved changes asks first, in a prompt over the dimmed window; save and quit saves",
-          "[app]") {
-  const std::string dir = nome::test::private_scratch_dir("viewer_quit_prompt");
-  std::filesystem::copy_file(assets + "funnel_cube.nome", dir + "/funnel_cube.nome");
-  // No `quit`: the prompt's answer ends the session.
-  const std::string script =
-      write_script(dir, "set fp_n 6\nscreenshot " + dir + "/before.png\nkey Ctrl+Q\nscreenshot " + dir +
-                            "/prompt.png\nprompt save\n");
-  const auto r = run_viewer(dir + "/funnel_cube.nome --script " + script);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  CHECK_THAT(r.err, Catch::Contains("quit: the scene has unsaved changes"));
-  const scene::Scene saved = read_scene(dir + "/funnel_cube.nome");
-  CHECK(saved.parameters()[*saved.find_parameter("fp_n")].value == 6.0);
-  // Ctrl+Q did not close the window: the prompt is up, and the modal dims the white background.
-  const int white_before = count_pixels(render::read_png(dir + "/before.png"), 255, 255, 255, 0);
-  const int white_prompt = count_pixels(render::read_png(dir + "/prompt.png"), 255, 255, 255, 0);
-  CHECK(white_before > 100000);
-  CHECK(white_prompt < white_before / 10);
-}
-
 TEST_CASE("a file dropped on a scene with unsaved changes waits for the answer: cancel keeps, discard opens",
           "[app]") {
   const std::string dir = nome::test::private_scratch_dir("viewer_drop_modified");
@@ -301,23 +205,12 @@ TEST_CASE("a file dropped on a scene with unsaved changes waits for the answer: 
   const std::string script =
       write_script(dir, "set fp_n 6\ndrop " + cube + "\nprompt cancel\nexport " + dir + "/kept.obj\ndrop " +
                             cube + "\nprompt discard\nexport " + dir + "/dropped.obj\nquit\n");
-  const auto r = run_viewer(assets + "funnel_cube.nome --script " + script);
+  const auto r = run_window(assets + "funnel_cube.nome --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("open cube.obj: funnel_cube.nome has unsaved changes"));
   CHECK(build_mesh(read_polygons(dir + "/kept.obj")).num_faces() == 36);  // six funnels of six quads
   CHECK(build_mesh(read_polygons(dir + "/dropped.obj")).num_faces() == 6);
-}
-
-TEST_CASE("a scene's rim lines are drawn, though they have no faces", "[app]") {
-  const std::string dir = nome::test::private_scratch_dir("viewer_rim_lines");
-  const std::string script = write_script(dir, "view 30 25\nscreenshot " + dir + "/rim.png\nquit\n");
-  const auto r =
-      run_viewer(std::string(NOME_SOURCE_DIR) + "/tests/data/original/rimline.nom --script " + script);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  // The polyline's three segments in the rim colour (0.05, 0.45, 0.55).
-  CHECK(count_pixels(render::read_png(dir + "/rim.png"), 13, 115, 140, 20) > 300);
 }
 
 TEST_CASE("an .anom file given after its scene, or dropped on it, applies to the open scene", "[app]") {
@@ -327,7 +220,7 @@ TEST_CASE("an .anom file given after its scene, or dropped on it, applies to the
       write_script(dir, "export " + dir + "/given.obj\ndrop " + original + "kleinbottle_s1.anom\n" +
                             "export " + dir + "/dropped.obj\nquit\n");
   const auto r =
-      run_viewer(original + "kleinbottle.nom " + original + "kleinbottle_s1.anom --script " + script);
+      run_window(original + "kleinbottle.nom " + original + "kleinbottle_s1.anom --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("applied " + original + "kleinbottle_s1.anom to kleinbottle.nom"));
@@ -335,7 +228,7 @@ TEST_CASE("an .anom file given after its scene, or dropped on it, applies to the
   CHECK(read_polygons(dir + "/dropped.obj").num_faces() == 88);
 
   // Alone, it has no scene to apply to.
-  const auto alone = run_viewer(original + "kleinbottle_s1.anom");
+  const auto alone = nome::test::run_nome(original + "kleinbottle_s1.anom");
   CHECK(alone.status == 2);
   CHECK_THAT(alone.err, Catch::Contains("give the .nome file before it"));
 }

@@ -1,9 +1,14 @@
 #include "app/viewer_support.hpp"
 
+#include <sstream>
+
+#include <imgui.h>
 #include <glm/geometric.hpp>
 
+#include "nome/io/read_scene.hpp"
 #include "nome/query/pick.hpp"
 #include "render/camera.hpp"
+#include "viewer/window.hpp"
 
 namespace nome::test {
 
@@ -16,6 +21,114 @@ CommandResult run_viewer(const std::string& arguments) {
   const std::string auth = private_scratch_dir("xvfb") + "/auth-" + std::to_string(sessions++);
   return run_nome_prefixed(
       "env XDG_STATE_HOME=" + state + " xvfb-run -a -f " + auth + " -s \"-screen 0 1280x800x24\"", arguments);
+}
+
+namespace {
+
+// The GL backend drawing into a multisampled framebuffer, whose pixels are read by resolving it.
+class FramebufferRenderer final : public render::SceneRenderer {
+ public:
+  explicit FramebufferRenderer(const render::Framebuffer& framebuffer)
+      : gl_(render::make_gl_scene_renderer()), framebuffer_(framebuffer) {}
+  void set_mesh(const render::MeshDisplayData& data) override { gl_->set_mesh(data); }
+  void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) override {
+    gl_->set_face_colors(colors);
+  }
+  void set_selected_faces(std::span<const Index> faces) override { gl_->set_selected_faces(faces); }
+  void set_markers(std::span<const render::CubeMarker> markers) override { gl_->set_markers(markers); }
+  void set_lines(render::Overlay overlay, std::span<const glm::vec3> points,
+                 std::span<const std::uint32_t> segments) override {
+    gl_->set_lines(overlay, points, segments);
+  }
+  void draw(const render::Camera& camera, glm::ivec2 size, const render::DisplaySettings& display,
+            const glm::vec3& rim_color) override {
+    gl_->draw(camera, size, display, rim_color);
+  }
+  render::Image read_pixels(glm::ivec2) const override { return framebuffer_.read(false); }
+
+ private:
+  std::unique_ptr<render::SceneRenderer> gl_;
+  const render::Framebuffer& framebuffer_;
+};
+
+}  // namespace
+
+TestViewer::TestViewer(const viewer::ViewerOptions& options, const viewer::ViewerStores& stores,
+                       TestRenderer renderer)
+    : context_(ImGui::CreateContext()) {
+  if (renderer == TestRenderer::gl) {
+    gl_context_ = std::make_unique<render::OffscreenContext>();
+    framebuffer_ = std::make_unique<render::Framebuffer>(viewer_width, viewer_height);
+    framebuffer_->bind();
+    renderer_ = std::make_unique<FramebufferRenderer>(*framebuffer_);
+  } else {
+    renderer_ = render::make_null_scene_renderer();
+  }
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.DisplaySize = ImVec2(float(viewer_width), float(viewer_height));
+  io.DeltaTime = 1.0f / 60.0f;
+  // A font atlas is all ImGui needs to lay out panels; no texture is ever drawn.
+  unsigned char* pixels = nullptr;
+  int width = 0, height = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+  io.Fonts->SetTexID(ImTextureID(1));
+  window_ = std::make_unique<viewer::Window>(platform_, *renderer_, options, stores);
+}
+
+TestViewer::~TestViewer() {
+  window_.reset();
+  renderer_.reset();
+  framebuffer_.reset();
+  ImGui::DestroyContext(context_);
+}
+
+viewer::ViewerStores TestViewer::private_stores() {
+  const std::string state = private_scratch_dir("viewer_state");
+  return {state + "/recent", state + "/recovery"};
+}
+
+bool TestViewer::frame(const viewer::InputFrame& input) {
+  ImGui::NewFrame();
+  const bool is_open = window_->frame(input);
+  window_->after_draw();
+  platform_.advance();
+  return is_open;
+}
+
+int TestViewer::run() {
+  for (int i = 0; i < 100000 && frame();) ++i;
+  return window_->exit_status();
+}
+
+std::string TestViewer::messages() const {
+  std::string text;
+  for (const viewer::Message& m : window_->log().messages()) {
+    const char* prefix = m.level == viewer::MessageLevel::error     ? "error: "
+                         : m.level == viewer::MessageLevel::warning ? "warning: "
+                                                                    : "";
+    text += std::string("nome: ") + prefix + m.text + "\n";
+  }
+  return text;
+}
+
+CommandResult run_window(const std::string& arguments, const viewer::ViewerStores& stores,
+                         TestRenderer renderer) {
+  viewer::ViewerOptions options;
+  std::istringstream words(arguments);
+  for (std::string word; words >> word;) {
+    if (word == "--script" && words >> word)
+      options.script = word;
+    else if (is_anom_file(word) && options.file)
+      options.anom_files.emplace_back(word);
+    else
+      options.file = word;
+  }
+  TestViewer viewer(options, stores, renderer);
+  CommandResult result;
+  result.status = viewer.run();
+  result.err = viewer.messages();
+  return result;
 }
 
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -8,15 +9,83 @@
 #include "app/cli_support.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/query/screen_projection.hpp"
+#include "render/framebuffer.hpp"
+#include "render/offscreen_context.hpp"
+#include "render/scene_renderer.hpp"
+#include "viewer/platform.hpp"
+#include "viewer/session_controller.hpp"
+#include "viewer/viewer.hpp"
+
+struct ImGuiContext;
+
+namespace nome::viewer {
+class Window;
+}
 
 namespace nome::test {
 
-// The viewer's window in the scripted sessions: Xvfb's screen holds it whole.
+// The viewer's window in the scripted sessions: Xvfb's screen holds it whole, and the in-process
+// window has its size.
 constexpr int viewer_width = 1280;
 constexpr int viewer_height = 800;
 
 // Runs `nome ARGUMENTS` on a fresh virtual display (xvfb-run), as a user's session would run.
 CommandResult run_viewer(const std::string& arguments);
+
+// A fixed-size window whose clock moves a sixtieth of a second a frame.
+class TestPlatform final : public viewer::Platform {
+ public:
+  glm::dvec2 window_size() const override { return {viewer_width, viewer_height}; }
+  glm::ivec2 framebuffer_size() const override { return {viewer_width, viewer_height}; }
+  double now() const override { return time_; }
+  void set_title(const std::string& title) override { title_ = title; }
+  void advance() { time_ += 1.0 / 60.0; }
+  const std::string& title() const { return title_; }
+
+ private:
+  double time_ = 1.0;
+  std::string title_;
+};
+
+// null: draws nothing (logic only); gl: the GL backend into a headless (EGL, else OSMesa) framebuffer,
+// the scene without the panels (ImGui has no renderer backend here).
+enum class TestRenderer { null, gl };
+
+// A viewer window in this process: ImGui without a platform backend, a test clock and state folders of
+// its own (no recovery file or recent list of the user's is read or written).
+class TestViewer {
+ public:
+  explicit TestViewer(const viewer::ViewerOptions& options,
+                      const viewer::ViewerStores& stores = private_stores(),
+                      TestRenderer renderer = TestRenderer::null);
+  ~TestViewer();
+  TestViewer(const TestViewer&) = delete;
+  TestViewer& operator=(const TestViewer&) = delete;
+
+  static viewer::ViewerStores private_stores();
+
+  viewer::Window& window() { return *window_; }
+  const TestPlatform& platform() const { return platform_; }
+  // One frame with this input; false once the window closes.
+  bool frame(const viewer::InputFrame& input = {});
+  // Frames until the window closes (a script's `quit`) or a frame limit; the exit status.
+  int run();
+  // The log as a scripted session prints it on stderr.
+  std::string messages() const;
+
+ private:
+  ImGuiContext* context_;
+  std::unique_ptr<render::OffscreenContext> gl_context_;
+  std::unique_ptr<render::Framebuffer> framebuffer_;
+  TestPlatform platform_;
+  std::unique_ptr<render::SceneRenderer> renderer_;
+  std::unique_ptr<viewer::Window> window_;
+};
+
+// `nome ARGUMENTS` (FILE, .anom files, --script S.txt) in this process: the status and the log as err.
+CommandResult run_window(const std::string& arguments,
+                         const viewer::ViewerStores& stores = TestViewer::private_stores(),
+                         TestRenderer renderer = TestRenderer::null);
 
 // The camera of the viewer after the script command `view AZ EL` (framed to the mesh).
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation);

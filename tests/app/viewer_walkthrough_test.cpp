@@ -13,9 +13,10 @@
 #include "viewer/stage_pipeline.hpp"
 
 using namespace nome;
-using nome::test::run_viewer;
+using nome::test::run_window;
 
-// The report's walkthroughs (sections 8.1 and 8.2) as scripted sessions: the same clicks a person makes.
+// The report's walkthroughs (sections 8.1 and 8.2) as scripted sessions in this process, on the null
+// renderer: the same clicks a person makes.
 namespace {
 
 const std::string examples = std::string(NOME_SOURCE_DIR) + "/assets/";
@@ -34,10 +35,10 @@ std::string instance_of(const std::string& vertex) {
 }
 
 // The script lines that end both walkthroughs (report Fig. 11d, 12d): the merged mesh `merged.obj` is
-// subdivided and thickened, shown in `png` and exported as `solid.stl`.
-std::string subdivide_and_offset(const std::string& dir, const std::string& png) {
-  return "action merge\nexport " + dir + "/merged.obj\nsubdiv 2\noffset 0.05\nkey F\nscreenshot " + dir +
-         "/" + png + "\nexport " + dir + "/solid.stl\n";
+// subdivided, thickened, framed and exported as `solid.stl`.
+std::string subdivide_and_offset(const std::string& dir) {
+  return "action merge\nexport " + dir + "/merged.obj\nsubdiv 2\noffset 0.05\nkey F\nexport " + dir +
+         "/solid.stl\n";
 }
 
 // The thickened surface is a closed orientable solid's skin, twice the merged surface's Euler
@@ -90,9 +91,8 @@ TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated pol
   const std::string script_path = dir + "/script.txt";
   std::ofstream(script_path) << "view 30 25\nmode vertex\n"
                              << clicks << "action add-polygon\naction accept\n"
-                             << "screenshot " << dir << "/funnel_cube.png\nsave " << dir
-                             << "/saved.nome\nquit\n";
-  const auto r = run_viewer(file + " --script " + script_path);
+                             << "save " << dir << "/saved.nome\nquit\n";
+  const auto r = run_window(file + " --script " + script_path);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("add-polygon: "));
@@ -144,11 +144,11 @@ TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, un
   const std::string script_path = dir + "/script.txt";
   std::ofstream(script_path) << "view 30 25\nmode border\n"
                              << click_line(rims[pair.first].click) << click_line(rims[pair.second].click)
-                             << "action zip\naction merge\nexport " << dir << "/zipped.obj\nscreenshot "
-                             << dir << "/klein_bottle.png\naction undo\nexport " << dir << "/undone.obj\n"
+                             << "action zip\naction merge\nexport " << dir << "/zipped.obj\n"
+                             << "action undo\nexport " << dir << "/undone.obj\n"
                              << "action redo\n"
-                             << subdivide_and_offset(dir, "klein_bottle_solid.png") << "quit\n";
-  const auto r = run_viewer(file + " --script " + script_path);
+                             << subdivide_and_offset(dir) << "quit\n";
+  const auto r = run_window(file + " --script " + script_path);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("zip: "));
@@ -164,9 +164,8 @@ TEST_CASE("funnel cube walkthrough, last step: the eight consolidated corners me
           "[app]") {
   const std::string dir = nome::test::private_scratch_dir("walkthrough_funnel_cube_solid");
   const std::string script_path = dir + "/script.txt";
-  std::ofstream(script_path) << "view 30 25\n"
-                             << subdivide_and_offset(dir, "funnel_cube_solid.png") << "quit\n";
-  const auto r = run_viewer(examples + "funnel_cube_consolidated.nome --script " + script_path);
+  std::ofstream(script_path) << "view 30 25\n" << subdivide_and_offset(dir) << "quit\n";
+  const auto r = run_window(examples + "funnel_cube_consolidated.nome --script " + script_path);
   INFO(r.err);
   REQUIRE(r.status == 0);
   check_solid(dir);
@@ -179,7 +178,7 @@ TEST_CASE("a script moves sliders by name and an unknown slider fails the sessio
   const std::string script_path = dir + "/script.txt";
   std::ofstream(script_path) << "set fp_n 6\nexport " << dir << "/six.obj\nset fp_n 8\nexport " << dir
                              << "/eight.obj\nset fp_m 3\nquit\n";
-  const auto r = run_viewer(examples + "funnel_cube.nome --script " + script_path);
+  const auto r = run_window(examples + "funnel_cube.nome --script " + script_path);
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("no slider 'fp_m'"));
   const Index six = build_mesh(read_polygons(dir + "/six.obj")).num_faces();
@@ -258,9 +257,8 @@ TEST_CASE(
   CHECK(expected.borders == 0);
   CHECK(expected.chi == 0);
   CHECK_FALSE(expected.orientable);
-  std::ofstream(dir + "/script.txt") << script << "view 120 25\n"
-                                     << subdivide_and_offset(dir, "klein_bottle_closed.png") << "quit\n";
-  const auto r = run_viewer(file + " --script " + dir + "/script.txt");
+  std::ofstream(dir + "/script.txt") << script << "view 120 25\n" << subdivide_and_offset(dir) << "quit\n";
+  const auto r = run_window(file + " --script " + dir + "/script.txt");
   INFO(r.err);
   REQUIRE(r.status == 0);
   const TopologyReport bottle = topology_report(build_mesh(read_polygons(dir + "/merged.obj")));
@@ -325,9 +323,9 @@ TEST_CASE(
     INFO("face of " << face.size() << " corners, first " << face[0]);
     REQUIRE(is_added);
   }
-  std::ofstream(dir + "/script.txt") << script << "action accept\nview 0 -35\nscreenshot " << dir
-                                     << "/funnel_cube_corner.png\nsave " << dir << "/saved.nome\nquit\n";
-  const auto r = run_viewer(file + " --script " + dir + "/script.txt");
+  std::ofstream(dir + "/script.txt") << script << "action accept\nview 0 -35\nsave " << dir
+                                     << "/saved.nome\nquit\n";
+  const auto r = run_window(file + " --script " + dir + "/script.txt");
   INFO(r.err);
   REQUIRE(r.status == 0);
   const scene::Scene saved = read_scene(dir + "/saved.nome");

@@ -1,0 +1,114 @@
+#include <algorithm>
+
+#include <imgui.h>
+
+#include "viewer/panels.hpp"
+
+namespace nome::viewer {
+namespace {
+
+void draw_selection_section(const ActionRegistry& actions, Selection& selection) {
+  int mode = int(selection.mode());
+  const char* labels[] = {"vertex", "face", "border (whole)", "border (partial)"};
+  for (int i = 0; i < 4; ++i) {
+    if (ImGui::RadioButton(labels[i], &mode, i)) selection.set_mode(SelectionMode(i));
+    if (i % 2 == 0) ImGui::SameLine(130);
+  }
+  ImGui::Text("%zu vertices, %zu faces, %zu borders", selection.vertices().size(), selection.faces().size(),
+              selection.borders().size());
+  if (ImGui::Button("Clear selection")) actions.run(Action::clear_selection);
+}
+
+void draw_stage_section(const ActionRegistry& actions, PipelineSettings& settings) {
+  int stage = int(settings.stage);
+  const char* stages[] = {to_string(Stage::scene), to_string(Stage::merged), to_string(Stage::subdivided),
+                          to_string(Stage::offset), to_string(Stage::subdivided_offset)};
+  ImGui::SetNextItemWidth(200);
+  if (ImGui::Combo("show", &stage, stages, IM_ARRAYSIZE(stages))) settings.stage = Stage(stage);
+  if (ImGui::Button("Merge")) actions.run(Action::merge);
+  ImGui::SameLine();
+  float tolerance = float(settings.merge_tolerance);
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::InputFloat("tolerance", &tolerance, 0.0f, 0.0f, "%.5f", ImGuiInputTextFlags_EnterReturnsTrue))
+    settings.merge_tolerance = std::max(0.0f, tolerance);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: a thousandth of the scene's size");
+  ImGui::Checkbox("subdivide the merged mesh", &settings.merge);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("off: the scene's pieces are subdivided each on its own");
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderInt("subdivision", &settings.subdivision_levels, 0, 6);
+  ImGui::SameLine();
+  int rule = int(settings.rule);
+  const char* rules[] = {"classic", "report"};
+  ImGui::SetNextItemWidth(80);
+  if (ImGui::Combo("##rule", &rule, rules, IM_ARRAYSIZE(rules))) settings.rule = SubdivisionRule(rule);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("smooth-vertex rule: Catmull-Clark's or the 2016 report's");
+  float distance = float(settings.offset_distance);
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::SliderFloat("offset", &distance, 0.001f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic))
+    settings.offset_distance = std::max(distance, 1e-6f);
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderInt("subdivision after offset", &settings.subdivision_after, 0, 4);
+}
+
+void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& model) {
+  if (!is_editable(model.settings.stage))
+    ImGui::TextDisabled("%s is computed: edit on scene or merged", to_string(model.settings.stage));
+  ImGui::BeginDisabled(!model.can_edit);
+  if (ImGui::Button("Add polygon")) actions.run(Action::add_polygon);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("through the selected vertices, in click order (Enter)");
+  ImGui::SameLine();
+  if (ImGui::Button("Delete faces")) actions.run(Action::delete_faces);
+  if (ImGui::Button("Zip borders")) actions.run(Action::zip);
+  ImGui::SameLine();
+  float penalty = float(model.zipper.triangle_penalty);
+  ImGui::SetNextItemWidth(110);
+  if (ImGui::SliderFloat("triangle penalty", &penalty, 1.0f, 3.0f, "%.2f"))
+    model.zipper.triangle_penalty = penalty;
+  ImGui::EndDisabled();
+  ImGui::BeginDisabled(!model.document || model.document->temporary_faces().empty());
+  if (ImGui::Button("Accept")) actions.run(Action::accept);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("move the temporary faces into the consolidated mesh");
+  ImGui::SameLine();
+  if (ImGui::Button("Clear temporary")) actions.run(Action::clear_temporary);
+  ImGui::EndDisabled();
+  if (const Document* document = model.document)
+    ImGui::Text("%zu temporary, %zu consolidated, %zu deleted", document->temporary_faces().size(),
+                document->consolidated_faces().size(), document->deleted_faces().size());
+}
+
+ControlPanelChanges draw_color_section(const ControlPanelModel& model) {
+  const ImGuiColorEditFlags flags = ImGuiColorEditFlags_NoInputs;
+  render::DisplaySettings& display = model.display;
+  ControlPanelChanges changes;
+  ImGui::ColorEdit3("default", &display.front_color.x, flags);
+  ImGui::ColorEdit3("back faces", &display.back_color.x, flags);
+  changes.is_selection_changed = ImGui::ColorEdit3("selected", &display.selection_color.x, flags);
+  ImGui::ColorEdit3("background", &display.background.x, flags);
+  ImGui::ColorEdit3("rim lines", &model.rim_color.x, flags);
+  changes.is_edit_color_changed = ImGui::ColorEdit3("temporary", &model.edit_colors.temporary.x, flags);
+  changes.is_edit_color_changed |=
+      ImGui::ColorEdit3("consolidated", &model.edit_colors.consolidated.x, flags);
+  return changes;
+}
+
+}  // namespace
+
+ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPanelModel model) {
+  ImGui::SetNextWindowPos(ImVec2(8, 30), ImGuiCond_FirstUseEver);
+  // Fits its content as sections open and close (every widget has a fixed width: no feedback loop).
+  if (!ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::End();
+    return {};
+  }
+  ControlPanelChanges changes;
+  if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
+    draw_selection_section(actions, model.selection);
+  if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen))
+    draw_stage_section(actions, model.settings);
+  if (ImGui::CollapsingHeader("Edit", ImGuiTreeNodeFlags_DefaultOpen)) draw_edit_section(actions, model);
+  if (ImGui::CollapsingHeader("Colours")) changes = draw_color_section(model);
+  ImGui::End();
+  return changes;
+}
+
+}  // namespace nome::viewer

@@ -1,0 +1,91 @@
+#include <imgui.h>
+
+#include "viewer/panels.hpp"
+
+namespace nome::viewer {
+namespace {
+
+// A menu item that runs an action, showing its shortcut from the table.
+void action_item(const ActionRegistry& actions, const char* label, Action action, bool is_enabled = true) {
+  if (ImGui::MenuItem(label, shortcut(action).c_str(), false, is_enabled)) actions.run(action);
+}
+
+std::optional<std::filesystem::path> draw_file_menu(const ActionRegistry& actions,
+                                                    const MenuContext& context) {
+  std::optional<std::filesystem::path> chosen;
+  action_item(actions, "Open...", Action::open);
+  if (ImGui::BeginMenu("Open Recent", !context.recent.files().empty())) {
+    const auto& files = context.recent.files();
+    for (std::size_t i = 0; i < files.size() && !chosen; ++i) {
+      const std::string keys = i < 4 ? "Ctrl+" + std::to_string(i + 1) : "";
+      if (ImGui::MenuItem(files[i].string().c_str(), keys.c_str())) chosen = files[i];
+    }
+    ImGui::EndMenu();
+  }
+  action_item(actions, "Save", Action::save, context.has_scene);
+  action_item(actions, "Save As...", Action::save_as, context.has_scene);
+  action_item(actions, "Export STL / OBJ...", Action::export_mesh, context.has_document);
+  action_item(actions, "Screenshot", Action::screenshot);
+  ImGui::Separator();
+  action_item(actions, "Quit", Action::quit);
+  return chosen;
+}
+
+void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& display,
+                    PanelVisibility& panels) {
+  bool is_wire = display.show_wireframe;
+  if (ImGui::MenuItem("Faces", shortcut(Action::toggle_faces).c_str(), &display.show_faces) &&
+      !display.show_faces)
+    display.show_wireframe = true;
+  if (ImGui::MenuItem("Wireframe overlay", nullptr, &is_wire)) display.show_wireframe = is_wire;
+  bool is_flat = display.shading == render::Shading::flat;
+  if (ImGui::MenuItem("Flat shading", shortcut(Action::toggle_shading).c_str(), &is_flat))
+    display.shading = is_flat ? render::Shading::flat : render::Shading::smooth;
+  bool is_culled = display.back_faces == render::BackFacePolicy::cull;
+  if (ImGui::MenuItem("Back-face culling", shortcut(Action::toggle_culling).c_str(), &is_culled))
+    display.back_faces = is_culled ? render::BackFacePolicy::cull : render::BackFacePolicy::different;
+  bool is_back_colored = display.back_faces == render::BackFacePolicy::different;
+  if (ImGui::MenuItem("Back faces in their own colour", nullptr, &is_back_colored))
+    display.back_faces = is_back_colored ? render::BackFacePolicy::different : render::BackFacePolicy::same;
+  ImGui::MenuItem("Möbius edges", nullptr, &display.show_mobius_edges);
+  ImGui::MenuItem("Borders", nullptr, &display.show_borders);
+  ImGui::MenuItem("Instance colours", nullptr, &display.use_face_colors);
+  ImGui::Separator();
+  action_item(actions, "Frame all", Action::frame_all);
+  action_item(actions, "Reset view", Action::reset_view);
+  action_item(actions, "Front", Action::view_front);
+  action_item(actions, "Right", Action::view_right);
+  action_item(actions, "Top", Action::view_top);
+  ImGui::Separator();
+  ImGui::MenuItem("Log panel", shortcut(Action::toggle_log).c_str(), &panels.is_log_shown);
+}
+
+}  // namespace
+
+std::optional<std::filesystem::path> draw_main_menu(const ActionRegistry& actions, const MenuContext& context,
+                                                    render::DisplaySettings& display,
+                                                    PanelVisibility& panels) {
+  if (!ImGui::BeginMainMenuBar()) return std::nullopt;
+  std::optional<std::filesystem::path> chosen;
+  if (ImGui::BeginMenu("File")) {
+    chosen = draw_file_menu(actions, context);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Edit")) {
+    action_item(actions, "Undo", Action::undo, context.can_undo);
+    action_item(actions, "Redo", Action::redo, context.can_redo);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("View")) {
+    draw_view_menu(actions, display, panels);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Help")) {
+    action_item(actions, "Keys and mouse", Action::toggle_help);
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+  return chosen;
+}
+
+}  // namespace nome::viewer

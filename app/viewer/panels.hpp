@@ -1,0 +1,89 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <imgui.h>
+#include <glm/vec3.hpp>
+
+#include "nome/edit/document.hpp"
+#include "nome/mesh/topology_report.hpp"
+#include "nome/ops/zipper.hpp"
+#include "nome/scene/scene.hpp"
+#include "render/display_settings.hpp"
+#include "viewer/actions.hpp"
+#include "viewer/message_log.hpp"
+#include "viewer/picking.hpp"
+#include "viewer/recent_files.hpp"
+#include "viewer/selection.hpp"
+#include "viewer/stage_pipeline.hpp"
+
+// The ImGui panels, one file each: each draws from what it is given and reports what the user changed;
+// actions go through the registry, so a button does what its key and its script name do.
+namespace nome::viewer {
+
+// Which panels are up (View > Log panel, Help, their keys).
+struct PanelVisibility {
+  bool is_help_shown = false;
+  bool is_log_shown = true;
+};
+
+// What the menu bar needs to know to enable its items.
+struct MenuContext {
+  const RecentFiles& recent;
+  bool has_document;
+  bool has_scene;
+  bool can_undo;
+  bool can_redo;
+};
+// The menu bar; returns the recent file chosen in File > Open Recent, if any.
+std::optional<std::filesystem::path> draw_main_menu(const ActionRegistry& actions, const MenuContext& context,
+                                                    render::DisplaySettings& display,
+                                                    PanelVisibility& panels);
+
+// The control panel's state: selection mode, stage settings, edit buttons, colours.
+struct ControlPanelModel {
+  Selection& selection;
+  PipelineSettings& settings;
+  ZipperOptions& zipper;
+  render::DisplaySettings& display;
+  glm::vec3& rim_color;
+  EditColors& edit_colors;
+  const Document* document;  // none without a file
+  bool can_edit;
+};
+// What the control panel changed that needs the renderer told.
+struct ControlPanelChanges {
+  bool is_selection_changed = false;
+  bool is_edit_color_changed = false;
+};
+ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPanelModel model);
+
+// One panel per slider bank; returns the slider moved this frame and its snapped value.
+std::optional<std::pair<Index, double>> draw_slider_panels(const scene::Scene& scene);
+
+void draw_topology_panel(const TopologyReport& report);
+void draw_log_panel(const MessageLog& log, bool& is_shown);
+// Errors red, warnings amber, in the log and the status bar.
+ImVec4 message_color(MessageLevel level);
+
+// The status bar's summary of the document and the shown stage (empty file: no document).
+struct StatusLine {
+  std::string file;
+  bool is_modified = false;
+  Stage stage = Stage::scene;
+  Index vertices = 0;
+  Index faces = 0;
+  SelectionMode mode = SelectionMode::vertex;
+};
+void draw_status_bar(const std::optional<StatusLine>& status, const MessageLog& log);
+void draw_help_overlay(bool& is_shown);
+// The spinner while a stage takes longer than a frame.
+void draw_progress(double seconds_running);
+
+// The status bar's height, which the log panel sits above.
+float status_bar_height();
+
+}  // namespace nome::viewer

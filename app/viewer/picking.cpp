@@ -1,0 +1,106 @@
+#include "viewer/picking.hpp"
+
+#include <algorithm>
+
+#include "nome/query/pick.hpp"
+
+namespace nome::viewer {
+namespace {
+
+bool contains(const std::vector<Index>& items, Index i) {
+  return std::find(items.begin(), items.end(), i) != items.end();
+}
+
+std::string select_border(Selection& selection, const StageResult& shown, Index v) {
+  const std::size_t before = selection.borders().size();
+  std::string hint = selection.click_border_vertex(*shown.borders, v);
+  if (hint.empty() && selection.borders().size() > before) {
+    const auto& border = selection.borders().back();
+    hint = std::string(border.is_loop ? "border" : "partial border") + " of " +
+           std::to_string(border.vertices.size()) + " vertices selected, from " +
+           shown.mesh->vertex_label(border.vertices.front());
+  }
+  return hint;
+}
+
+}  // namespace
+
+std::string select_at(Selection& selection, const StageResult& shown, const TriangleBvh& bvh,
+                      const ScreenProjection& projection, glm::dvec2 pixel) {
+  const Mesh& mesh = *shown.mesh;
+  std::string hint;
+  if (selection.mode() == SelectionMode::face) {
+    if (const auto face = pick_face(bvh, projection, pixel)) {
+      selection.click_face(*face);
+      hint = "face " + mesh.face_label(*face) +
+             (contains(selection.faces(), *face) ? " selected" : " deselected");
+    }
+  } else if (const auto v = pick_vertex(mesh, bvh, projection, pixel, pick_pixels)) {
+    if (selection.mode() == SelectionMode::vertex) {
+      selection.click_vertex(*v);
+      hint = "vertex " + mesh.vertex_label(*v) +
+             (contains(selection.vertices(), *v) ? " selected" : " deselected");
+    } else {
+      hint = select_border(selection, shown, *v);
+    }
+  }
+  if (!hint.empty() && !is_editable(shown.stage))
+    hint += std::string(" in the ") + to_string(shown.stage) +
+            " stage (to look; edits need the scene or merged stage)";
+  return hint;
+}
+
+BorderSelection zipper_border(const BorderLookup& borders, const Selection::Border& border) {
+  BorderSelection out;
+  out.start = border.vertices.front();
+  out.end = border.is_loop ? out.start : border.vertices.back();
+  if (!border.is_loop && border.vertices.size() > 1) {
+    const auto loop = borders.loop_vertices(borders.loop_of(out.start));
+    const auto at = std::find(loop.begin(), loop.end(), out.start) - loop.begin();
+    out.backwards = loop[(at + 1) % loop.size()] != border.vertices[1];
+  }
+  return out;
+}
+
+void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Selection& selection,
+                    const glm::vec3& color) {
+  renderer.set_selected_faces(selection.faces());
+  std::vector<Index> marked(selection.vertices().begin(), selection.vertices().end());
+  // The first vertex of each whole border is the zipper's matching point: marked as a cube.
+  for (const auto& border : selection.borders())
+    if (border.is_loop && !border.vertices.empty()) marked.push_back(border.vertices[0]);
+  std::vector<render::CubeMarker> markers = render::vertex_markers(mesh, marked, color);
+  for (const render::CubeMarker& m :
+       render::vertex_markers(mesh, selection.pending_ends(), {0.1f, 0.7f, 0.3f}))
+    markers.push_back(m);
+  renderer.set_markers(markers);
+  std::vector<glm::vec3> points;
+  std::vector<std::uint32_t> segments;
+  for (const auto& border : selection.borders()) {
+    const std::uint32_t first = std::uint32_t(points.size());
+    for (Index v : border.vertices) points.push_back(glm::vec3(mesh.position(v)));
+    const std::uint32_t n = std::uint32_t(border.vertices.size());
+    for (std::uint32_t i = 0; i + 1 < n; ++i) segments.insert(segments.end(), {first + i, first + i + 1});
+    if (border.is_loop && n > 2) segments.insert(segments.end(), {first + n - 1, first});
+  }
+  renderer.set_lines(render::Overlay::selection, points, segments);
+}
+
+void show_face_colors(render::SceneRenderer& renderer, const StageResult& shown, const EditColors& colors) {
+  // Faces keep their order through the scene and merged stages: the edited ones take their colours.
+  auto face_colors = shown.display.face_colors;
+  const FaceParts& parts = shown.parts;
+  if (is_editable(shown.stage) &&
+      face_colors.size() == std::size_t(parts.scene) + parts.consolidated + parts.temporary) {
+    auto paint = [&](Index first, Index count, glm::vec3 c) {
+      for (Index f = first; f < first + count; ++f)
+        face_colors[f] = {std::uint8_t(c.r * 255.0f + 0.5f), std::uint8_t(c.g * 255.0f + 0.5f),
+                          std::uint8_t(c.b * 255.0f + 0.5f), 255};
+    };
+    paint(parts.scene, parts.consolidated, colors.consolidated);
+    paint(parts.scene + parts.consolidated, parts.temporary, colors.temporary);
+  }
+  renderer.set_face_colors(face_colors);
+}
+
+}  // namespace nome::viewer

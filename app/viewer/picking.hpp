@@ -1,0 +1,40 @@
+#pragma once
+
+#include <string>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "nome/ops/zipper.hpp"
+#include "nome/query/screen_projection.hpp"
+#include "nome/query/triangle_bvh.hpp"
+#include "render/scene_renderer.hpp"
+#include "viewer/selection.hpp"
+#include "viewer/stage_pipeline.hpp"
+
+namespace nome::viewer {
+
+// A window pixel within this distance of a vertex picks it.
+constexpr double pick_pixels = 8.0;
+
+// A click in the selection's mode on the shown stage: selects or deselects what is under the pixel.
+// Returns the log line saying what happened (empty when nothing is under the pixel).
+std::string select_at(Selection& selection, const StageResult& shown, const TriangleBvh& bvh,
+                      const ScreenProjection& projection, glm::dvec2 pixel);
+
+// A selected border as the zipper reads it: whole loops from their first vertex, segments end to end in
+// the direction they were picked.
+BorderSelection zipper_border(const BorderLookup& borders, const Selection::Border& border);
+
+// The selection's markers (vertex cubes, the first vertex of each whole border) and border lines.
+void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Selection& selection,
+                    const glm::vec3& color);
+
+// The colours of the temporary and consolidated faces (edits), painted over the stage's own.
+struct EditColors {
+  glm::vec3 consolidated{0.62f, 0.42f, 0.86f};
+  glm::vec3 temporary{0.30f, 0.76f, 0.42f};
+};
+void show_face_colors(render::SceneRenderer& renderer, const StageResult& shown, const EditColors& colors);
+
+}  // namespace nome::viewer

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "viewer/actions.hpp"
+#include "viewer/autosave.hpp"
+#include "viewer/message_log.hpp"
+#include "viewer/recent_files.hpp"
+#include "viewer/selection.hpp"
+#include "viewer/session.hpp"
+#include "viewer/stage_pipeline.hpp"
+
+namespace nome::viewer {
+
+// Where a viewer keeps its state between runs: the recent-files list and the recovery folder.
+struct ViewerStores {
+  std::filesystem::path recent_files;
+  std::filesystem::path recovery_folder;
+
+  // The user's, from the environment (XDG folders).
+  static ViewerStores from_environment();
+};
+
+// The open document and what comes with it: opening, saving, .anom files, slider moves, edits, the
+// file watcher, the autosave and the crash-recovery offer. Errors go to the log. The one place that
+// calls into the Session.
+class SessionController {
+ public:
+  SessionController(MessageLog& log, const ViewerStores& stores);
+
+  // The stage jobs read the session's polygons; the window reads only what follows.
+  const Session* session() const { return session_ ? &*session_ : nullptr; }
+  bool has_session() const { return session_.has_value(); }
+  // The open file; empty without one.
+  std::filesystem::path path() const { return session_ ? session_->path() : std::filesystem::path{}; }
+  const Document* document() const { return session_ ? &session_->document() : nullptr; }
+  const scene::Scene* scene() const { return session_ ? session_->scene() : nullptr; }
+  bool has_scene() const { return scene() != nullptr; }
+  bool is_modified() const { return session_ && session_->is_modified(); }
+  const RecentFiles& recent() const { return recent_; }
+
+  // Opens a file; on error logs it, keeps the current one and returns false.
+  bool open(const std::filesystem::path& path);
+  // An .anom file applies to the open scene instead of replacing it. Returns whether it applied.
+  bool apply_anom(const std::filesystem::path& path);
+  // Saves the scene to `target` (the session's file when none); throws Error on failure.
+  void save(const std::optional<std::filesystem::path>& target);
+  // save() with the error logged; returns whether it saved.
+  bool save_logged(const std::optional<std::filesystem::path>& target);
+  // Moves a slider; throws InvalidInputError for an unknown name or a value out of range.
+  void set_parameter(const std::string& name, double value);
+  // The panel's slider move: errors logged.
+  void set_parameter(Index parameter, double value);
+
+  // An edit action (undo, redo, accept, clear, and on the shown scene or merged stage with the selection
+  // on it: add-polygon, delete, zip with two borders); needs a session. The log says what happened.
+  // Returns whether it applied.
+  bool edit(Action action, const StageResult* shown, const Selection& selection, const ZipperOptions& zipper);
+
+  // Once a frame: reloads the file when it changed on disk (every half second at most) and keeps the
+  // recovery file of unsaved changes.
+  void update(double now);
+  // The recovery file a viewer that did not end cleanly left for this document.
+  const std::optional<std::filesystem::path>& recovery_offer() const { return recovery_offer_; }
+  // Restores (true) or discards the offered changes; returns whether the session was replaced.
+  bool answer_recovery(bool restore);
+  // The user gave the changes up, or the viewer ends cleanly: no recovery file should offer them back.
+  void discard_recovery();
+
+ private:
+  MessageLog& log_;
+  std::optional<Session> session_;
+  std::filesystem::file_time_type file_time_{};
+  double last_file_check_ = -1.0;
+  RecentFiles recent_;
+  Autosave autosave_;
+  std::optional<std::filesystem::path> recovery_offer_;
+};
+
+}  // namespace nome::viewer

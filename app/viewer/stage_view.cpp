@@ -1,0 +1,76 @@
+#include "viewer/stage_view.hpp"
+
+namespace nome::viewer {
+
+bool StageView::request(const Session& session) {
+  const bool is_new_version = !has_request_ || session.version() != requested_version_;
+  if (!is_new_version && settings_ == requested_settings_) return false;
+  requested_version_ = session.version();
+  requested_settings_ = settings_;
+  has_request_ = true;
+  // The scene's polygons are copied for the job.
+  job_.submit([this, input = session.pipeline_input(), parts = session.face_parts(),
+               settings = settings_](std::stop_token stop) {
+    auto result = pipeline_.run(input, settings, stop);
+    if (result) result->parts = parts;
+    return result;
+  });
+  return is_new_version;
+}
+
+std::optional<StageResult> StageView::take(std::chrono::milliseconds patience) {
+  if (auto result = job_.take(patience); result && *result) return std::move(**result);
+  return std::nullopt;
+}
+
+void StageView::show(StageResult result, double now) {
+  picking_bvh_.reset();
+  shown_time_ = now;
+  shown_ = std::move(result);
+}
+
+void StageView::clear() {
+  shown_.reset();
+  picking_bvh_.reset();
+  has_request_ = false;
+}
+
+const TriangleBvh& StageView::picking_bvh() {
+  if (!picking_bvh_ && bvh_job_.is_busy()) take_picking_bvh(std::chrono::minutes(1));
+  if (!picking_bvh_) picking_bvh_ = std::make_shared<const TriangleBvh>(*shown_mesh());
+  return *picking_bvh_;
+}
+
+void StageView::prefetch_picking_bvh(double now) {
+  take_picking_bvh(std::chrono::milliseconds(0));
+  constexpr double rest_seconds = 0.25;
+  if (!shown_ || picking_bvh_ || job_.is_busy() || bvh_job_.is_busy() || now - shown_time_ < rest_seconds)
+    return;
+  bvh_job_.submit([mesh = shown_->mesh](std::stop_token) {
+    return PickingBvh{mesh, std::make_shared<const TriangleBvh>(*mesh)};
+  });
+}
+
+void StageView::take_picking_bvh(std::chrono::milliseconds patience) {
+  // A BVH of a mesh no longer shown is dropped.
+  if (auto done = bvh_job_.take(patience); done && shown_ && done->mesh == shown_->mesh)
+    picking_bvh_ = done->bvh;
+}
+
+RimLines rim_lines(const Session& session) {
+  RimLines lines;
+  const scene::Scene* scene = session.scene();
+  if (!scene) return lines;
+  for (const scene::SceneInstance& instance : scene->instances())
+    for (const scene::RimLine& rim : instance.geometry.rims) {
+      const auto first = std::uint32_t(lines.points.size());
+      const auto n = std::uint32_t(rim.vertices.size());
+      for (Index v : rim.vertices) lines.points.push_back(instance.geometry.soup.positions[v]);
+      for (std::uint32_t i = 0; i + 1 < n; ++i)
+        lines.segments.insert(lines.segments.end(), {first + i, first + i + 1});
+      if (rim.is_loop && n > 2) lines.segments.insert(lines.segments.end(), {first + n - 1, first});
+    }
+  return lines;
+}
+
+}  // namespace nome::viewer

@@ -1,0 +1,73 @@
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "nome/query/triangle_bvh.hpp"
+#include "viewer/background_job.hpp"
+#include "viewer/session.hpp"
+#include "viewer/stage_pipeline.hpp"
+
+namespace nome::viewer {
+
+// The displayed stage: computed by jobs off the UI thread from the session's polygons and the stage
+// settings, shown when the latest one finishes; and the picking BVH of the shown mesh. The one place
+// that runs the stage pipeline.
+class StageView {
+ public:
+  PipelineSettings& settings() { return settings_; }
+  const PipelineSettings& settings() const { return settings_; }
+
+  // Starts a job when the session's polygons or the settings changed since the last request (a newer
+  // request supersedes the one in flight). Returns whether the polygons changed.
+  bool request(const Session& session);
+  // The result of the latest request if it finished within `patience`; throws the pipeline's errors.
+  std::optional<StageResult> take(std::chrono::milliseconds patience);
+  // Makes the result the shown stage, at time `now` (seconds).
+  void show(StageResult result, double now);
+  // The next request starts a job even if nothing changed (a new session).
+  void invalidate() { has_request_ = false; }
+  // A new document: nothing shown until its first result.
+  void clear();
+
+  const StageResult* shown() const { return shown_ ? &*shown_ : nullptr; }
+  const Mesh* shown_mesh() const { return shown_ ? shown_->mesh.get() : nullptr; }
+  bool is_busy() const { return job_.is_busy(); }
+  double seconds_running() const { return job_.seconds_running(); }
+
+  // The BVH of the shown mesh, for picks: built off the UI thread once the geometry has rested for a
+  // moment (a slider drag never starts one), or at a pick that comes sooner (waiting for a build in
+  // flight rather than starting another).
+  const TriangleBvh& picking_bvh();
+  // Takes a finished BVH build and starts one once the geometry rested; throws the build's errors.
+  void prefetch_picking_bvh(double now);
+
+ private:
+  void take_picking_bvh(std::chrono::milliseconds patience);
+
+  PipelineSettings settings_ = initial_settings();
+  StagePipeline pipeline_;
+  BackgroundJob<std::optional<StageResult>> job_;
+  std::uint64_t requested_version_ = 0;
+  PipelineSettings requested_settings_;
+  bool has_request_ = false;
+  std::optional<StageResult> shown_;
+  double shown_time_ = 0.0;
+  struct PickingBvh {
+    std::shared_ptr<const Mesh> mesh;  // what it was built over
+    std::shared_ptr<const TriangleBvh> bvh;
+  };
+  BackgroundJob<PickingBvh> bvh_job_;
+  std::shared_ptr<const TriangleBvh> picking_bvh_;  // of shown_, once built
+};
+
+// The scene's rim lines (`polyline`, `circle`): drawn over every stage, as they have no faces.
+struct RimLines {
+  std::vector<Vec3> points;
+  std::vector<std::uint32_t> segments;  // two indices into points each
+};
+RimLines rim_lines(const Session& session);
+
+}  // namespace nome::viewer

@@ -1,0 +1,198 @@
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "nome/error.hpp"
+#include "nome/io/obj.hpp"
+#include "nome/io/stl.hpp"
+#include "nome/query/pick.hpp"
+#include "viewer/window.hpp"
+
+// What each action and script command does in the window: bound once, from the action table's rows.
+namespace nome::viewer {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+std::filesystem::path next_screenshot_path() {
+  const std::filesystem::path folder = std::filesystem::current_path();
+  for (int i = 1;; ++i) {
+    const auto candidate = folder / ("nome-screenshot-" + std::to_string(i) + ".png");
+    if (!std::filesystem::exists(candidate)) return candidate;
+  }
+}
+
+// A handler that always does what it was asked.
+template <typename F>
+ActionRegistry::Handler always(F f) {
+  return [f] {
+    f();
+    return true;
+  };
+}
+
+}  // namespace
+
+void Window::bind_actions() {
+  actions_.bind(Action::toggle_help, always([this] { panels_.is_help_shown = !panels_.is_help_shown; }));
+  actions_.bind(Action::toggle_log, always([this] { panels_.is_log_shown = !panels_.is_log_shown; }));
+  for (Action action : {Action::open, Action::save_as, Action::export_mesh})
+    actions_.bind(action, always([this, action] { open_browser(action); }));
+  const Action recent[] = {Action::open_recent_1, Action::open_recent_2, Action::open_recent_3,
+                           Action::open_recent_4};
+  for (std::size_t i = 0; i < 4; ++i)
+    actions_.bind(recent[i], [this, i] {
+      if (i >= sessions_.recent().files().size()) return false;
+      request_open(sessions_.recent().files()[i]);
+      return true;
+    });
+  actions_.bind(Action::save, [this] { return sessions_.save_logged(std::nullopt); });
+  actions_.bind(Action::quit, always([this] { request_quit(); }));
+  actions_.bind(Action::zoom_in, always([this] { view_.zoom(1.0 / 1.25); }));
+  actions_.bind(Action::zoom_out, always([this] { view_.zoom(1.25); }));
+  actions_.bind(Action::toggle_faces, always([this] {
+                  display_.show_faces = !display_.show_faces;
+                  display_.show_wireframe = !display_.show_faces || display_.show_wireframe;
+                }));
+  actions_.bind(Action::toggle_shading, always([this] {
+                  const bool is_smooth = display_.shading == render::Shading::smooth;
+                  display_.shading = is_smooth ? render::Shading::flat : render::Shading::smooth;
+                }));
+  actions_.bind(Action::toggle_culling, always([this] {
+                  const bool is_culled = display_.back_faces == render::BackFacePolicy::cull;
+                  display_.back_faces =
+                      is_culled ? render::BackFacePolicy::different : render::BackFacePolicy::cull;
+                }));
+  actions_.bind(Action::frame_all, always([this] { frame_all(); }));
+  actions_.bind(Action::reset_view, always([this] {
+                  set_view(ViewController::default_azimuth, ViewController::default_elevation);
+                }));
+  actions_.bind(Action::view_front, always([this] { set_view(0.0, 0.0); }));
+  actions_.bind(Action::view_right, always([this] { set_view(90.0, 0.0); }));
+  actions_.bind(Action::view_top, always([this] { set_view(0.0, 90.0); }));
+  actions_.bind(Action::screenshot, always([this] { pending_screenshot_ = next_screenshot_path(); }));
+  actions_.bind(Action::clear_selection, always([this] {
+                  selection_.clear();
+                  refresh_selection();
+                }));
+  actions_.bind(Action::merge, always([this] { stage_.settings().stage = Stage::merged; }));
+  for (Action action : {Action::add_polygon, Action::accept, Action::clear_temporary, Action::delete_faces,
+                        Action::zip, Action::undo, Action::redo})
+    actions_.bind(action, [this, action] { return edit(action); });
+}
+
+void Window::open_browser(Action action) {
+  const std::filesystem::path path = sessions_.path();
+  const std::filesystem::path folder = path.parent_path();
+  if (action == Action::open) {
+    browser_.open("Open", folder, {".nome", ".anom", ".sif", ".slf", ".obj", ".stl"}, "Open");
+  } else if (action == Action::save_as) {
+    if (!sessions_.has_scene()) return;
+    browser_.open("Save As", folder, {".nome"}, "Save", path.filename().string());
+  } else {
+    if (!sessions_.has_session()) return;
+    browser_.open("Export", folder, {".stl", ".obj"}, "Save", path.stem().string() + ".stl");
+  }
+  browser_purpose_ = action;
+}
+
+bool Window::can_edit() const {
+  return sessions_.has_session() && stage_.shown() && is_editable(stage_.settings().stage);
+}
+
+bool Window::edit(Action action) {
+  const std::string name = action_name(action);
+  if (!sessions_.has_session()) {
+    log_.error(name + ": no file is open");
+    return false;
+  }
+  const bool is_on_selection =
+      action == Action::add_polygon || action == Action::delete_faces || action == Action::zip;
+  if (is_on_selection && !can_edit()) {
+    log_.error(name + ": the " + to_string(stage_.settings().stage) +
+               " stage is computed from the scene; switch to the scene or merged stage to edit");
+    return false;
+  }
+  if (action == Action::zip && selection_.borders().size() != 2) {
+    log_.error("zip: select two borders first (border modes), found " +
+               std::to_string(selection_.borders().size()));
+    return false;
+  }
+  if (!sessions_.edit(action, stage_.shown(), selection_, zipper_options_)) return false;
+  // The picked elements went into the edit (or went away with it).
+  if (is_on_selection) actions_.run(Action::clear_selection);
+  return true;
+}
+
+// --------------------------------------------------------------------------------------------- script
+
+void Window::click(glm::dvec2 pixel) {
+  const StageResult* shown = stage_.shown();
+  if (!shown) return;
+  const std::string hint =
+      select_at(selection_, *shown, stage_.picking_bvh(), view_.projection(platform_.window_size()), pixel);
+  if (!hint.empty()) log_.info(hint);
+  refresh_selection();
+}
+
+bool Window::double_click(glm::dvec2 pixel) {
+  if (!stage_.shown()) return false;
+  const auto ray = ray_through_pixel(view_.projection(platform_.window_size()), pixel);
+  const auto hit = stage_.picking_bvh().cast_nearest(ray);
+  if (!hit) {
+    log_.info("double-click: no surface under the cursor, the orbit centre stays");
+    return false;
+  }
+  char where[96];
+  std::snprintf(where, sizeof where, "orbit centre at (%.6g, %.6g, %.6g)", hit->point.x, hit->point.y,
+                hit->point.z);
+  log_.info(where);
+  view_.orbit_around(hit->point);
+  return true;
+}
+
+void Window::set_view(double azimuth, double elevation) {
+  view_.set_angles(azimuth, elevation);
+  frame_all();
+}
+
+void Window::export_mesh(const std::filesystem::path& path) {
+  const Mesh* mesh = stage_.shown_mesh();
+  if (!mesh) throw InvalidInputError("export: nothing is shown");
+  const std::string ext = lower_extension(path);
+  if (ext == ".obj")
+    write_obj(path, *mesh);
+  else if (ext == ".stl")
+    write_stl(path, *mesh);
+  else
+    throw InvalidInputError("export: the file must end in .stl or .obj, found '" + path.string() + "'");
+  log_.info("exported " + path.string());
+}
+
+void Window::set_subdivision(double levels) {
+  if (!(levels >= 0 && levels <= 6 && levels == std::floor(levels)))
+    throw InvalidInputError("subdiv: expected a level from 0 to 6, found " + std::to_string(levels));
+  PipelineSettings& settings = stage_.settings();
+  settings.subdivision_levels = int(levels);
+  // The offset stages subdivide before offsetting: they stay; otherwise the subdivision is shown.
+  if (is_editable(settings.stage)) settings.stage = Stage::subdivided;
+}
+
+void Window::set_offset(double distance) {
+  if (!(distance >= 0 && std::isfinite(distance)))
+    throw InvalidInputError("offset: expected a distance of 0 or more, found " + std::to_string(distance));
+  PipelineSettings& settings = stage_.settings();
+  if (distance == 0) {
+    settings.stage = Stage::subdivided;
+    return;
+  }
+  settings.offset_distance = distance;
+  if (settings.stage != Stage::subdivided_offset) settings.stage = Stage::offset;
+}
+
+}  // namespace nome::viewer
