@@ -5,6 +5,7 @@
 
 #include "app/viewer_support.hpp"
 #include "render/image.hpp"
+#include "support/shared_examples.hpp"
 
 using namespace nome;
 
@@ -58,10 +59,11 @@ TEST_CASE("the Möbius band shows its back faces in their own colour", "[app][re
 }
 
 TEST_CASE("a scene's rim lines are drawn, though they have no faces", "[app][render]") {
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   const std::string dir = nome::test::private_scratch_dir("viewer_rim_lines");
   const std::string script = write_script(dir, "view 30 25\nscreenshot " + dir + "/rim.png\nquit\n");
   const auto r =
-      run_gl_window(std::string(NOME_SOURCE_DIR) + "/tests/data/original/rimline.nom --script " + script);
+      run_gl_window(nome::test::shared_examples_dir("original") + "rimline.nom --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   // The polyline's three segments in the rim colour (0.05, 0.45, 0.55).

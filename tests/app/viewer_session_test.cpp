@@ -9,6 +9,7 @@
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "nome/query/pick.hpp"
+#include "support/shared_examples.hpp"
 
 using namespace nome;
 using nome::test::run_window;
@@ -214,7 +215,8 @@ TEST_CASE("a file dropped on a scene with unsaved changes waits for the answer: 
 }
 
 TEST_CASE("an .anom file given after its scene, or dropped on it, applies to the open scene", "[app]") {
-  const std::string original = std::string(NOME_SOURCE_DIR) + "/tests/data/original/";
+  NOME_NEEDS_SHARED_EXAMPLES("original");
+  const std::string original = nome::test::shared_examples_dir("original");
   const std::string dir = nome::test::private_scratch_dir("viewer_anom");
   const std::string script =
       write_script(dir, "export " + dir + "/given.obj\ndrop " + original + "kleinbottle_s1.anom\n" +

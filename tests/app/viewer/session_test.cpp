@@ -5,6 +5,7 @@
 
 #include "app/cli_support.hpp"
 #include "nome/error.hpp"
+#include "support/shared_examples.hpp"
 #include "viewer/session.hpp"
 
 using namespace nome;
@@ -44,7 +45,8 @@ TEST_CASE("a bad edit of the open file keeps the last good geometry and the edit
 
 TEST_CASE("an .anom file applies its saved sliders and working mesh to the open scene, not to flat files",
           "[app]") {
-  const std::string original = std::string(NOME_SOURCE_DIR) + "/tests/data/original/";
+  NOME_NEEDS_SHARED_EXAMPLES("original");
+  const std::string original = nome::test::shared_examples_dir("original");
   Session session = Session::open(original + "kleinbottle.nom");
   REQUIRE(session.scene_soup().num_faces() == 80);
   CHECK_FALSE(session.is_modified());
