@@ -45,6 +45,200 @@ Buffer<Index> csr_offsets(std::span<const Index> keys, Index num_keys) {
   return offsets;
 }
 
+// Element names for messages: the soup's own, or `v12` / `f3`.
+struct Labels {
+  const std::vector<std::string>& vertex_names;
+  const std::vector<std::string>& face_names;
+  std::string vertex(Index v) const { return label(vertex_names, "v", v); }
+  std::string face(Index f) const { return label(face_names, "f", f); }
+};
+
+Index next_corner(const MeshArrays& a, Index c) {
+  const Index f = a.corner_faces[c];
+  return c + 1 == a.face_offsets[f + 1] ? a.face_offsets[f] : c + 1;
+}
+
+Index prev_corner(const MeshArrays& a, Index c) {
+  const Index f = a.corner_faces[c];
+  return c == a.face_offsets[f] ? a.face_offsets[f + 1] - 1 : c - 1;
+}
+
+void check_arrays(const PolygonSoup& soup) {
+  const Index nv = soup.num_vertices(), nf = soup.num_faces();
+  if (soup.face_offsets.empty() || soup.face_offsets.front() != 0 ||
+      soup.face_offsets.back() != soup.face_vertices.size())
+    throw InvalidInputError("build_mesh: face_offsets do not describe face_vertices");
+  if (!soup.vertex_names.empty() && soup.vertex_names.size() != nv)
+    throw InvalidInputError("build_mesh: vertex_names must be empty or one per vertex");
+  if (!soup.face_names.empty() && soup.face_names.size() != nf)
+    throw InvalidInputError("build_mesh: face_names must be empty or one per face");
+  if (!soup.face_colors.empty() && soup.face_colors.size() != nf)
+    throw InvalidInputError("build_mesh: face_colors must be empty or one per face");
+}
+
+// Degree, index range, repeated vertices (a stamp array makes the check O(degree)), finite positions.
+void check_faces(const PolygonSoup& soup, const Labels& labels, Problems& problems) {
+  const Index nv = soup.num_vertices();
+  std::vector<Index> stamp(nv, no_index);
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    const Index b = soup.face_offsets[f], e = soup.face_offsets[f + 1];
+    if (e < b) throw InvalidInputError("build_mesh: face_offsets are not increasing");
+    if (e - b < 3) {
+      problems.add("face " + labels.face(f) + " has " + std::to_string(e - b) +
+                   " vertices (at least 3 needed)");
+      continue;
+    }
+    for (Index c = b; c < e; ++c) {
+      const Index v = soup.face_vertices[c];
+      if (v >= nv) {
+        problems.add("face " + labels.face(f) + " refers to vertex " + std::to_string(v) +
+                     " but there are only " + std::to_string(nv) + " vertices");
+      } else if (stamp[v] == f) {
+        problems.add("face " + labels.face(f) + " repeats vertex " + labels.vertex(v));
+      } else {
+        stamp[v] = f;
+      }
+    }
+  }
+  for (size_t i = 0; i < soup.positions.size(); ++i) {
+    const Vec3& p = soup.positions[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      problems.add("vertex " + labels.vertex(Index(i)) + " has a non-finite position");
+  }
+}
+
+// Half-edges (corner c runs from its vertex to the next corner's) are bucketed by their smaller end
+// vertex; within a bucket a stamp array indexed by the larger end finds the partner. No hashing,
+// O(corners).
+void find_edges(MeshArrays& m, Index nv, const Labels& labels, Problems& problems) {
+  const Index nc = Index(m.corner_vertices.size());
+  Buffer<Index> min_vertex(nc);
+  for (Index c = 0; c < nc; ++c)
+    min_vertex[c] = std::min(m.corner_vertices[c], m.corner_vertices[next_corner(m, c)]);
+  const Buffer<Index> bucket_offsets = csr_offsets(min_vertex, nv);
+  Buffer<Index> bucket(nc);
+  {
+    std::vector<Index> fill(bucket_offsets.begin(), bucket_offsets.end() - 1);
+    for (Index c = 0; c < nc; ++c) bucket[fill[min_vertex[c]]++] = c;
+  }
+  min_vertex = {};
+  m.corner_edges.assign(nc, no_index);
+  m.edges.reserve(nc / 2 + 1);
+  std::vector<Index> stamp(nv, no_index);
+  for (Index a = 0; a < nv; ++a) {
+    for (Index i = bucket_offsets[a]; i < bucket_offsets[a + 1]; ++i) {
+      const Index c = bucket[i];
+      const Index from = m.corner_vertices[c], to = m.corner_vertices[next_corner(m, c)];
+      const Index other = from == a ? to : from;
+      Index e = stamp[other];
+      if (e == no_index || m.edges[e].vertices[0] + m.edges[e].vertices[1] != a + other ||
+          std::min(m.edges[e].vertices[0], m.edges[e].vertices[1]) != a) {
+        e = static_cast<Index>(m.edges.size());
+        Edge edge;
+        edge.vertices = {from, to};
+        edge.faces[0] = m.corner_faces[c];
+        edge.corners[0] = c;
+        m.edges.push_back(edge);
+        stamp[other] = e;
+      } else {
+        Edge& edge = m.edges[e];
+        if (edge.faces[1] != no_index) {
+          problems.add("edge (" + labels.vertex(edge.vertices[0]) + ", " + labels.vertex(edge.vertices[1]) +
+                       ") has a third face " + labels.face(m.corner_faces[c]) + " besides " +
+                       labels.face(edge.faces[0]) + " and " + labels.face(edge.faces[1]));
+          continue;
+        }
+        edge.faces[1] = m.corner_faces[c];
+        edge.corners[1] = c;
+        edge.is_mobius = from == edge.vertices[0];
+      }
+      m.corner_edges[c] = e;
+    }
+  }
+}
+
+// Edges are numbered by their smaller vertex; renumber them by first appearance in face order so that
+// numbering follows the input, as users expect when reading messages and files.
+void number_edges_in_face_order(MeshArrays& m) {
+  std::vector<Index> order(m.edges.size(), no_index);
+  Index next = 0;
+  for (Index e : m.corner_edges)
+    if (order[e] == no_index) order[e] = next++;
+  Buffer<Edge> sorted(m.edges.size());
+  for (Index e = 0; e < m.edges.size(); ++e) sorted[order[e]] = m.edges[e];
+  m.edges = std::move(sorted);
+  for (Index& e : m.corner_edges) e = order[e];
+}
+
+// Walks the fan of vertex v (its corners fan_corners[b, b + k)) face to face across edges, from a corner
+// whose incoming edge is a border if there is one; false when the faces do not form one fan.
+bool walk_fan(MeshArrays& m, Index v, std::span<const Index> corners, std::vector<char>& visited) {
+  const Index b = m.fan_corner_offsets[v], k = Index(corners.size());
+  Index start = corners[0];
+  Index start_edge = m.corner_edges[prev_corner(m, start)];
+  Index borders_here = 0;
+  for (const Index c : corners) {
+    for (Index e : {m.corner_edges[c], m.corner_edges[prev_corner(m, c)]}) {
+      if (m.edges[e].is_boundary() && borders_here++ == 0) {
+        start = c;
+        start_edge = e;
+      }
+    }
+  }
+  Index c = start, entered = start_edge;
+  int sign = 1;
+  Index count = 0;
+  for (;;) {
+    visited[c] = 1;
+    m.fan_edges.push_back(entered);
+    m.fan_corners[b + count] = c;
+    m.corner_signs[c] = static_cast<signed char>(sign);
+    ++count;
+    // Leave through the other edge of this face at v.
+    const Index e_out = m.corner_edges[c] == entered ? m.corner_edges[prev_corner(m, c)] : m.corner_edges[c];
+    const Edge& edge = m.edges[e_out];
+    if (edge.is_boundary()) {
+      m.fan_edges.push_back(e_out);
+      break;
+    }
+    const Index f_next = edge.other_face(m.corner_faces[c]);
+    const Index side = edge.faces[0] == f_next ? 0 : 1;
+    Index c_next = edge.corners[side];
+    if (m.corner_vertices[c_next] != v) c_next = next_corner(m, c_next);
+    if (edge.is_mobius) sign = -sign;
+    if (c_next == start || visited[c_next] || count == k) break;
+    c = c_next;
+    entered = e_out;
+  }
+  return count == k && (borders_here == 0 || borders_here == 2);
+}
+
+// Corners bucketed by vertex, then each vertex's fan walked.
+void find_fans(MeshArrays& m, Index nv, const Labels& labels, Problems& problems) {
+  const Index nc = Index(m.corner_vertices.size());
+  m.fan_corner_offsets = csr_offsets(m.corner_vertices, nv);
+  Buffer<Index> vertex_corner_list(nc);
+  {
+    std::vector<Index> fill(m.fan_corner_offsets.begin(), m.fan_corner_offsets.end() - 1);
+    for (Index c = 0; c < nc; ++c) vertex_corner_list[fill[m.corner_vertices[c]]++] = c;
+  }
+  m.fan_corners.resize(nc);
+  m.corner_signs.assign(nc, 0);
+  m.fan_edge_offsets.assign(size_t(nv) + 1, 0);
+  m.fan_edges.clear();
+  m.fan_edges.reserve(size_t(nc) + nv);
+  std::vector<char> visited(nc, 0);
+  for (Index v = 0; v < nv; ++v) {
+    const Index b = m.fan_corner_offsets[v], k = m.fan_corner_offsets[v + 1] - b;
+    m.fan_edge_offsets[v + 1] = m.fan_edge_offsets[v];
+    if (k == 0) continue;
+    if (!walk_fan(m, v, std::span<const Index>(vertex_corner_list.data() + b, k), visited))
+      problems.add("vertex " + labels.vertex(v) + ": its " + std::to_string(k) +
+                   " faces do not form one fan (the surface touches itself there)");
+    m.fan_edge_offsets[v + 1] = static_cast<Index>(m.fan_edges.size());
+  }
+}
+
 std::atomic<std::uint64_t> meshes_built{0};
 
 }  // namespace
@@ -55,189 +249,25 @@ std::uint64_t build_mesh_count() {
 
 Mesh build_mesh(PolygonSoup soup) {
   meshes_built.fetch_add(1, std::memory_order_relaxed);
+  check_arrays(soup);
   Mesh m;
-  Problems problems;
-  const Index nv = soup.num_vertices();
-  const Index nf = soup.num_faces();
-  auto v_label = [&](Index v) { return label(m.vertex_names_, "v", v); };
-  auto f_label = [&](Index f) { return label(m.face_names_, "f", f); };
-
-  if (soup.face_offsets.empty() || soup.face_offsets.front() != 0 ||
-      soup.face_offsets.back() != soup.face_vertices.size())
-    throw InvalidInputError("build_mesh: face_offsets do not describe face_vertices");
-  if (!soup.vertex_names.empty() && soup.vertex_names.size() != nv)
-    throw InvalidInputError("build_mesh: vertex_names must be empty or one per vertex");
-  if (!soup.face_names.empty() && soup.face_names.size() != nf)
-    throw InvalidInputError("build_mesh: face_names must be empty or one per face");
-  if (!soup.face_colors.empty() && soup.face_colors.size() != nf)
-    throw InvalidInputError("build_mesh: face_colors must be empty or one per face");
-
   m.vertex_names_ = std::move(soup.vertex_names);
   m.face_names_ = std::move(soup.face_names);
   m.arrays_.face_colors = std::move(soup.face_colors);
-
-  // phase: faces. Degree, index range, repeated vertices (a stamp array makes the check O(degree)).
-  std::vector<Index> stamp(nv, no_index);
-  for (Index f = 0; f < nf; ++f) {
-    const Index b = soup.face_offsets[f], e = soup.face_offsets[f + 1];
-    if (e < b) throw InvalidInputError("build_mesh: face_offsets are not increasing");
-    if (e - b < 3) {
-      problems.add("face " + f_label(f) + " has " + std::to_string(e - b) + " vertices (at least 3 needed)");
-      continue;
-    }
-    for (Index c = b; c < e; ++c) {
-      const Index v = soup.face_vertices[c];
-      if (v >= nv) {
-        problems.add("face " + f_label(f) + " refers to vertex " + std::to_string(v) +
-                     " but there are only " + std::to_string(nv) + " vertices");
-      } else if (stamp[v] == f) {
-        problems.add("face " + f_label(f) + " repeats vertex " + v_label(v));
-      } else {
-        stamp[v] = f;
-      }
-    }
-  }
-  for (size_t i = 0; i < soup.positions.size(); ++i) {
-    const Vec3& p = soup.positions[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      problems.add("vertex " + v_label(Index(i)) + " has a non-finite position");
-  }
+  const Labels labels{m.vertex_names_, m.face_names_};
+  const Index nv = soup.num_vertices();
+  Problems problems;
+  check_faces(soup, labels, problems);
   problems.throw_if_any();
 
   m.arrays_.positions = std::move(soup.positions);
   m.arrays_.face_offsets = std::move(soup.face_offsets);
   m.arrays_.corner_vertices = std::move(soup.face_vertices);
-  const Index nc = m.num_corners();
   m.find_corner_faces();
-
-  // phase: edges. Half-edges (corner c runs from its vertex to the next corner's) are bucketed by their
-  // smaller end vertex; within a bucket a stamp array indexed by the larger end finds the partner.
-  // No hashing, O(corners).
-  Buffer<Index> min_vertex(nc);
-  for (Index c = 0; c < nc; ++c)
-    min_vertex[c] = std::min(m.arrays_.corner_vertices[c], m.arrays_.corner_vertices[m.next_corner(c)]);
-  Buffer<Index> bucket_offsets = csr_offsets(min_vertex, nv);
-  Buffer<Index> bucket(nc);
-  {
-    std::vector<Index> fill(bucket_offsets.begin(), bucket_offsets.end() - 1);
-    for (Index c = 0; c < nc; ++c) bucket[fill[min_vertex[c]]++] = c;
-  }
-  min_vertex = {};
-  m.arrays_.corner_edges.assign(nc, no_index);
-  m.arrays_.edges.reserve(nc / 2 + 1);
-  std::fill(stamp.begin(), stamp.end(), no_index);
-  for (Index a = 0; a < nv; ++a) {
-    for (Index i = bucket_offsets[a]; i < bucket_offsets[a + 1]; ++i) {
-      const Index c = bucket[i];
-      const Index from = m.arrays_.corner_vertices[c], to = m.arrays_.corner_vertices[m.next_corner(c)];
-      const Index other = from == a ? to : from;
-      Index e = stamp[other];
-      if (e == no_index || m.arrays_.edges[e].vertices[0] + m.arrays_.edges[e].vertices[1] != a + other ||
-          std::min(m.arrays_.edges[e].vertices[0], m.arrays_.edges[e].vertices[1]) != a) {
-        e = static_cast<Index>(m.arrays_.edges.size());
-        Edge edge;
-        edge.vertices = {from, to};
-        edge.faces[0] = m.arrays_.corner_faces[c];
-        edge.corners[0] = c;
-        m.arrays_.edges.push_back(edge);
-        stamp[other] = e;
-      } else {
-        Edge& edge = m.arrays_.edges[e];
-        if (edge.faces[1] != no_index) {
-          problems.add("edge (" + v_label(edge.vertices[0]) + ", " + v_label(edge.vertices[1]) +
-                       ") has a third face " + f_label(m.arrays_.corner_faces[c]) + " besides " +
-                       f_label(edge.faces[0]) + " and " + f_label(edge.faces[1]));
-          continue;
-        }
-        edge.faces[1] = m.arrays_.corner_faces[c];
-        edge.corners[1] = c;
-        edge.is_mobius = from == edge.vertices[0];
-      }
-      m.arrays_.corner_edges[c] = e;
-    }
-  }
+  find_edges(m.arrays_, nv, labels, problems);
   problems.throw_if_any();
-  bucket = {};
-  bucket_offsets = {};
-
-  // Edges are numbered by their smaller vertex; renumber them by first appearance in face order so
-  // that numbering follows the input, as users expect when reading messages and files.
-  {
-    std::vector<Index> order(m.arrays_.edges.size(), no_index);
-    Index next = 0;
-    for (Index c = 0; c < nc; ++c)
-      if (order[m.arrays_.corner_edges[c]] == no_index) order[m.arrays_.corner_edges[c]] = next++;
-    Buffer<Edge> sorted(m.arrays_.edges.size());
-    for (Index e = 0; e < m.arrays_.edges.size(); ++e) sorted[order[e]] = m.arrays_.edges[e];
-    m.arrays_.edges = std::move(sorted);
-    for (Index& e : m.arrays_.corner_edges) e = order[e];
-  }
-  // phase: fans. Corners bucketed by vertex, then each vertex's fan walked face to face across edges.
-  m.arrays_.fan_corner_offsets = csr_offsets(m.arrays_.corner_vertices, nv);
-  Buffer<Index> vertex_corner_list(nc);
-  {
-    std::vector<Index> fill(m.arrays_.fan_corner_offsets.begin(), m.arrays_.fan_corner_offsets.end() - 1);
-    for (Index c = 0; c < nc; ++c) vertex_corner_list[fill[m.arrays_.corner_vertices[c]]++] = c;
-  }
-  m.arrays_.fan_corners.resize(nc);
-  m.arrays_.corner_signs.assign(nc, 0);
-  m.arrays_.fan_edge_offsets.assign(size_t(nv) + 1, 0);
-  m.arrays_.fan_edges.clear();
-  m.arrays_.fan_edges.reserve(size_t(nc) + nv);
-  std::vector<char> visited(nc, 0);
-  for (Index v = 0; v < nv; ++v) {
-    const Index b = m.arrays_.fan_corner_offsets[v], k = m.arrays_.fan_corner_offsets[v + 1] - b;
-    m.arrays_.fan_edge_offsets[v + 1] = m.arrays_.fan_edge_offsets[v];
-    if (k == 0) continue;
-    // Start at a corner whose incoming edge (the edge before it in its face) is a border, if any.
-    Index start = vertex_corner_list[b];
-    Index start_edge = m.arrays_.corner_edges[m.prev_corner(start)];
-    Index borders_here = 0;
-    for (Index i = b; i < b + k; ++i) {
-      const Index c = vertex_corner_list[i];
-      for (Index e : {m.arrays_.corner_edges[c], m.arrays_.corner_edges[m.prev_corner(c)]}) {
-        if (m.arrays_.edges[e].is_boundary()) {
-          if (borders_here++ == 0) {
-            start = c;
-            start_edge = e;
-          }
-        }
-      }
-    }
-    Index c = start, entered = start_edge;
-    int sign = 1;
-    Index count = 0;
-    const bool is_boundary = borders_here > 0;
-    for (;;) {
-      visited[c] = 1;
-      m.arrays_.fan_edges.push_back(entered);
-      m.arrays_.fan_corners[b + count] = c;
-      m.arrays_.corner_signs[c] = static_cast<signed char>(sign);
-      ++count;
-      // Leave through the other edge of this face at v.
-      const Index e_out = m.arrays_.corner_edges[c] == entered ? m.arrays_.corner_edges[m.prev_corner(c)]
-                                                               : m.arrays_.corner_edges[c];
-      const Edge& edge = m.arrays_.edges[e_out];
-      if (edge.is_boundary()) {
-        m.arrays_.fan_edges.push_back(e_out);
-        break;
-      }
-      const Index f_next = edge.other_face(m.arrays_.corner_faces[c]);
-      const Index side = edge.faces[0] == f_next ? 0 : 1;
-      Index c_next = edge.corners[side];
-      if (m.arrays_.corner_vertices[c_next] != v) c_next = m.next_corner(c_next);
-      if (edge.is_mobius) sign = -sign;
-      if (c_next == start) break;
-      if (visited[c_next] || count == k) break;
-      c = c_next;
-      entered = e_out;
-    }
-    if (count != k || (is_boundary && borders_here != 2)) {
-      problems.add("vertex " + v_label(v) + ": its " + std::to_string(k) +
-                   " faces do not form one fan (the surface touches itself there)");
-    }
-    m.arrays_.fan_edge_offsets[v + 1] = static_cast<Index>(m.arrays_.fan_edges.size());
-  }
+  number_edges_in_face_order(m.arrays_);
+  find_fans(m.arrays_, nv, labels, problems);
   problems.throw_if_any();
 
   // Sharp marks name vertex pairs; the fan of the first vertex finds the edge.
@@ -247,7 +277,7 @@ Mesh build_mesh(PolygonSoup soup) {
       for (Index e : m.vertex_edges(a))
         if (m.arrays_.edges[e].other_vertex(a) == b) found = e;
     if (found == no_index)
-      throw TopologyError("build_mesh: sharp edge (" + v_label(a) + ", " + v_label(b) +
+      throw TopologyError("build_mesh: sharp edge (" + labels.vertex(a) + ", " + labels.vertex(b) +
                           ") is not an edge of any face");
     m.arrays_.edges[found].is_sharp = true;
   }
