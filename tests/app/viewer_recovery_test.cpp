@@ -50,7 +50,8 @@ struct CrashedSession {
 
 }  // namespace
 
-TEST_CASE("after a crash the viewer offers the unsaved changes; restoring and saving keeps them", "[app]") {
+TEST_CASE("after a crash the viewer offers the unsaved changes, and restoring and saving keeps them",
+          "[app]") {
   const CrashedSession crashed("viewer_recovery_restore");
   const auto r = crashed.run_viewer("recover restore\nkey Ctrl+S\nquit\n");
   INFO(r.err);
@@ -61,7 +62,7 @@ TEST_CASE("after a crash the viewer offers the unsaved changes; restoring and sa
   fs::remove_all(crashed.dir);
 }
 
-TEST_CASE("after a crash the offered changes can be discarded; the file stays as saved", "[app]") {
+TEST_CASE("after a crash the offered changes can be discarded, and the file stays as saved", "[app]") {
   const CrashedSession crashed("viewer_recovery_discard");
   const auto r = crashed.run_viewer("recover discard\nquit\n");
   INFO(r.err);

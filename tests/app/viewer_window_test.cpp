@@ -88,8 +88,9 @@ TEST_CASE("a scripted session picks a vertex and a face, exports and takes a scr
   CHECK(build_mesh(read_polygons(dir + "/cube.obj")).num_faces() == mesh.num_faces());
 }
 
-TEST_CASE("quitting with unsaved changes asks first, in a prompt over the dimmed window; save and quit saves",
-          "[app]") {
+TEST_CASE(
+    "quitting with unsaved changes asks first, in a prompt over the dimmed window, and save and quit saves",
+    "[app]") {
   const std::string dir = nome::test::private_scratch_dir("viewer_quit_prompt");
   std::filesystem::copy_file(assets + "funnel_cube.nome", dir + "/funnel_cube.nome");
   // No `quit`: the prompt's answer ends the session.

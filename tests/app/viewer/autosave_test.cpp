@@ -75,7 +75,8 @@ TEST_CASE("autosave keeps unsaved changes in a recovery file: at once per edit, 
   fs::remove_all(dir);
 }
 
-TEST_CASE("a recovery file newer than its document is offered; restoring it gives unsaved changes", "[app]") {
+TEST_CASE("a recovery file newer than its document is offered, and restoring it gives unsaved changes",
+          "[app]") {
   const fs::path dir = nome::test::private_scratch_dir("autosave_offer");
   const fs::path document = dir / "funnel.nome", other = dir / "other" / "funnel.nome";
   fs::create_directories(other.parent_path());
@@ -116,7 +117,7 @@ TEST_CASE("a recovery file newer than its document is offered; restoring it give
   fs::remove_all(dir);
 }
 
-TEST_CASE("recovery files live in the user's state folder; flat geometry has none", "[app]") {
+TEST_CASE("recovery files live in the user's state folder, and flat geometry has none", "[app]") {
   const char* state = std::getenv("XDG_STATE_HOME");
   const std::string saved_state = state ? state : "",
                     saved_home = std::getenv("HOME") ? std::getenv("HOME") : "";
