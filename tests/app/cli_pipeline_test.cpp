@@ -42,7 +42,7 @@ TEST_CASE("nome info reports the pipeline's result", "[app]") {
              Catch::Contains("\"chi\": 0, \"orientable\": true, \"borders\": 0, \"components\": 1"));
 }
 
-TEST_CASE("pipeline options out of range are usage errors; oversized results need --force", "[app]") {
+TEST_CASE("pipeline options out of range are usage errors, oversized results need --force", "[app]") {
   const std::string cube = assets + "cube.obj";
   CHECK(run_nome("info " + cube + " --subdiv -1").status == 2);
   CHECK(run_nome("info " + cube + " --subdiv many").status == 2);

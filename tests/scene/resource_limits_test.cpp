@@ -150,7 +150,7 @@ std::string funnel_row(int count) {
 }  // namespace
 
 TEST_CASE(
-    "pieces past the face budget stop the evaluation with an estimate; a slider past it changes nothing",
+    "pieces past the face budget stop the evaluation with an estimate, and a slider past it changes nothing",
     "[scene]") {
   // 30 funnels of 100 quads against a budget of 1,000 faces: refused at the 11th, estimated from the 11.
   std::string text = funnel_row(30);

@@ -145,7 +145,7 @@ TEST_CASE("mirror reflects in a plane and reverses the winding", "[scene]") {
   CHECK(normal(mirrored).z > 0);
 }
 
-TEST_CASE("a face names a vertex by a unique suffix; ambiguity lists the candidates", "[scene]") {
+TEST_CASE("a face names a vertex by a unique suffix, ambiguity lists the candidates", "[scene]") {
   const std::string base =
       "funnel fun (4 1 0 1) endfunnel\n"
       "group g instance f1 fun endinstance instance f2 fun translate (5 0 0) endinstance endgroup\n"
@@ -179,7 +179,7 @@ TEST_CASE("surfaces colour faces: a face's own surface wins over its instance's"
   CHECK(soup.face_names[0] == "cube1_c1");
 }
 
-TEST_CASE("sharp marks a chain of edges; delete removes faces by name", "[scene]") {
+TEST_CASE("sharp marks a chain of edges, delete removes faces by name", "[scene]") {
   const Scene s = Scene::from_text(
       "point a (0 0 0) endpoint point b (1 0 0) endpoint point c (1 1 0) endpoint point d (0 1 0) endpoint\n"
       "point e (2 0 0) endpoint point f (2 1 0) endpoint\n"

@@ -56,7 +56,7 @@ TEST_CASE("the later stages start from the merged mesh, or from the scene's piec
   CHECK(shown(pipeline, soup, settings).num_faces() == 4 * (2 * 8 + 12));  // two sheets and the rim strip
 }
 
-TEST_CASE("only the scene and merged stages take edits; a stopped run does nothing", "[app]") {
+TEST_CASE("only the scene and merged stages take edits, a stopped run does nothing", "[app]") {
   CHECK(is_editable(Stage::scene));
   CHECK(is_editable(Stage::merged));
   CHECK_FALSE(is_editable(Stage::subdivided));

@@ -186,7 +186,7 @@ TEST_CASE("the temporary mesh may touch itself at a vertex before the face betwe
   CHECK(topology_report(temporary).mobius_edges == 0);
 }
 
-TEST_CASE("zipper adds a strip to the temporary mesh; accepted and merged it closes the gap", "[kernel]") {
+TEST_CASE("zipper adds a strip to the temporary mesh, accepted and merged it closes the gap", "[kernel]") {
   Document doc(two_grids());
   const Mesh shown = glue_faces(doc.scene_soup()).mesh;
   auto vertex = [&](const std::string& name) {

@@ -115,7 +115,7 @@ void check_subdivision_and_offset(unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("random 2-manifolds: Catmull-Clark keeps the topology, ignores the description; offsets are solids",
+TEST_CASE("random 2-manifolds: Catmull-Clark keeps the topology, ignores the description, offsets are solids",
           "[kernel]") {
   for (unsigned seed = 1; seed <= 60; ++seed) check_subdivision_and_offset(seed);
 }
