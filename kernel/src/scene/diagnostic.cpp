@@ -56,6 +56,11 @@ void Diagnostics::warning(SourceLocation at, std::string message) {
   items_.push_back({Severity::warning, file_, at, std::move(message)});
 }
 
+void Diagnostics::add(Diagnostic diagnostic) {
+  if (diagnostic.severity == Severity::error) ++errors_;
+  items_.push_back(std::move(diagnostic));
+}
+
 bool Diagnostics::has_errors() const {
   return std::any_of(items_.begin(), items_.end(),
                      [](const Diagnostic& d) { return d.severity == Severity::error; });

@@ -45,7 +45,7 @@ ExprId StatementParser::node(ExprOp op, SourceLocation at, ExprId a, ExprId b) {
   n.location = at;
   n.args[0] = a;
   n.args[1] = b;
-  const ExprId id = ast_.expressions.add(std::move(n));
+  const ExprId id = ast_->expressions.add(std::move(n));
   expression_depth_.resize(size_t(id) + 1, 0);
   expression_depth_[id] = depth;
   return id;
@@ -114,13 +114,17 @@ ExprId StatementParser::primary() {
   if (t.kind == TokenKind::number) {
     take();
     const ExprId id = node(ExprOp::number, t.location);
-    ast_.expressions.node(id).number = t.number;
+    ast_->expressions.node(id).number = t.number;
     return id;
   }
-  if (t.kind == TokenKind::parameter) {
+  // `$bank.name` (NOME 2.x has it too: no dialect cue), and the successor's bare `bank.name`
+  // (geom__trefoil.nom's `{expr trefoil_slider.speed}`).
+  const bool is_bare_parameter =
+      t.kind == TokenKind::word && t.text.find('.') != std::string::npos && !peek(1).is_symbol("(");
+  if (t.kind == TokenKind::parameter || is_bare_parameter) {
     take();
     const ExprId id = node(ExprOp::parameter, t.location);
-    ast_.expressions.node(id).parameter_name = normalize_name(t.text);
+    ast_->expressions.node(id).parameter_name = normalize_name(t.text);
     return id;
   }
   if (t.is_symbol("(")) {
@@ -170,7 +174,7 @@ ExprId StatementParser::call(const Token& t) {
     throw SyntaxError{};
   }
   const ExprId id = node(ExprOp::call, t.location, args[0], args[1]);
-  ast_.expressions.node(id).function = f;
+  ast_->expressions.node(id).function = f;
   return id;
 }
 

@@ -28,7 +28,8 @@ class Lexer {
       if (at_end()) break;
       const SourceLocation start = here();
       const char c = peek();
-      if (is_word_start(c)) {
+      // JIPCAD names may start with a dot (`.bsR.v0`, a vertex of a sibling instance).
+      if (is_word_start(c) || (c == '.' && is_word_start(peek(1)))) {
         tokens.push_back({TokenKind::word, take_while(is_word_char), 0, start});
       } else if (is_digit(c) || (c == '.' && is_digit(peek(1)))) {
         lex_number(tokens, start);

@@ -7,7 +7,15 @@
 namespace nome::scene {
 
 SceneAst StatementParser::parse_scene() {
-  ast_.file = diagnostics_.file();
+  ast_->file = diagnostics_.file();
+  parse_statements();
+  if (is_slf_) choose_slf_roots();
+  name_backfaces();
+  if (options_.dialect) ast_->dialect = {*options_.dialect, "--dialect"};
+  return std::move(*ast_);
+}
+
+void StatementParser::parse_statements() {
   const BlockContext top{{}, {}};
   while (peek().kind != TokenKind::end) {
     const size_t start = pos_;
@@ -17,8 +25,48 @@ SceneAst StatementParser::parse_scene() {
       resynchronise(top, start);
     }
   }
-  if (is_slf_) choose_slf_roots();
-  return std::move(ast_);
+}
+
+void StatementParser::note_dialect(Dialect dialect, const std::string& cue, SourceLocation at) {
+  if (!ast_->dialect.cue.empty() || is_slf_) return;
+  ast_->dialect = {dialect, cue + " at " + diagnostics_.file() + ":" + location_text(at)};
+}
+
+// Statements only the successor (JIPCAD) has: one of them decides a file's dialect.
+bool is_successor_keyword(std::string_view word) {
+  static constexpr std::string_view words[] = {"include",
+                                               "subdivision",
+                                               "offset",
+                                               "camera",
+                                               "light",
+                                               "window",
+                                               "viewport",
+                                               "frontcolor",
+                                               "backcolor",
+                                               "backgroundcolor",
+                                               "background",
+                                               "backface",
+                                               "sphere",
+                                               "ellipsoid",
+                                               "cylinder",
+                                               "cone",
+                                               "disk",
+                                               "torus",
+                                               "torusknot",
+                                               "helix",
+                                               "spiral",
+                                               "hyperboloid",
+                                               "dupin",
+                                               "gencartesiansurf",
+                                               "genparametricsurf",
+                                               "genimplicitsurf",
+                                               "beziercurve",
+                                               "bspline",
+                                               "sweep",
+                                               "sweepmorph",
+                                               "morphvisualizer",
+                                               "controlpoint"};
+  return std::find(std::begin(words), std::end(words), word) != std::end(words);
 }
 
 // Every statement is a row of statement_kinds(): its keyword picks the row that parses it.
@@ -33,6 +81,7 @@ void StatementParser::top_level_statement() {
     return;
   }
   if (!kind) fail(t, "a statement (" + statement_keyword_list() + ")");
+  if (is_successor_keyword(t.text)) note_dialect(Dialect::jipcad, "'" + t.text + "'", t.location);
   statement_kinds()[*kind].parse(*this, *kind);
 }
 
@@ -58,18 +107,48 @@ void StatementParser::skip_unsupported(const std::string& word) {
 // .slf files name no root: without top-level instances, every group no instance uses is one (else every
 // object, else every face), as SLIDE's render statement would draw it.
 void StatementParser::choose_slf_roots() {
-  if (!ast_.instances.empty()) return;
+  if (!ast_->instances.empty()) return;
   std::vector<std::string> used;
-  for (const GroupDecl& g : ast_.groups)
+  for (const GroupDecl& g : ast_->groups)
     for (const InstanceDecl& i : g.instances) used.push_back(i.target.text);
   auto add_roots = [&](const auto& decls) {
     for (const auto& d : decls)
       if (std::find(used.begin(), used.end(), d.name.text) == used.end())
-        ast_.instances.push_back({d.name, d.name, {}, std::nullopt, d.name.location});
-    return !ast_.instances.empty();
+        ast_->instances.push_back({d.name, d.name, {}, std::nullopt, d.name.location});
+    return !ast_->instances.empty();
   };
-  if (add_roots(ast_.groups) || add_roots(ast_.objects)) return;
-  add_roots(ast_.faces);
+  if (add_roots(ast_->groups) || add_roots(ast_->objects)) return;
+  add_roots(ast_->faces);
+}
+
+// JIPCAD's instances name a back colour with `surface B` as well as `backface B` (render__backface.nom),
+// and place lights and cameras: both belong to the render defaults, not to the geometry.
+void StatementParser::name_backfaces() {
+  std::vector<std::string> backfaces;
+  for (const RenderDecl& r : ast_->render)
+    if (r.keyword == "backface" && r.name) backfaces.push_back(r.name->text);
+  const auto is_backface = [&](const std::optional<Name>& s) {
+    return s && std::find(backfaces.begin(), backfaces.end(), s->text) != backfaces.end() &&
+           std::none_of(ast_->surfaces.begin(), ast_->surfaces.end(),
+                        [&](const SurfaceDecl& d) { return d.name.text == s->text; });
+  };
+  const auto fix = [&](InstanceDecl& i) {
+    if (!is_backface(i.surface)) return;
+    i.backface = i.surface;
+    i.surface.reset();
+  };
+  for (InstanceDecl& i : ast_->instances) fix(i);
+  for (GroupDecl& g : ast_->groups)
+    for (InstanceDecl& i : g.instances) fix(i);
+  // An instance of a light or camera (render__light_test.nom) places no geometry: it stays with them.
+  const auto is_render = [&](const InstanceDecl& i) {
+    return std::any_of(ast_->render.begin(), ast_->render.end(),
+                       [&](const RenderDecl& r) { return r.name && r.name->text == i.target.text; });
+  };
+  std::vector<InstanceDecl> roots;
+  for (InstanceDecl& i : ast_->instances)
+    (is_render(i) ? ast_->render_instances : roots).push_back(std::move(i));
+  ast_->instances = std::move(roots);
 }
 
 AnomAst StatementParser::parse_anom() {
@@ -114,12 +193,20 @@ void StatementParser::anom_statement(AnomAst& anom, const BlockContext& top) {
 }
 
 std::string normalize_name(std::string name) {
+  name.erase(0, name.find_first_not_of('.'));
   std::replace(name.begin(), name.end(), '.', '_');
   return name;
 }
 
-SceneAst parse_nome(std::string_view text, Diagnostics& diagnostics) {
-  return StatementParser(text, diagnostics, false).parse_scene();
+SceneAst parse_nome(std::string_view text, Diagnostics& diagnostics, const ParseOptions& options) {
+  SceneAst ast = StatementParser(text, diagnostics, false, options).parse_scene();
+  const size_t header = text.find(jipcad_header);
+  if (!options.dialect && header != std::string_view::npos && (header == 0 || text[header - 1] == '\n')) {
+    const int line = int(std::count(text.begin(), text.begin() + long(header), '\n')) + 1;
+    ast.dialect = {Dialect::jipcad, std::string("the line '") + jipcad_header + "' at " + diagnostics.file() +
+                                        ":" + std::to_string(line) + ":1"};
+  }
+  return ast;
 }
 
 SceneAst parse_slf(std::string_view text, Diagnostics& diagnostics) {

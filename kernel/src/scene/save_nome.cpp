@@ -1,6 +1,7 @@
 #include "nome/scene/save_nome.hpp"
 
 #include "nome/atomic_file.hpp"
+#include "nome/scene/parser.hpp"
 #include "nome/scene/statement_kinds.hpp"
 #include "scene/scene_writer.hpp"
 
@@ -8,6 +9,7 @@ namespace nome::scene {
 
 std::string SceneWriter::run() {
   out_ << "# Saved by Nome: the sliders' current values, the scene, deletions and the consolidated mesh.\n";
+  if (ast_.dialect.dialect == Dialect::jipcad) out_ << jipcad_header << "\n";
   const std::span<const StatementKind> kinds = statement_kinds();
   for (Index k = 0; k < kinds.size(); ++k) kinds[k].save(*this, k);
   return out_.str();
@@ -49,6 +51,7 @@ void SceneWriter::instance(const InstanceDecl& i, const char* indent) {
     }
   }
   if (i.surface) out_ << " surface " << i.surface->text;
+  if (i.backface) out_ << " backface " << i.backface->text;
   out_ << " endinstance\n";
 }
 

@@ -17,7 +17,7 @@ Diagnostic Scene::located(SourceLocation at, std::string message) const {
 
 Scene Scene::from_text(std::string_view text, const std::string& file, const SceneOptions& options) {
   Diagnostics diagnostics(file);
-  SceneAst ast = parse_nome(text, diagnostics);
+  SceneAst ast = parse_nome(text, diagnostics, {options.dialect, {}});
   diagnostics.throw_if_errors();
   return from_ast(std::move(ast), diagnostics.all(), options);
 }
@@ -35,6 +35,7 @@ Scene Scene::from_ast(SceneAst ast, std::vector<Diagnostic> warnings, const Scen
     for (const Name& n : face.vertices) names.push_back(n.text);
     scene.consolidated_.push_back(std::move(names));
   }
+  if (errors.empty()) scene.check_settings(errors);
   if (errors.empty()) scene.build(errors);
   if (!errors.empty()) throw SceneError(std::move(errors));
   return scene;
@@ -43,7 +44,7 @@ Scene Scene::from_ast(SceneAst ast, std::vector<Diagnostic> warnings, const Scen
 // Sliders, and the expressions that read them.
 void Scene::register_parameters(std::vector<Diagnostic>& errors) {
   for (const BankDecl& b : ast_.banks) {
-    Bank bank{b.name.text, {}};
+    Bank bank{b.name.text, {}, {}};
     for (const SliderDecl& s : b.sliders) {
       Parameter p{b.name.text,     s.name.text,   b.name.text + "_" + s.name.text,
                   s.value.literal, s.min.literal, s.max.literal,
@@ -52,13 +53,21 @@ void Scene::register_parameters(std::vector<Diagnostic>& errors) {
         errors.push_back(located(s.name.location, "duplicate parameter '" + p.full_name + "'"));
         continue;
       }
-      const Index id = Index(parameters_.size());
-      parameter_ids_[p.full_name] = id;
-      bank.parameters.push_back(id);
-      values_.push_back(p.value);
-      parameters_.push_back(std::move(p));
+      bank.parameters.push_back(add_parameter(std::move(p)));
+    }
+    bank.shown = bank.parameters;
+    if (b.shown) {
+      bank.shown.clear();
+      for (const Name& n : *b.shown)
+        if (const auto it = parameter_ids_.find(b.name.text + "_" + n.text); it != parameter_ids_.end())
+          bank.shown.push_back(it->second);
     }
     banks_.push_back(std::move(bank));
+  }
+  // Animation clocks every scene has: values expressions read, but no slider (not saved, not on a panel).
+  for (const char* name : {time_parameter, frame_parameter}) {
+    parameter_ids_[name] = Index(values_.size());
+    values_.push_back(0);
   }
   std::vector<std::string> parameter_names;
   for (const Parameter& p : parameters_) parameter_names.push_back(p.full_name);
@@ -72,6 +81,15 @@ void Scene::register_parameters(std::vector<Diagnostic>& errors) {
       errors.push_back(located(n.location, "unknown parameter '$" + n.parameter_name + "'" +
                                                did_you_mean(n.parameter_name, parameter_names)));
   }
+}
+
+Index Scene::add_parameter(Parameter p) {
+  // Sliders come first: a slider's id is its index in parameters_ and in values_.
+  const Index id = Index(parameters_.size());
+  parameter_ids_[p.full_name] = id;
+  values_.push_back(p.value);
+  parameters_.push_back(std::move(p));
+  return id;
 }
 
 // Names of definitions: surfaces, points and geometry each have their own namespace. Definitions are
@@ -134,7 +152,7 @@ void Scene::build(std::vector<Diagnostic>& errors) {
 
 std::optional<Index> Scene::find_parameter(const std::string& name) const {
   const auto it = parameter_ids_.find(normalize_name(name));
-  if (it == parameter_ids_.end()) return std::nullopt;
+  if (it == parameter_ids_.end() || it->second >= parameters_.size()) return std::nullopt;
   return it->second;
 }
 
@@ -145,9 +163,23 @@ std::vector<Index> Scene::set_parameter(Index parameter, double value) {
   if (!std::isfinite(value) || value < param.min || value > param.max)
     throw InvalidInputError(param.full_name + "=" + format_number(value) + " is outside its slider range [" +
                             format_number(param.min) + ", " + format_number(param.max) + "]");
+  return change_value(parameter, value);
+}
+
+std::vector<Index> Scene::set_clock(const std::string& name, double value) {
+  if (name != time_parameter && name != frame_parameter)
+    throw InvalidInputError("Scene::set_clock: no built-in parameter '$" + name + "'");
+  if (!std::isfinite(value))
+    throw InvalidInputError("$" + name + " must be a finite number, found " + format_number(value));
+  return change_value(parameter_ids_.at(name), value);
+}
+
+// Sets value `parameter` (a slider's, or a clock's past the sliders) and re-evaluates what reads it.
+std::vector<Index> Scene::change_value(Index parameter, double value) {
+  const bool is_slider = parameter < parameters_.size();
   const double old_value = values_[parameter];
   values_[parameter] = value;
-  parameters_[parameter].value = value;
+  if (is_slider) parameters_[parameter].value = value;
   std::vector<Index> affected;
   for (Index i = 0; i < placements_.size(); ++i)
     if (is_leaf(placements_[i]) &&
@@ -160,7 +192,7 @@ std::vector<Index> Scene::set_parameter(Index parameter, double value) {
   if (!errors.empty() || over_budget) {
     // The scene keeps the previous value and geometry.
     values_[parameter] = old_value;
-    parameters_[parameter].value = old_value;
+    if (is_slider) parameters_[parameter].value = old_value;
     for (size_t k = 0; k < affected.size(); ++k) {
       placements_[affected[k]].world = std::move(backup[k].first);
       placements_[affected[k]].reads = std::move(backup[k].second);

@@ -23,6 +23,17 @@ StatementKind group_statement();
 StatementKind instance_statement();
 StatementKind delete_statement();
 StatementKind consolidate_statement();
+StatementKind include_statement();
+StatementKind subdivision_statement();
+StatementKind offset_statement();
+StatementKind camera_statement();
+StatementKind light_statement();
+StatementKind window_statement();
+StatementKind viewport_statement();
+StatementKind frontcolor_statement();
+StatementKind backcolor_statement();
+StatementKind backgroundcolor_statement();
+StatementKind backface_statement();
 
 std::span<const StatementKind> statement_kinds() {
   // In the order error messages list the keywords and the writer writes the statements (any order
@@ -43,6 +54,12 @@ std::span<const StatementKind> statement_kinds() {
       instance_statement(),      // a top-level instance: a root of the scene
       delete_statement(),        // faces deleted by name
       consolidate_statement(),   // the consolidated mesh
+      include_statement(),       // successor: another file's statements
+      subdivision_statement(),   // successor: root instances and the subdivision levels
+      offset_statement(),        // successor: root instances and the offset distance
+      camera_statement(),        // successor: render defaults
+      light_statement(),        window_statement(),          viewport_statement(), frontcolor_statement(),
+      backcolor_statement(),    backgroundcolor_statement(), backface_statement(),
   };
   return table;
 }

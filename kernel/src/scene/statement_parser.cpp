@@ -9,8 +9,20 @@ bool is_top_level_keyword(const Token& t) {
   return t.kind == TokenKind::word && find_statement_kind(t.text).has_value();
 }
 
-StatementParser::StatementParser(std::string_view text, Diagnostics& diagnostics, bool is_slf)
-    : diagnostics_(diagnostics), tokens_(tokenize(text, diagnostics)), is_slf_(is_slf) {}
+StatementParser::StatementParser(std::string_view text, Diagnostics& diagnostics, bool is_slf,
+                                 ParseOptions options)
+    : diagnostics_(diagnostics),
+      tokens_(tokenize(text, diagnostics)),
+      is_slf_(is_slf),
+      options_(std::move(options)) {
+  if (options_.include_chain.empty()) options_.include_chain.push_back(diagnostics.file());
+}
+
+StatementParser::StatementParser(std::string_view text, Diagnostics& diagnostics, StatementParser& parent,
+                                 std::vector<std::string> include_chain)
+    : diagnostics_(diagnostics), tokens_(tokenize(text, diagnostics)), ast_(parent.ast_) {
+  options_.include_chain = std::move(include_chain);
+}
 
 Token StatementParser::take() {
   const Token& t = peek();
@@ -183,6 +195,10 @@ void StatementParser::instance_transform(const Token& t, InstanceDecl& inst) {
     inst.surface = optional_surface();
     if (is_slf_) ignore_surface(t, inst.surface);
     return;
+  } else if (!is_slf_ && t.is_word("backface")) {
+    take();
+    inst.backface = take_name("a backface name");
+    return;
   } else if (is_slf_ && t.is_word("id")) {
     take();
     inst.name = take_name("an instance id");
@@ -191,7 +207,7 @@ void StatementParser::instance_transform(const Token& t, InstanceDecl& inst) {
     diagnostics_.error(t.location, "not supported yet: " + t.text);
     throw SyntaxError{};
   } else {
-    fail(t, "a transform (translate, rotate, scale, mirror), 'surface' or 'endinstance'");
+    fail(t, "a transform (translate, rotate, scale, mirror), 'surface', 'backface' or 'endinstance'");
   }
   inst.transforms.push_back(tr);
 }

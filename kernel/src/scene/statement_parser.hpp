@@ -26,9 +26,14 @@ struct BlockContext {
 // The statements themselves are the rows of statement_kinds().
 class StatementParser {
  public:
-  StatementParser(std::string_view text, Diagnostics& diagnostics, bool is_slf);
+  StatementParser(std::string_view text, Diagnostics& diagnostics, bool is_slf, ParseOptions options = {});
+  // An included file's parser: its statements go into `parent`'s AST.
+  StatementParser(std::string_view text, Diagnostics& diagnostics, StatementParser& parent,
+                  std::vector<std::string> include_chain);
 
   SceneAst parse_scene();
+  // The statements up to the end of the text (an included file's).
+  void parse_statements();
   AnomAst parse_anom();
 
   // --- tokens
@@ -62,8 +67,13 @@ class StatementParser {
   // .slf: colours are not read; say so once per use.
   void ignore_surface(const Token& at, std::optional<Name>& surface);
 
+  // Records what decides the text's dialect: the first cue wins (the command line's overrides all).
+  void note_dialect(Dialect dialect, const std::string& cue, SourceLocation at);
+  // The files that include this one, this one last: where an `include` is resolved and cycles are found.
+  const std::vector<std::string>& include_chain() const { return options_.include_chain; }
+
   bool is_slf() const { return is_slf_; }
-  SceneAst& ast() { return ast_; }
+  SceneAst& ast() { return *ast_; }
   Diagnostics& diagnostics() { return diagnostics_; }
 
  private:
@@ -73,6 +83,7 @@ class StatementParser {
   void instance_transform(const Token& t, InstanceDecl& inst);
   void skip_unsupported(const std::string& word);
   void choose_slf_roots();
+  void name_backfaces();
   void anom_statement(AnomAst& anom, const BlockContext& top);
 
   // The expression grammar (expression_parser.cpp).
@@ -90,11 +101,15 @@ class StatementParser {
   size_t pos_ = 0;
   bool is_slf_ = false;             // the SLIDE subset of .slf files
   std::string_view statement_end_;  // the word that closes the statement being parsed
-  SceneAst ast_;
+  ParseOptions options_;
+  SceneAst own_ast_;
+  SceneAst* ast_ = &own_ast_;          // an included file's parser writes into the including one's
   std::vector<int> expression_depth_;  // height of each expression node's subtree
   int parse_depth_ = 0;                // expression grammar levels being parsed
 };
 
 bool is_top_level_keyword(const Token& t);
+// A statement only NOME's successor (JIPCAD) has: it decides a text's dialect.
+bool is_successor_keyword(std::string_view word);
 
 }  // namespace nome::scene

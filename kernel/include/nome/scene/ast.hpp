@@ -15,15 +15,27 @@ struct Name {
   SourceLocation location;
 };
 
+// The two spellings of the language: the 2016 report's and JIPCAD's (NOME's successor). They differ in
+// a few words (`isloop`/`closed`, a bank's `list`) and in funnel and tunnel's argument order.
+enum class Dialect { report2016, jipcad };
+
+// Which dialect a text is read in, and what decided it (`'list' in a bank at 3:3`, `--dialect`).
+struct DialectChoice {
+  Dialect dialect = Dialect::report2016;
+  std::string cue;  // empty: nothing in the text decided, the 2016 spelling is the default
+};
+
 // `set NAME value min max step` inside `bank BANK`: a slider, referenced as $BANK_NAME.
 struct SliderDecl {
   Name name;
   Value value, min, max, step;
 };
 
+// `bank NAME set ... [list (ids)] endbank`: the successor's `list` names the sliders the panel shows.
 struct BankDecl {
   Name name;
   std::vector<SliderDecl> sliders;
+  std::optional<std::vector<Name>> shown;
 };
 
 // `surface NAME color (r g b) endsurface`
@@ -66,10 +78,12 @@ struct GeneratorDecl {
   std::vector<Value> args;
 };
 
-// `sharp (v1 v2 ...) endsharp` inside a mesh: the chain of edges v1-v2, v2-v3, ... is sharp.
+// `sharp [weight] (v1 v2 ...) ... endsharp` inside a mesh: the chain of edges v1-v2, v2-v3, ... is sharp;
+// a single vertex is a sharp corner. The successor's weight (a crease sharpness) is kept as written.
 struct SharpDecl {
   std::vector<Name> vertices;
   SourceLocation location;
+  std::optional<Value> weight = std::nullopt;
 };
 
 // `mesh NAME face ... endface ... [sharp ...] endmesh`
@@ -94,6 +108,38 @@ struct InstanceDecl {
   Name target;
   std::vector<TransformDecl> transforms;
   std::optional<Name> surface;
+  SourceLocation location;
+  std::optional<Name> backface =
+      std::nullopt;        // the successor's `backface B` (or `surface B` naming a backface)
+  Index stage = no_index;  // top level: the stage block (SceneAst::stages) it is written in, if any
+};
+
+// `subdivision NAME [sd_type T] sd_level N instance ... endsubdivision` and `offset NAME [offset_type T]
+// height width instance ... endoffset` (the successor's stage blocks): their instances are roots of the
+// scene, and the block sets the pipeline's subdivision levels or offset distance.
+enum class StageKind { subdivision, offset };
+struct StageDecl {
+  StageKind kind = StageKind::subdivision;
+  Name name;
+  std::optional<Name> type;  // NOME_SD_CC_sharp, NOME_OFFSET_DEFAULT, ...
+  Value amount;              // sd_level, or the offset's height (half thickness)
+  std::optional<Value> width;
+  SourceLocation location;
+};
+
+// One field of a render statement: `type NOME_AMBIENT`, `color (r g b)`, `frustum (...)`, `cameraID c`.
+struct RenderField {
+  Name key;
+  std::optional<Name> word;
+  std::vector<Value> values;
+};
+
+// `camera`, `light`, `window`, `viewport` (named blocks of fields), `frontcolor`, `backcolor`,
+// `background` (a colour) and `backface NAME color (...)`: the picture's defaults, not geometry.
+struct RenderDecl {
+  std::string keyword;
+  std::optional<Name> name;
+  std::vector<RenderField> fields;
   SourceLocation location;
 };
 
@@ -126,6 +172,11 @@ struct SceneAst {
   std::vector<InstanceDecl> instances;  // top-level: the scene's roots
   std::vector<Name> deleted_faces;      // `delete face NAME endface ... enddelete`
   std::vector<NamedFace> consolidated_faces;
+  std::vector<StageDecl> stages;
+  std::vector<RenderDecl> render;
+  std::vector<InstanceDecl> render_instances;  // top-level instances of a camera, light, window or viewport
+  std::vector<std::string> included_files;     // every file read by `include`, in reading order
+  DialectChoice dialect;
 };
 
 // The name every consolidated mesh is instantiated by (`instance tp1 consolidatemesh ... endinstance`).

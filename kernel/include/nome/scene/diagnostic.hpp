@@ -36,6 +36,8 @@ class Diagnostics {
 
   void error(SourceLocation at, std::string message);
   void warning(SourceLocation at, std::string message);
+  // One of another text's diagnostics (an included file's), kept with its own file.
+  void add(Diagnostic diagnostic);
   bool has_errors() const;
   const std::vector<Diagnostic>& all() const { return items_; }
   const std::string& file() const { return file_; }

@@ -27,6 +27,30 @@ struct Parameter {
 struct Bank {
   std::string name;
   std::vector<Index> parameters;
+  std::vector<Index> shown;  // the successor's `list (ids)`, in its order; all parameters without one
+};
+
+// The built-in parameters $time and $frame (0 unless set: `nome render --time T`, the viewer's clock).
+inline constexpr const char* time_parameter = "time";
+inline constexpr const char* frame_parameter = "frame";
+
+// What the file's stage blocks ask of the pipeline (`subdivision ... sd_level N`, `offset ... height H`),
+// evaluated with the current slider values; the command line's own options win over them.
+struct StageSettings {
+  std::optional<int> subdivision_levels;
+  std::optional<double> offset_distance;
+  bool has_sharp_weights = false;  // `sharp W (...)`: read and kept, each crease infinitely sharp for now
+};
+
+// The file's render statements as picture defaults, evaluated with the current slider values; `nome
+// render` and the viewer use them unless their own options say otherwise.
+struct RenderDefaults {
+  std::optional<Color> background;               // `backgroundcolor`, or a window's `background`
+  std::optional<Color> front_color;              // `frontcolor`
+  std::optional<Color> back_color;               // `backcolor`, or the `backface` colour an instance names
+  std::optional<std::string> camera_projection;  // the first camera's, as written (NOME_PERSPECTIVE, ...)
+  std::vector<double> camera_frustum;
+  std::size_t light_count = 0;
 };
 
 // One top-level instance, evaluated: world-space geometry whose vertices and faces carry hierarchical
@@ -49,6 +73,8 @@ struct SceneOptions {
   std::uint64_t instance_budget = 1000000;
   std::uint64_t face_budget = 20000000;
   bool force = false;
+  std::optional<Dialect> dialect =
+      std::nullopt;  // `--dialect`: read the text in this spelling whatever it says
 };
 
 // An evaluated scene (report sections 3 and 6): the parsed text, the slider values, and the geometry of
@@ -72,6 +98,11 @@ class Scene {
   const SceneAst& ast() const { return ast_; }
   const std::vector<Diagnostic>& warnings() const { return warnings_; }
 
+  // Which spelling the text was read in, and what decided it.
+  const DialectChoice& dialect() const { return ast_.dialect; }
+  StageSettings stage_settings() const;
+  RenderDefaults render_defaults() const;
+
   const std::vector<Bank>& banks() const { return banks_; }
   const std::vector<Parameter>& parameters() const { return parameters_; }
   // By `bank_name` or `bank.name`.
@@ -80,6 +111,8 @@ class Scene {
   // changed. Throws InvalidInputError for a value outside the slider's range, SceneError when the scene
   // cannot be evaluated with the new value (the scene then keeps the previous value).
   std::vector<Index> set_parameter(Index parameter, double value);
+  // Sets $time or $frame (any finite value) and re-evaluates what reads it, as set_parameter does.
+  std::vector<Index> set_clock(const std::string& name, double value);
 
   const std::vector<SceneInstance>& instances() const { return instances_; }
   // Every top-level instance as parts of one soup (a disjoint union; merging is a later stage).
@@ -130,6 +163,11 @@ class Scene {
   Scene() = default;
   // scene.cpp: the sliders and the names of definitions, then the whole evaluation.
   void register_parameters(std::vector<Diagnostic>& errors);
+  Index add_parameter(Parameter p);
+  std::vector<Index> change_value(Index parameter, double value);
+  // scene_settings.cpp: a value of the file's stage and render statements, now.
+  double current(const Value& v) const;
+  void check_settings(std::vector<Diagnostic>& errors);
   void define_names(std::vector<Diagnostic>& errors);
   void build(std::vector<Diagnostic>& errors);
   Diagnostic located(SourceLocation at, std::string message) const;

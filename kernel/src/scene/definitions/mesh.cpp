@@ -1,4 +1,5 @@
-// `mesh NAME face ... endface ... [sharp (v1 v2 ...) endsharp] endmesh`: faces over named vertices.
+// `mesh NAME face ... endface ... [sharp [weight] (v1 v2 ...) ... endsharp] endmesh`: faces over named
+// vertices.
 #include "nome/scene/statement_kinds.hpp"
 #include "scene/definition_context.hpp"
 #include "scene/scene_writer.hpp"
@@ -7,16 +8,25 @@
 namespace nome::scene {
 namespace {
 
-SharpDecl sharp(StatementParser& parser) {
+// `sharp [weight] (chain) [(chain) ...] endsharp`: one SharpDecl per chain, each with the weight.
+void sharp(StatementParser& parser, std::vector<SharpDecl>& out) {
   parser.set_statement_end("endsharp");
-  SharpDecl s;
-  s.location = parser.take().location;
-  s.vertices = parser.name_list("a vertex name or ')'");
-  if (s.vertices.size() < 2)
-    parser.diagnostics().error(s.location,
-                               "sharp needs at least 2 vertices, found " + std::to_string(s.vertices.size()));
+  const Token opener = parser.take();
+  std::optional<Value> weight;
+  if (!parser.peek().is_symbol("(")) {
+    weight = parser.value();
+    parser.note_dialect(Dialect::jipcad, "a sharpness weight", weight->location);
+  }
+  do {
+    SharpDecl s{{}, parser.peek().location, weight};
+    s.vertices = parser.name_list("a vertex name or ')'");
+    if (s.vertices.size() < 2)
+      parser.diagnostics().error(s.location, "sharp needs at least 2 vertices (an edge), found " +
+                                                 std::to_string(s.vertices.size()));
+    out.push_back(std::move(s));
+  } while (parser.peek().is_symbol("("));
+  if (out.empty()) parser.fail(opener, "a vertex list");
   parser.expect_word("endsharp");
-  return s;
 }
 
 void parse(StatementParser& parser, Index kind) {
@@ -31,7 +41,7 @@ void parse(StatementParser& parser, Index kind) {
       if (parser.peek().is_word("face"))
         m.faces.push_back(parser.face_statement());
       else if (parser.peek().is_word("sharp"))
-        m.sharps.push_back(sharp(parser));
+        sharp(parser, m.sharps);
       else
         parser.fail(parser.peek(), "'face', 'sharp' or 'endmesh'");
     } catch (const SyntaxError&) {
@@ -46,7 +56,8 @@ void save(SceneWriter& writer, Index) {
     writer.out() << "mesh " << m.name.text << "\n";
     for (const FaceDecl& f : m.faces) writer.face(f, "    ");
     for (const SharpDecl& s : m.sharps)
-      writer.out() << "    sharp (" << writer.names(s.vertices) << ") endsharp\n";
+      writer.out() << "    sharp " << (s.weight ? writer.values(&*s.weight, 1) + " " : "") << "("
+                   << writer.names(s.vertices) << ") endsharp\n";
     writer.out() << "endmesh\n";
   }
 }
@@ -58,12 +69,15 @@ void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
 Piece evaluate(DefinitionContext& context, Index decl) {
   const MeshDecl& m = context.ast().meshes[decl];
   for (const FaceDecl& f : m.faces) context.add_face(f.vertices, f.name.text, f.surface);
-  // A sharp chain v1-v2, v2-v3, ... marks the edges between consecutive vertices.
-  for (const SharpDecl& s : m.sharps)
+  // A sharp chain v1-v2, v2-v3, ... marks the edges between consecutive vertices; a weight is read (its
+  // expression's parameters are tracked) but every crease is infinitely sharp until weights are graded.
+  for (const SharpDecl& s : m.sharps) {
+    if (s.weight) context.number(*s.weight);
     for (size_t i = 0; i + 1 < s.vertices.size(); ++i) {
       const Index a = context.vertex(s.vertices[i]), b = context.vertex(s.vertices[i + 1]);
       if (a != no_index && b != no_index) context.piece().soup.sharp_edges.emplace_back(a, b);
     }
+  }
   return std::move(context.piece());
 }
 

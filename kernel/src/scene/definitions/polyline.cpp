@@ -1,4 +1,4 @@
-// `polyline NAME (v1 v2 ...) [isloop] endpolyline`: a rim line over named vertices.
+// `polyline NAME (v1 v2 ...) [isloop | closed] endpolyline`: a rim line over named vertices.
 #include "nome/scene/statement_kinds.hpp"
 #include "scene/definition_context.hpp"
 #include "scene/scene_writer.hpp"
@@ -19,8 +19,11 @@ void parse(StatementParser& parser, Index kind) {
     parser.diagnostics().error(open.location, "polyline '" + p.name.text +
                                                   "' needs at least 2 vertices, found " +
                                                   std::to_string(p.vertices.size()));
-  if (parser.peek().is_word("isloop")) {
-    parser.take();
+  // `isloop` is the 2016 spelling, `closed` the successor's.
+  if (parser.peek().is_word("isloop") || parser.peek().is_word("closed")) {
+    const Token loop = parser.take();
+    parser.note_dialect(loop.text == "closed" ? Dialect::jipcad : Dialect::report2016,
+                        "'" + loop.text + "' in a polyline", loop.location);
     p.is_loop = true;
   }
   parser.expect_word(end);
@@ -28,9 +31,10 @@ void parse(StatementParser& parser, Index kind) {
 }
 
 void save(SceneWriter& writer, Index) {
+  const char* loop = writer.ast().dialect.dialect == Dialect::jipcad ? " closed" : " isloop";
   for (const PolylineDecl& p : writer.ast().polylines)
     writer.out() << "polyline " << p.name.text << " (" << writer.names(p.vertices) << ")"
-                 << (p.is_loop ? " isloop" : "") << " endpolyline\n";
+                 << (p.is_loop ? loop : "") << " endpolyline\n";
 }
 
 void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {

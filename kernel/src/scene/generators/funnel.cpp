@@ -1,4 +1,4 @@
-// `funnel NAME (n ro ratio h) endfunnel` (report 6.3).
+// `funnel NAME (n ro ratio h) endfunnel` (report 6.3); the successor's dialect: (radius ratio height segs).
 #include "nome/scene/generators/funnel.hpp"
 #include "scene/generators/generator_support.hpp"
 
@@ -15,8 +15,11 @@ Piece funnel(const FunnelParams& p) {
 
 namespace {
 
+// The 2016 report writes (n ro ratio h), the successor (radius ratio height segs): the same funnel.
 Piece evaluate(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
+  if (c.ast().dialect.dialect == Dialect::jipcad)
+    return funnel({c.whole(a[3], 3, "segs"), c.positive(a[0], "radius"), c.ratio(a[1]), c.number(a[2])});
   return funnel({c.whole(a[0], 3, "n"), c.positive(a[1], "ro"), c.ratio(a[2]), c.number(a[3])});
 }
 

@@ -11,7 +11,9 @@ void parse(StatementParser& parser, Index) {
 }
 
 void save(SceneWriter& writer, Index) {
-  for (const InstanceDecl& i : writer.ast().instances) writer.instance(i, "");
+  for (const InstanceDecl& i : writer.ast().instances)
+    if (i.stage == no_index) writer.instance(i, "");  // a stage block writes its own
+  for (const InstanceDecl& i : writer.ast().render_instances) writer.instance(i, "");
 }
 
 }  // namespace

@@ -1,0 +1,111 @@
+// The successor's stage blocks: `subdivision NAME [sd_type T] sd_level N instance ... endsubdivision` and
+// `offset NAME [offset_type T] [height H] [width W] instance ... endoffset`. Their instances are roots of
+// the scene; the block sets the pipeline's subdivision levels or offset distance (Scene::stage_settings).
+#include "nome/scene/statement_kinds.hpp"
+#include "scene/scene_writer.hpp"
+#include "scene/statement_parser.hpp"
+
+namespace nome::scene {
+namespace {
+
+struct StageWords {
+  std::string_view type, amount, width;
+};
+
+StageWords words(StageKind kind) {
+  if (kind == StageKind::subdivision) return {"sd_type", "sd_level", ""};
+  return {"offset_type", "height", "width"};
+}
+
+// The settings before the instances: each at most once, in any order.
+void stage_settings(StatementParser& parser, StageDecl& stage) {
+  const StageWords w = words(stage.kind);
+  bool has_amount = false;
+  while (true) {
+    const Token t = parser.peek();
+    if (t.is_word(w.type)) {
+      parser.take();
+      stage.type = parser.take_name("a type name");
+    } else if (t.is_word(w.amount)) {
+      parser.take();
+      stage.amount = parser.value();
+      has_amount = true;
+    } else if (!w.width.empty() && t.is_word(w.width)) {
+      parser.take();
+      stage.width = parser.value();
+    } else {
+      break;
+    }
+  }
+  if (!has_amount) parser.fail(parser.peek(), "'" + std::string(w.amount) + "' and its value");
+}
+
+void parse(StatementParser& parser, StageKind kind, std::string_view end) {
+  const Token opener = parser.take();
+  StageDecl stage{kind, parser.take_name("a block name"), std::nullopt, {}, std::nullopt, opener.location};
+  parser.set_statement_end(end);
+  stage_settings(parser, stage);
+  const Index index = Index(parser.ast().stages.size());
+  parser.ast().stages.push_back(std::move(stage));
+  const BlockContext inner{{"instance"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
+    const size_t start = parser.position();
+    try {
+      if (!parser.peek().is_word("instance"))
+        parser.fail(parser.peek(), "'instance' or '" + std::string(end) + "'");
+      InstanceDecl instance = parser.instance_statement();
+      instance.stage = index;
+      parser.ast().instances.push_back(std::move(instance));
+    } catch (const SyntaxError&) {
+      parser.resynchronise(inner, start);
+    }
+  }
+}
+
+void parse_subdivision(StatementParser& parser, Index kind) {
+  parse(parser, StageKind::subdivision, statement_kinds()[kind].end_keyword);
+}
+
+void parse_offset(StatementParser& parser, Index kind) {
+  parse(parser, StageKind::offset, statement_kinds()[kind].end_keyword);
+}
+
+// Each block with its settings and the root instances written in it.
+void save(SceneWriter& writer, StageKind kind, std::string_view keyword) {
+  const SceneAst& ast = writer.ast();
+  const StageWords w = words(kind);
+  for (Index s = 0; s < ast.stages.size(); ++s) {
+    const StageDecl& stage = ast.stages[s];
+    if (stage.kind != kind) continue;
+    writer.out() << keyword << " " << stage.name.text << "\n";
+    if (stage.type) writer.out() << "    " << w.type << " " << stage.type->text << "\n";
+    writer.out() << "    " << w.amount << " " << writer.values(&stage.amount, 1) << "\n";
+    if (stage.width) writer.out() << "    " << w.width << " " << writer.values(&*stage.width, 1) << "\n";
+    for (const InstanceDecl& i : ast.instances)
+      if (i.stage == s) writer.instance(i, "    ");
+    writer.out() << "end" << keyword << "\n";
+  }
+}
+
+void save_subdivision(SceneWriter& writer, Index) {
+  save(writer, StageKind::subdivision, "subdivision");
+}
+
+void save_offset(SceneWriter& writer, Index) {
+  save(writer, StageKind::offset, "offset");
+}
+
+}  // namespace
+
+StatementKind subdivision_statement() {
+  return {.keyword = "subdivision",
+          .end_keyword = "endsubdivision",
+          .parse = parse_subdivision,
+          .save = save_subdivision};
+}
+
+StatementKind offset_statement() {
+  return {.keyword = "offset", .end_keyword = "endoffset", .parse = parse_offset, .save = save_offset};
+}
+
+}  // namespace nome::scene

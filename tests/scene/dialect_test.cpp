@@ -1,0 +1,181 @@
+// The successor's (JIPCAD's) spelling beside the 2016 one: dialect detection and funnel/tunnel argument
+// order, saving in the file's dialect, includes, out-of-range sliders, sharp weights and $time.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "nome/error.hpp"
+#include "nome/io/read_scene.hpp"
+#include "nome/scene/parser.hpp"
+#include "nome/scene/save_nome.hpp"
+#include "support/shared_examples.hpp"
+
+using namespace nome;
+using namespace nome::scene;
+
+namespace {
+
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("nome_dialect_" + name + "_" + std::to_string(std::random_device{}()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+void write(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+bool has_warning(const Scene& s, const std::string& part) {
+  return std::any_of(s.warnings().begin(), s.warnings().end(),
+                     [&](const Diagnostic& d) { return d.message.find(part) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST_CASE("a file's dialect is decided by its first telling statement, and says which", "[scene]") {
+  const Scene jip = Scene::from_text("bank b\n  set n 4 3 9 1\n  list (n)\nendbank\n", "j.nom");
+  CHECK(jip.dialect().dialect == Dialect::jipcad);
+  CHECK(jip.dialect().cue == "'list' in a bank at j.nom:3:3");
+  const Scene loop = Scene::from_text(
+      "point a (0 0 0) endpoint point b (1 0 0) endpoint\npolyline l (a b) isloop endpolyline\n", "r.nome");
+  CHECK(loop.dialect().dialect == Dialect::report2016);
+  CHECK(loop.dialect().cue == "'isloop' in a polyline at r.nome:2:18");
+  const Scene closed = Scene::from_text(
+      "point a (0 0 0) endpoint point b (1 0 0) endpoint\npolyline l (a b) closed endpolyline\n", "c.nom");
+  CHECK(closed.dialect().dialect == Dialect::jipcad);
+  const Scene plain = Scene::from_text("point a (0 0 0) endpoint\n", "p.nome");
+  CHECK(plain.dialect().dialect == Dialect::report2016);
+  CHECK(plain.dialect().cue.empty());
+  const Scene forced = Scene::from_text("point a (0 0 0) endpoint\n", "p.nome", {.dialect = Dialect::jipcad});
+  CHECK(forced.dialect().dialect == Dialect::jipcad);
+  CHECK(forced.dialect().cue == "--dialect");
+}
+
+TEST_CASE("funnel and tunnel read their arguments in the file's dialect", "[scene]") {
+  const Scene report =
+      Scene::from_text("funnel f (6 1 0.5 2) endfunnel\ninstance i f endinstance\n", "r.nome");
+  const Scene jip = Scene::from_text(
+      "bank b set s 6 3 9 1 list (s) endbank\nfunnel f (1 0.5 2 {expr $b.s}) endfunnel\n"
+      "instance i f endinstance\n",
+      "j.nom");
+  CHECK(jip.combined_soup().positions == report.combined_soup().positions);
+  CHECK(jip.combined_soup().num_faces() == 6);
+  // The same text read the other way is another funnel (or none): the dialect matters.
+  CHECK_THROWS_AS(Scene::from_text("funnel f (1 0.5 2 6) endfunnel\ninstance i f endinstance\n", "r.nome"),
+                  SceneError);
+  const Scene tunnel = Scene::from_text("tunnel t (1 0.5 2 5) endtunnel\ninstance i t endinstance\n", "t.nom",
+                                        {.dialect = Dialect::jipcad});
+  const Scene tunnel_2016 =
+      Scene::from_text("tunnel t (5 1 0.5 2) endtunnel\ninstance i t endinstance\n", "t.nome");
+  CHECK(tunnel.combined_soup().positions == tunnel_2016.combined_soup().positions);
+}
+
+TEST_CASE("saving keeps the file's dialect and reads back the same", "[scene]") {
+  const Scene jip = Scene::from_text(
+      "funnel f (1 0.5 2 6) endfunnel\npoint a (0 0 0) endpoint point b (1 0 0) endpoint\n"
+      "polyline l (a b) endpolyline\ninstance i f endinstance\n",
+      "j.nom", {.dialect = Dialect::jipcad});
+  const std::string saved = to_nome_text(jip);
+  CHECK_THAT(saved, Catch::Contains(jipcad_header));
+  const Scene back = Scene::from_text(saved, "saved.nom");
+  CHECK(back.dialect().dialect == Dialect::jipcad);
+  CHECK_THAT(back.dialect().cue, Catch::Contains("nome-dialect"));
+  CHECK(back.combined_soup().positions == jip.combined_soup().positions);
+
+  const Scene listed = Scene::from_text(
+      "bank b\n set n 1 0 2 1\n set m 1 0 2 1\n list (m)\nendbank\n"
+      "point a (0 0 0) endpoint point c (1 0 0) endpoint\npolyline l (a c) closed endpolyline\n",
+      "l.nom");
+  REQUIRE(listed.banks().size() == 1);
+  CHECK(listed.banks()[0].shown == std::vector<Index>{1});
+  const std::string listed_saved = to_nome_text(listed);
+  CHECK_THAT(listed_saved, Catch::Contains("    list (m)\n"));
+  CHECK_THAT(listed_saved, Catch::Contains(" closed endpolyline"));
+  const std::string report_saved = to_nome_text(Scene::from_text(
+      "point a (0 0 0) endpoint point c (1 0 0) endpoint\npolyline l (a c) isloop endpolyline\n", "r.nome"));
+  CHECK_THAT(report_saved, Catch::Contains(" isloop endpolyline"));
+  CHECK_THAT(report_saved, !Catch::Contains("list") && !Catch::Contains(jipcad_header));
+}
+
+TEST_CASE("include reads files relative to the including one, nested, banks included", "[scene]") {
+  const auto dir = scratch("include");
+  write(dir / "parts" / "sliders.nom", "bank s\n  set n 5 3 9 1\n  list (n)\nendbank\n");
+  write(dir / "parts" / "shape.nom",
+        "include [sliders.nom] endinclude\nfunnel f (1 0.5 2 {expr $s.n}) endfunnel\n");
+  write(dir / "main.nom", "include [parts/shape.nom] endinclude\ninstance i f endinstance\n");
+  Scene s = read_scene(dir / "main.nom");
+  CHECK(s.combined_soup().num_faces() == 5);
+  CHECK(s.ast().included_files.size() == 2);
+  s.set_parameter(*s.find_parameter("s_n"), 7);
+  CHECK(s.combined_soup().num_faces() == 7);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("an include cycle is refused with the chain of files", "[scene]") {
+  const auto dir = scratch("cycle");
+  write(dir / "a.nom", "include [sub/b.nom] endinclude\n");
+  write(dir / "sub" / "b.nom", "point p (0 0 0) endpoint\ninclude [../a.nom] endinclude\n");
+  try {
+    read_scene(dir / "a.nom");
+    FAIL("the cycle was not refused");
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    CHECK_THAT(what, Catch::Contains("b.nom:2:1: include cycle: "));
+    CHECK_THAT(what, Catch::Contains("a.nom -> ") && Catch::Contains("b.nom -> "));
+  }
+  write(dir / "missing.nom", "include [nowhere.nom] endinclude\n");
+  CHECK_THROWS_WITH(read_scene(dir / "missing.nom"),
+                    Catch::Contains("missing.nom:1:1: cannot read included file"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a slider's initial value outside its range is kept, with a warning", "[scene]") {
+  Scene s = Scene::from_text(
+      "bank b set n 12 3 10 1 endbank\nfunnel f ({expr $b_n} 1 0.5 2) endfunnel\n"
+      "instance i f endinstance\n",
+      "t.nome");
+  CHECK(has_warning(s, "value 12 of 'b_n' is outside its slider range [3, 10]: kept until the slider"));
+  CHECK(s.parameters()[0].value == 12);
+  CHECK(s.combined_soup().num_faces() == 12);
+  s.set_parameter(0, 10);
+  CHECK(s.combined_soup().num_faces() == 10);
+  CHECK_THROWS_AS(s.set_parameter(0, 12), InvalidInputError);
+}
+
+TEST_CASE("sharp takes a weight and several chains, with one warning per file", "[scene]") {
+  const Scene s = Scene::from_text(
+      "bank b set w 2 0 10 0.5 endbank\n"
+      "point a (0 0 0) endpoint point c (1 0 0) endpoint point d (1 1 0) endpoint point e (0 1 0) endpoint\n"
+      "mesh m face f (a c d e) endface\n  sharp 9 (a c d) endsharp\n  sharp {expr $b.w} (d e) (e a) "
+      "endsharp\n"
+      "endmesh\ninstance i m endinstance\n",
+      "t.nom");
+  CHECK(s.combined_soup().sharp_edges.size() == 4);
+  CHECK(std::count_if(s.warnings().begin(), s.warnings().end(), [](const Diagnostic& d) {
+          return d.message.find("sharpness weights") != std::string::npos;
+        }) == 1);
+  CHECK(s.stage_settings().has_sharp_weights);
+  const std::string saved = to_nome_text(s);
+  CHECK_THAT(saved, Catch::Contains("sharp 9 (a c d) endsharp") &&
+                        Catch::Contains("sharp {expr $b_w} (e a) endsharp"));
+}
+
+TEST_CASE("$time and $frame are built-in parameters, 0 until set", "[scene]") {
+  Scene s = Scene::from_text(
+      "point p ({expr $time} {expr $frame} 0) endpoint\n"
+      "point q (1 0 0) endpoint point r (0 1 0) endpoint\n"
+      "face f (p q r) endface\ninstance i f endinstance\n",
+      "t.nome");
+  CHECK(s.combined_soup().positions[0] == Vec3(0, 0, 0));
+  CHECK(s.parameters().empty());  // no slider
+  CHECK_FALSE(s.find_parameter("time"));
+  CHECK(s.set_clock(time_parameter, 2.5).size() == 1);
+  s.set_clock(frame_parameter, 3);
+  CHECK(s.combined_soup().positions[0] == Vec3(2.5, 3, 0));
+  CHECK_THROWS_AS(s.set_clock("clock", 1), InvalidInputError);
+}
