@@ -239,3 +239,41 @@ TEST_CASE("param_surf__genParametricSurfExample.nom's Dupin cyclide closes after
   CHECK(merged.chi == 0);
   CHECK(merged.orientable);
 }
+
+TEST_CASE("genimplicitsurf: a sphere, a torus and a cylinder cut by the box, all 2-manifolds", "[scene]") {
+  const Scene ball =
+      one_generator("genimplicitsurf", "func [x^2+y^2+z^2-1] (-1.5 1.5 -1.5 1.5 -1.5 1.5 9 10 11)");
+  CHECK(is_closed_surface(topology(ball), 2));
+  // Every face points away from the centre (towards f > 0).
+  const PolygonSoup soup = ball.combined_soup();
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    const Index* corners = &soup.face_vertices[soup.face_offsets[f]];
+    const Vec3 a = soup.positions[corners[0]], b = soup.positions[corners[1]], c = soup.positions[corners[2]];
+    CHECK(glm::dot(glm::cross(b - a, c - a), a + b + c) > 0);
+  }
+  const Scene ring = one_generator(
+      "genimplicitsurf", "func [(sqrt(x^2+y^2)-1)^2+z^2-0.16] (-1.6 1.6 -1.6 1.6 -0.6 0.6 16 16 6)");
+  CHECK(is_closed_surface(topology(ring), 0));
+  const TopologyReport tube =
+      topology(one_generator("genimplicitsurf", "func [x^2+y^2-1] (-2 2 -2 2 -1 1 7 7 3)"));
+  CHECK(tube.chi == 0);
+  CHECK(tube.borders == 2);
+  CHECK(tube.orientable);
+}
+
+TEST_CASE("a sample exactly on the surface gives no pinched vertex", "[scene]") {
+  // x^2+y^2+z^2-1 is 0 at the samples (+-1, 0, 0), ... of this grid: they count as outside.
+  const Scene s = one_generator("genimplicitsurf", "func [x^2+y^2+z^2-1] (-2 2 -2 2 -2 2 4 4 4)");
+  CHECK(is_closed_surface(topology(s), 2));
+}
+
+TEST_CASE("param_surf__genImplicitSurfExample.nom's Goursat tangle is a closed orientable surface",
+          "[scene]") {
+  NOME_NEEDS_SHARED_EXAMPLES("jipcad");
+  const Scene s =
+      test::load_scene_file(test::shared_examples_dir("jipcad") + "param_surf__genImplicitSurfExample.nom");
+  const TopologyReport r = topology(s);
+  CHECK(r.borders == 0);
+  CHECK(r.orientable);
+  CHECK(r.components.size() >= 1);
+}

@@ -27,6 +27,7 @@ StatementKind torus_statement();
 StatementKind torus_knot_statement();
 StatementKind cartesian_statement();
 StatementKind parametric_statement();
+StatementKind implicit_statement();
 StatementKind mesh_statement();
 StatementKind group_statement();
 StatementKind instance_statement();
@@ -56,6 +57,7 @@ std::span<const StatementKind> statement_kinds() {
       torus_knot_statement(),    // generator (JIPCAD): a tube along a torus knot
       cartesian_statement(),     // generator (JIPCAD): z = f(x, y)
       parametric_statement(),    // generator (JIPCAD): (x, y, z)(u, v)
+      implicit_statement(),      // generator (JIPCAD): f(x, y, z) = 0
       mesh_statement(),          // faces and sharp edges over named vertices
       group_statement(),         // instances
       instance_statement(),      // a top-level instance: a root of the scene
