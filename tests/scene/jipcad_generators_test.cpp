@@ -277,3 +277,45 @@ TEST_CASE("param_surf__genImplicitSurfExample.nom's Goursat tangle is a closed o
   CHECK(r.orientable);
   CHECK(r.components.size() >= 1);
 }
+
+TEST_CASE("helix and spiral are open rim lines", "[scene]") {
+  const Scene h = one_generator("helix", "(2 0.5 720 48)");
+  REQUIRE(h.instances().size() == 1);
+  const Piece& helix = h.instances()[0].geometry;
+  REQUIRE(helix.rims.size() == 1);
+  CHECK_FALSE(helix.rims[0].is_loop);
+  CHECK(helix.rims[0].vertices.size() == 49);
+  CHECK(helix.soup.num_faces() == 0);
+  CHECK(test::vertex_position(h, "i_v48").z == Approx(0.5 * 4 * 3.141592653589793));
+  CHECK(test::vertex_position(h, "i_v6").y == Approx(2));  // a quarter turn
+  const Scene s = one_generator("spiral", "(1 720 8)");
+  CHECK(test::vertex_position(s, "i_v0") == Vec3(0, 0, 0));
+  CHECK(test::vertex_position(s, "i_v8").x == Approx(2));  // two turns, radius 1 more per turn
+}
+
+TEST_CASE("hyperboloids: one sheet an annulus, a paraboloid a disk, two sheets two disks", "[scene]") {
+  const TopologyReport one = topology(one_generator("hyperboloid", "(1 1 1 6 12 0)"));
+  CHECK(one.chi == 0);
+  CHECK(one.borders == 2);
+  CHECK(one.orientable);
+  const TopologyReport bowl = topology(one_generator("hyperboloid", "(1 1 1 6 12 1)"));
+  CHECK(bowl.chi == 1);
+  CHECK(bowl.borders == 1);
+  const Scene two = one_generator("hyperboloid", "(1 2 1 6 12 2)");
+  const TopologyReport r = topology(two);
+  CHECK(r.components.size() == 2);
+  CHECK(r.chi == 2);
+  CHECK(r.borders == 2);
+  CHECK(test::vertex_position(two, "i_bottom_apex").z == Approx(-2));
+}
+
+TEST_CASE("a whole Dupin cyclide is closed with chi 0; a quarter is a disk", "[scene]") {
+  // The ring cyclide of param_surf__genParametricSurfExample.nom, as a generator: b^2 = a^2 - c^2.
+  CHECK(is_closed_surface(topology(one_generator("dupin", "(1 0.98 0.2 0.5 2 2 24)")), 0));
+  const TopologyReport quarter = topology(one_generator("dupin", "(1 0.98 0.2 0.5 1 1 8)"));
+  CHECK(quarter.chi == 1);
+  CHECK(quarter.borders == 1);
+  CHECK(
+      test::scene_errors("dupin d (1 0.98 1.5 0.5 2 2 8) enddupin\ninstance i d endinstance\n") ==
+      std::vector<std::string>{"t.nome:1:17: |c| must be below a (the cyclide would pass through infinity)"});
+}

@@ -35,7 +35,8 @@ TEST_CASE("malformed scenes: each error says where and what was expected", "[sce
        "t.nome:1:1: 'mesh' is never closed: expected 'endmesh', found end of file at 3:1"},
       {"frobnicate x\n",
        "t.nome:1:1: expected a statement (bank, surface, point, polyline, face, object, funnel, tunnel, "
-       "circle, mobiusstrip, sphere, ellipsoid, cylinder, cone, disk, torus, torusknot, gencartesiansurf, "
+       "circle, mobiusstrip, sphere, ellipsoid, cylinder, cone, disk, torus, torusknot, helix, spiral, "
+       "hyperboloid, dupin, gencartesiansurf, "
        "genparametricsurf, genimplicitsurf, mesh, group, instance, delete, consolidate), found 'frobnicate'"},
       {"bank b set n 8 3 10 endbank\n", "t.nome:1:21: expected a number, found 'endbank'"},
       {"(* never closed\n", "t.nome:1:1: unclosed comment: '(*' without '*)'"},

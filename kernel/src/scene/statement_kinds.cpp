@@ -25,6 +25,10 @@ StatementKind cone_statement();
 StatementKind disk_statement();
 StatementKind torus_statement();
 StatementKind torus_knot_statement();
+StatementKind helix_statement();
+StatementKind spiral_statement();
+StatementKind hyperboloid_statement();
+StatementKind dupin_statement();
 StatementKind cartesian_statement();
 StatementKind parametric_statement();
 StatementKind implicit_statement();
@@ -55,6 +59,10 @@ std::span<const StatementKind> statement_kinds() {
       disk_statement(),          // generator (JIPCAD): a disk or wedge
       torus_statement(),         // generator (JIPCAD): a torus, partial angles
       torus_knot_statement(),    // generator (JIPCAD): a tube along a torus knot
+      helix_statement(),         // generator (JIPCAD): a helical rim line
+      spiral_statement(),        // generator (JIPCAD): a spiral rim line
+      hyperboloid_statement(),   // generator (JIPCAD): one sheet, paraboloid, two sheets
+      dupin_statement(),         // generator (JIPCAD): a Dupin cyclide
       cartesian_statement(),     // generator (JIPCAD): z = f(x, y)
       parametric_statement(),    // generator (JIPCAD): (x, y, z)(u, v)
       implicit_statement(),      // generator (JIPCAD): f(x, y, z) = 0

@@ -31,8 +31,8 @@ GridVertices add_surface_grid(Piece& piece, const SurfaceGrid& g,
     for (int i = 0; i <= g.across; ++i) {
       const auto [fi, fj] = fold(i, j);
       if (fi != i || fj != j) continue;
-      std::string name = fold.is_pole(j) ? (j == 0 ? g.first_pole_name : g.last_pole_name)
-                                         : "v" + std::to_string(i) + "_" + std::to_string(j);
+      std::string name = g.prefix + (fold.is_pole(j) ? (j == 0 ? g.first_pole_name : g.last_pole_name)
+                                                     : "v" + std::to_string(i) + "_" + std::to_string(j));
       ids[slot(i, j)] = piece.add_vertex(point(i, j), std::move(name));
     }
   for (int j = 0; j <= g.along; ++j)
@@ -47,7 +47,9 @@ GridVertices add_surface_grid(Piece& piece, const SurfaceGrid& g,
       // A pole row gives the quad two equal corners: the face is the triangle that remains.
       face.erase(std::unique(face.begin(), face.end()), face.end());
       if (face.size() > 1 && face.front() == face.back()) face.pop_back();
-      if (face.size() >= 3) piece.add_face(face, "f" + std::to_string(i) + "_" + std::to_string(j));
+      if (g.is_reversed) std::reverse(face.begin(), face.end());
+      if (face.size() >= 3)
+        piece.add_face(face, g.prefix + "f" + std::to_string(i) + "_" + std::to_string(j));
     }
   return grid;
 }

@@ -19,6 +19,8 @@ struct SurfaceGrid {
   bool has_first_pole = false;  // row 0 is one vertex
   bool has_last_pole = false;   // row `along` is one vertex
   std::string first_pole_name = "south", last_pole_name = "north";
+  std::string prefix;        // before every name: two grids in one piece
+  bool is_reversed = false;  // faces turn from row j to j+1 first: normal d/dj x d/di
 };
 
 // The ids of a grid's vertices in the piece, by (i, j).
