@@ -7,6 +7,7 @@
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/pipeline.hpp"
+#include "nome/scene/generators/mobius_strip.hpp"
 #include "nome/scene/scene.hpp"
 #include "scene/scene_support.hpp"
 #include "support/shared_examples.hpp"
@@ -318,4 +319,26 @@ TEST_CASE("a whole Dupin cyclide is closed with chi 0; a quarter is a disk", "[s
   CHECK(
       test::scene_errors("dupin d (1 0.98 1.5 0.5 2 2 8) enddupin\ninstance i d endinstance\n") ==
       std::vector<std::string>{"t.nome:1:17: |c| must be below a (the cyclide would pass through infinity)"});
+}
+
+TEST_CASE("JIPCAD's mobiusstrip: radius is the width, cuts make parallel bands", "[scene]") {
+  // geom__mobius_strip.nom's values: width 1, one twist, no cut.
+  const Scene s = one_generator("mobiusstrip", "(1 1 0 100)");
+  const TopologyReport band = topology(s);
+  CHECK(band.components.size() == 1);
+  CHECK_FALSE(band.orientable);
+  CHECK(band.borders == 1);
+  CHECK(glm::length(test::vertex_position(s, "i_v0_0") - test::vertex_position(s, "i_v0_1")) == Approx(1));
+  // One cut along the middle (a gap between two bands) of a Möbius band: one long two-sided band.
+  const TopologyReport cut = topology_report(build_mesh(cut_mobius_strip({1, 1, 1, 40}).soup));
+  CHECK(cut.components.size() == 1);
+  CHECK(cut.orientable);
+  CHECK(cut.borders == 2);
+  // Two cuts: the middle band stays one-sided, the outer two join into one two-sided band.
+  const TopologyReport thirds = topology_report(build_mesh(cut_mobius_strip({1, 1, 2, 40}).soup));
+  CHECK(thirds.components.size() == 2);
+  CHECK_FALSE(thirds.orientable);
+  const TopologyReport two_cuts = topology_report(build_mesh(cut_mobius_strip({1.5, 2, 2, 40}).soup));
+  CHECK(two_cuts.components.size() == 3);
+  CHECK(two_cuts.orientable);
 }
