@@ -53,6 +53,8 @@ class Lexer {
         tokens.push_back({TokenKind::symbol, op, 0, start});
       } else if (std::isprint(static_cast<unsigned char>(c))) {
         // Other punctuation is left to the parser, which says what it expected there.
+        if (c == '[') ++bracket_depth_;
+        if (c == ']' && bracket_depth_ > 0) --bracket_depth_;
         advance();
         tokens.push_back({TokenKind::symbol, std::string(1, c), 0, start});
       } else {
@@ -123,7 +125,8 @@ class Lexer {
       while (is_digit(peek())) advance();
     }
     std::string text(text_.substr(begin, pos_ - begin));
-    if (is_word_char(peek())) {
+    // Inside JIPCAD's bracketed functions `5x` is a product: the number ends where the name starts.
+    if (is_word_char(peek()) && bracket_depth_ == 0) {
       text += take_while(is_word_char);
       diagnostics_.error(start, "malformed number '" + text + "'");
       return;
@@ -141,6 +144,7 @@ class Lexer {
   size_t pos_ = 0;
   int line_ = 1;
   int column_ = 1;
+  int bracket_depth_ = 0;  // inside `[ ... ]`
 };
 
 }  // namespace

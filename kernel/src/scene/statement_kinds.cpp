@@ -18,6 +18,20 @@ StatementKind funnel_statement();
 StatementKind tunnel_statement();
 StatementKind circle_statement();
 StatementKind mobius_strip_statement();
+StatementKind sphere_statement();
+StatementKind ellipsoid_statement();
+StatementKind cylinder_statement();
+StatementKind cone_statement();
+StatementKind disk_statement();
+StatementKind torus_statement();
+StatementKind torus_knot_statement();
+StatementKind helix_statement();
+StatementKind spiral_statement();
+StatementKind hyperboloid_statement();
+StatementKind dupin_statement();
+StatementKind cartesian_statement();
+StatementKind parametric_statement();
+StatementKind implicit_statement();
 StatementKind mesh_statement();
 StatementKind group_statement();
 StatementKind instance_statement();
@@ -49,6 +63,20 @@ std::span<const StatementKind> statement_kinds() {
       tunnel_statement(),        // generator: two funnels
       circle_statement(),        // generator: a closed rim line
       mobius_strip_statement(),  // generator: mobiusstrip
+      sphere_statement(),        // generator (JIPCAD): a globe, poles shared
+      ellipsoid_statement(),     // generator (JIPCAD): a globe with its own polar radius
+      cylinder_statement(),      // generator (JIPCAD): a mantle with optional caps
+      cone_statement(),          // generator (JIPCAD): a possibly truncated cone
+      disk_statement(),          // generator (JIPCAD): a disk or wedge
+      torus_statement(),         // generator (JIPCAD): a torus, partial angles
+      torus_knot_statement(),    // generator (JIPCAD): a tube along a torus knot
+      helix_statement(),         // generator (JIPCAD): a helical rim line
+      spiral_statement(),        // generator (JIPCAD): a spiral rim line
+      hyperboloid_statement(),   // generator (JIPCAD): one sheet, paraboloid, two sheets
+      dupin_statement(),         // generator (JIPCAD): a Dupin cyclide
+      cartesian_statement(),     // generator (JIPCAD): z = f(x, y)
+      parametric_statement(),    // generator (JIPCAD): (x, y, z)(u, v)
+      implicit_statement(),      // generator (JIPCAD): f(x, y, z) = 0
       mesh_statement(),          // faces and sharp edges over named vertices
       group_statement(),         // instances
       instance_statement(),      // a top-level instance: a root of the scene

@@ -70,12 +70,22 @@ struct ObjectDecl {
   std::vector<Name> faces;
 };
 
-// `KEYWORD NAME (arguments) endKEYWORD`: a generator (funnel, tunnel, circle, mobiusstrip, ...), whose
-// keyword, argument count and evaluator are its row of statement_kinds().
+// `func [...]`, `funcX [...]`: a function of the generator's variables written in brackets (JIPCAD's
+// function surfaces); `text` is what stands between the brackets.
+struct FunctionText {
+  Name keyword;
+  std::string text;
+  SourceLocation location;  // of the '['
+};
+
+// `KEYWORD NAME [functions] (arguments [options]) endKEYWORD`: a generator (funnel, tunnel, circle,
+// sphere, ...), whose keyword, argument count and evaluator are its row of statement_kinds().
 struct GeneratorDecl {
   Index kind = 0;  // row of statement_kinds()
   Name name;
   std::vector<Value> args;
+  std::vector<Name> options;  // words among the arguments: a cylinder's `botcap`, `topcap`
+  std::vector<FunctionText> functions;
 };
 
 // `sharp [weight] (v1 v2 ...) ... endsharp` inside a mesh: the chain of edges v1-v2, v2-v3, ... is sharp;

@@ -43,10 +43,13 @@ Piece mobius_strip(const MobiusStripParams& p) {
 
 namespace {
 
+// The 2016 meaning needs a cut (its cuts count the quads across); JIPCAD's files write 0 cuts for the
+// uncut band. Until the file's dialect decides, 0 cuts reads the arguments in JIPCAD's meaning.
 Piece evaluate(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
-  return mobius_strip({c.positive(a[0], "radius"), c.whole(a[1], 0, "twists"), c.whole(a[2], 1, "cuts"),
-                       c.whole(a[3], 3, "segs")});
+  const MobiusStripParams p{c.positive(a[0], "radius"), c.whole(a[1], 0, "twists"), c.whole(a[2], 0, "cuts"),
+                            c.whole(a[3], 3, "segs")};
+  return p.cuts == 0 ? cut_mobius_strip(p) : mobius_strip(p);
 }
 
 }  // namespace

@@ -13,4 +13,11 @@ struct MobiusStripParams {
 };
 Piece mobius_strip(const MobiusStripParams& p);
 
+// Möbius strip in JIPCAD's meaning of the same four arguments: a band around the unit circle in z = 0,
+// `radius` wide, cut `cuts` times along its length into cuts + 1 bands with equal gaps between them (2 cuts
+// + 1 equal strips across), the cross-section turning by twists*180 degrees once around; `segs` segments
+// around. Vertices v{i}_{j} (ring i, j = 0 .. 2 cuts + 1 across), faces f{i}_{k} (band k). The seam is
+// joined by position: with odd twists strip j meets strip 2 cuts - j, so the middle band is one-sided.
+Piece cut_mobius_strip(const MobiusStripParams& p);
+
 }  // namespace nome::scene
