@@ -23,6 +23,12 @@ StatementKind group_statement();
 StatementKind instance_statement();
 StatementKind delete_statement();
 StatementKind consolidate_statement();
+StatementKind control_point_statement();
+StatementKind bezier_curve_statement();
+StatementKind bspline_statement();
+StatementKind sweep_statement();
+StatementKind sweep_morph_statement();
+StatementKind morph_visualizer_statement();
 
 std::span<const StatementKind> statement_kinds() {
   // In the order error messages list the keywords and the writer writes the statements (any order
@@ -43,6 +49,14 @@ std::span<const StatementKind> statement_kinds() {
       instance_statement(),      // a top-level instance: a root of the scene
       delete_statement(),        // faces deleted by name
       consolidate_statement(),   // the consolidated mesh
+
+      // Curves and sweeps (issue 15)
+      control_point_statement(),     // a point that shapes a sweep's cross-section
+      bezier_curve_statement(),      // curve: a rim line, a sweep's path or cross-section
+      bspline_statement(),           // curve: uniform B-spline
+      sweep_statement(),             // a cross-section swept along a path (kernel sweep())
+      sweep_morph_statement(),       // a sweep whose cross-sections blend between control points
+      morph_visualizer_statement(),  // one of a sweep's cross-sections
   };
   return table;
 }
