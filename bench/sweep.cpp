@@ -77,9 +77,26 @@ int main() {
   std::printf("  sweep() core (frames, vertices, faces, names)  %8.2f\n", best_ms(5, [&] {
                 result = sweep(path, {&circle, 1}, o);
               }));
+  Buffer<Vec3> moved;
+  std::printf("  sweep_positions() (what a slider move changes)  %8.2f\n", best_ms(5, [&] {
+                moved = sweep_positions(path, {&circle, 1}, o);
+              }));
   Mesh mesh;
   std::printf("  build_mesh of its soup                         %8.2f\n",
               best_ms(5, [&] { mesh = build_mesh(result.piece.soup); }));
+
+  Pipeline direct;
+  PipelineSettings scene_stage;
+  scene_stage.stage = Stage::scene;
+  direct.set_input(PipelineInput{result.piece.soup, {}, {}});
+  direct.run(scene_stage);
+  PolygonSoup soup = result.piece.soup;
+  std::printf("  slider move, positions path: sweep_positions() into the pipeline's mesh %8.2f\n",
+              best_ms(5, [&] {
+                soup.positions = sweep_positions(path, {&circle, 1}, o);
+                direct.set_input(PipelineInput{soup, {}, {}});
+                direct.run(scene_stage);
+              }));
 
   // Through the scene and the pipeline's scene stage, as the viewer and `nome info` do.
   const std::string text = knot_scene();

@@ -265,3 +265,42 @@ TEST_CASE("a sweep names what is wrong with its curves", "[scene]") {
                            "sweep s crosssection sq endcrosssection path sq twist endpath endsweep\n") ==
         std::vector<std::string>{"t.nome:6:55: expected a number or '{expr ...}', found 'endpath'"});
 }
+
+// The statements of JIPCAD's sweeps__sweeps_circle.nom in the 2016 spelling (the file itself needs the
+// successor's `list` and `$b.name`): a rectangle swept around a circle, closed by position.
+TEST_CASE("JIPCAD's circle sweep: a rectangle around a circle is a closed orientable torus", "[scene]") {
+  const std::string text =
+      "bank b\n set s_twist 0 0 360 1\n set s_azimuth 0 0 360 1\nendbank\n"
+      "circle myc (5 10) endcircle\n"
+      "point point1 (2 1 0) endpoint\npoint point2 (-2 1 0) endpoint\n"
+      "point point3 (-2 -1 0) endpoint\npoint point4 (2 -1 0) endpoint\n"
+      "polyline crossSection (point1 point2 point3 point4) isloop endpolyline\n"
+      "sweep s1\n  crosssection crossSection endcrosssection\n"
+      "  path myc mintorsion azimuth {expr $b_s_azimuth} twist {expr $b_s_twist} endpath\nendsweep\n"
+      "instance sweepinst s1 endinstance\n";
+  Scene s = Scene::from_text(text, "t.nome");
+  for (const double twist : {0.0, 180.0, 360.0}) {
+    INFO("twist " << twist);
+    s.set_parameter(*s.find_parameter("b_s_twist"), twist);
+    CHECK(s.warnings().empty());
+    const TopologyReport r = topology(s.combined_soup());
+    CHECK(r.borders == 0);
+    CHECK(r.chi == 0);
+    CHECK(r.orientable);
+    CHECK(r.mobius_edges == 0);
+    CHECK(r.components.size() == 1);
+  }
+}
+
+TEST_CASE("sweep_positions() gives exactly the positions of sweep()", "[scene]") {
+  SweepOptions o;
+  o.frames = FrameKind::minimal_torsion;
+  o.is_path_closed = true;
+  o.twist = 90;
+  o.azimuth = 10;
+  std::vector<PathSample> path = circle_path(12);
+  path[3].scale = {2, 0.5};
+  path[5].rotate = {5, 10, 30};
+  const PolygonSoup soup = sweep(path, {&square, 1}, o).piece.soup;
+  CHECK(sweep_positions(path, {&square, 1}, o) == soup.positions);
+}

@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 
 #include <glm/geometric.hpp>
 
 #include "nome/error.hpp"
+#include "nome/scene/expression.hpp"
 #include "scene/sweep_geometry.hpp"
 
 namespace nome::scene {
@@ -45,12 +47,11 @@ SampleTurns sample_turns(std::span<const PathSample> path, const SweepOptions& o
   return turns;
 }
 
-// Where point j of the sample's cross-section lands.
+// Where point j of the sample's cross-section lands, turned by the angle whose cosine and sine are c, s.
 Vec3 place(const CrossSection& section, std::size_t j, bool is_reversed, const PathSample& sample,
-           const Frame& frame, double angle, const Vec3& bend, double stretch) {
+           const Frame& frame, double c, double s, const Vec3& bend, double stretch) {
   const std::size_t m = section.points.size();
   const glm::dvec2 p = section.points[is_reversed ? m - 1 - j : j] * sample.scale;
-  const double c = std::cos(angle), s = std::sin(angle);
   Vec3 local(p.x * c - p.y * s, p.x * s + p.y * c, 0.0);
   // A control point's tilt: about N by rx, then about B by ry.
   if (sample.rotate.x != 0 || sample.rotate.y != 0) {
@@ -94,19 +95,26 @@ double nearest_correspondence(std::span<const Vec3> end, std::span<const Vec3> s
   return best_worst;
 }
 
-std::string vertex_name(std::size_t i, std::size_t j) {
-  return "v" + std::to_string(i) + "_" + std::to_string(j);
+// `kind` i `_` j `suffix`, written once (such names fit a string's own buffer: no allocation).
+std::string element_name(char kind, std::size_t i, std::size_t j, const char* suffix = "") {
+  char text[64];
+  char* end = text;
+  *end++ = kind;
+  end = std::to_chars(end, text + 30, i).ptr;
+  *end++ = '_';
+  end = std::to_chars(end, text + 60, j).ptr;
+  while (*suffix) *end++ = *suffix++;
+  return std::string(text, end);
 }
 
 void add_band_face(Piece& piece, const std::array<Index, 4>& quad, std::size_t i, std::size_t j,
                    FaceShape shape) {
-  const std::string name = "f" + std::to_string(i) + "_" + std::to_string(j);
   if (shape == FaceShape::quadrilaterals) {
-    piece.add_face(quad, name);
+    piece.add_face(quad, element_name('f', i, j));
     return;
   }
-  piece.add_face(std::array<Index, 3>{quad[0], quad[1], quad[2]}, name + "a");
-  piece.add_face(std::array<Index, 3>{quad[0], quad[2], quad[3]}, name + "b");
+  piece.add_face(std::array<Index, 3>{quad[0], quad[1], quad[2]}, element_name('f', i, j, "a"));
+  piece.add_face(std::array<Index, 3>{quad[0], quad[2], quad[3]}, element_name('f', i, j, "b"));
 }
 
 void check_input(std::span<const PathSample> path, std::span<const CrossSection> sections,
@@ -127,82 +135,144 @@ void check_input(std::span<const PathSample> path, std::span<const CrossSection>
   }
 }
 
+// One sweep being made: the path's shape, frames and turns, and the piece the sections go into.
+class Sweeper {
+ public:
+  Sweeper(std::span<const PathSample> path, std::span<const CrossSection> sections, const SweepOptions& o)
+      : path_(path), sections_(sections), o_(o), n_(path.size()), m_(sections[0].points.size()) {
+    std::vector<Vec3> points(n_);
+    for (std::size_t i = 0; i < n_; ++i) points[i] = path[i].position;
+    shape_ = path_shape(points, o.is_path_closed);
+    frames_ = frames_of(points, shape_, o.is_path_closed, o.frames);
+    // Rotation-minimising frames come back turned once around a closed path: spread that turn along it.
+    double holonomy = 0;
+    if (o.is_path_closed)
+      holonomy = std::atan2(glm::dot(frames_[n_].normal, frames_[0].binormal),
+                            glm::dot(frames_[n_].normal, frames_[0].normal)) /
+                 degrees;
+    turns_ = sample_turns(path, o, holonomy);
+    first_ = o.is_cut_begin ? 1 : 0;
+    last_ = o.is_cut_end ? n_ - 2 : n_ - 1;
+    around_ = sections[0].is_closed ? m_ : m_ - 1;
+  }
+
+  Buffer<Vec3> positions() const {
+    Buffer<Vec3> out;
+    out.reserve((last_ - first_ + 1) * m_);
+    for (std::size_t i = first_; i <= last_; ++i) {
+      const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
+      for (std::size_t j = 0; j < m_; ++j) out.push_back(placed(i, j, c, s));
+    }
+    return out;
+  }
+
+  SweepResult run() {
+    reserve();
+    for (std::size_t i = first_; i <= last_; ++i) {
+      const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
+      for (std::size_t j = 0; j < m_; ++j)
+        result_.piece.add_vertex(placed(i, j, c, s), element_name('v', i, j));
+    }
+    if (m_ == 1) {
+      RimLine rim{"", {}, o_.is_path_closed};
+      for (std::size_t i = first_; i <= last_; ++i) rim.vertices.push_back(vertex(i, 0));
+      result_.piece.rims.push_back(std::move(rim));
+      return std::move(result_);
+    }
+    for (std::size_t i = first_; i < last_; ++i)
+      for (std::size_t j = 0; j < around_; ++j) {
+        const std::size_t k = (j + 1) % m_;
+        add_band_face(result_.piece, {vertex(i, j), vertex(i, k), vertex(i + 1, k), vertex(i + 1, j)}, i, j,
+                      o_.faces);
+      }
+    if (o_.is_path_closed)
+      join_ends();
+    else
+      add_caps();
+    return std::move(result_);
+  }
+
+ private:
+  Index vertex(std::size_t i, std::size_t j) const { return Index((i - first_) * m_ + j); }
+  // Point j of sample i's section; sample n is a closed path's first sample reached again.
+  Vec3 placed(std::size_t i, std::size_t j, double c, double s) const {
+    const std::size_t at = i % n_;
+    return place(sections_[path_[at].section], j, turns_.is_reversed[i], path_[at], frames_[i], c, s,
+                 shape_.bend[at], shape_.stretch[at]);
+  }
+
+  void reserve() {
+    PolygonSoup& soup = result_.piece.soup;
+    const std::size_t vertices = (last_ - first_ + 1) * m_;
+    const std::size_t per_quad = o_.faces == FaceShape::triangles ? 2 : 1;
+    const std::size_t faces = (last_ - first_ + 1) * around_ * per_quad + 2;
+    soup.positions.reserve(vertices);
+    soup.vertex_names.reserve(vertices);
+    soup.face_vertices.reserve(faces * 4);
+    soup.face_offsets.reserve(faces + 1);
+    soup.face_names.reserve(faces);
+    soup.face_colors.reserve(faces);
+    result_.piece.face_has_color.reserve(faces);
+  }
+
+  // The last band of a closed path, to the first section by position.
+  void join_ends() {
+    std::vector<Vec3> end(m_), start(m_);
+    for (std::size_t j = 0; j < m_; ++j) {
+      end[j] = placed(n_, j, std::cos(turns_.angle[n_]), std::sin(turns_.angle[n_]));
+      start[j] = result_.piece.soup.positions[vertex(0, j)];
+    }
+    std::vector<Index> to;
+    const double gap = nearest_correspondence(end, start, sections_[0].is_closed, to);
+    double size = 0;
+    for (const Vec3& p : start) size = std::max(size, glm::length(p - path_[0].position));
+    if (gap > 1e-6 * std::max(size, 1e-12))
+      result_.warnings.push_back("a twist of " + format_number(o_.twist) +
+                                 " degrees is no symmetry of the cross-section: the path's end is joined to "
+                                 "its start by the nearest match, points up to " +
+                                 format_number(std::round(gap * 1e6) / 1e6) + " apart");
+    for (std::size_t j = 0; j < around_; ++j) {
+      const std::size_t k = (j + 1) % m_;
+      add_band_face(result_.piece, {vertex(n_ - 1, j), vertex(n_ - 1, k), to[k], to[j]}, n_ - 1, j, o_.faces);
+    }
+  }
+
+  // Caps close a closed section; on an open one (JIPCAD's files cap those too) they span its ends.
+  void add_caps() {
+    if (m_ < 3) return;
+    std::vector<Index> cap(m_);
+    if (o_.has_begin_cap) {
+      for (std::size_t j = 0; j < m_; ++j) cap[j] = vertex(first_, m_ - 1 - j);
+      result_.piece.add_face(cap, "begincap");
+    }
+    if (o_.has_end_cap) {
+      for (std::size_t j = 0; j < m_; ++j) cap[j] = vertex(last_, j);
+      result_.piece.add_face(cap, "endcap");
+    }
+  }
+
+  std::span<const PathSample> path_;
+  std::span<const CrossSection> sections_;
+  const SweepOptions& o_;
+  std::size_t n_, m_, first_ = 0, last_ = 0, around_ = 0;
+  PathShape shape_;
+  std::vector<Frame> frames_;
+  SampleTurns turns_;
+  SweepResult result_;
+};
+
 }  // namespace
 
 SweepResult sweep(std::span<const PathSample> path, std::span<const CrossSection> sections,
                   const SweepOptions& o) {
   check_input(path, sections, o);
-  const std::size_t n = path.size(), m = sections[0].points.size();
-  std::vector<Vec3> points(n);
-  for (std::size_t i = 0; i < n; ++i) points[i] = path[i].position;
-  const PathShape shape = path_shape(points, o.is_path_closed);
-  const std::vector<Frame> frames = frames_of(points, shape, o.is_path_closed, o.frames);
-  // Rotation-minimising frames come back turned once around a closed path: spread that turn along it.
-  double holonomy = 0;
-  if (o.is_path_closed)
-    holonomy = std::atan2(glm::dot(frames[n].normal, frames[0].binormal),
-                          glm::dot(frames[n].normal, frames[0].normal)) /
-               degrees;
-  const SampleTurns turns = sample_turns(path, o, holonomy);
-  const std::size_t first = o.is_cut_begin ? 1 : 0, last = o.is_cut_end ? n - 2 : n - 1;
-  SweepResult result;
-  Piece& piece = result.piece;
-  piece.soup.positions.reserve((last - first + 1) * m);
-  for (std::size_t i = first; i <= last; ++i)
-    for (std::size_t j = 0; j < m; ++j)
-      piece.add_vertex(place(sections[path[i].section], j, turns.is_reversed[i], path[i], frames[i],
-                             turns.angle[i], shape.bend[i], shape.stretch[i]),
-                       vertex_name(i, j));
-  const auto vertex = [&](std::size_t i, std::size_t j) { return Index((i - first) * m + j); };
-  if (m == 1) {
-    RimLine rim{"", {}, o.is_path_closed};
-    for (std::size_t i = first; i <= last; ++i) rim.vertices.push_back(vertex(i, 0));
-    piece.rims.push_back(std::move(rim));
-    return result;
-  }
-  const bool is_section_closed = sections[0].is_closed;
-  const std::size_t around = is_section_closed ? m : m - 1;
-  for (std::size_t i = first; i < last; ++i)
-    for (std::size_t j = 0; j < around; ++j) {
-      const std::size_t k = (j + 1) % m;
-      add_band_face(piece, {vertex(i, j), vertex(i, k), vertex(i + 1, k), vertex(i + 1, j)}, i, j, o.faces);
-    }
-  if (o.is_path_closed) {
-    // The first section placed once more at the end of the loop, to find which of its points meet.
-    std::vector<Vec3> end(m), start(m);
-    for (std::size_t j = 0; j < m; ++j) {
-      end[j] = place(sections[path[0].section], j, turns.is_reversed[n], path[0], frames[n], turns.angle[n],
-                     shape.bend[0], shape.stretch[0]);
-      start[j] = piece.soup.positions[vertex(0, j)];
-    }
-    std::vector<Index> to;
-    const double gap = nearest_correspondence(end, start, is_section_closed, to);
-    double size = 0;
-    for (const Vec3& p : start) size = std::max(size, glm::length(p - path[0].position));
-    if (gap > 1e-6 * std::max(size, 1e-12))
-      result.warnings.push_back(
-          "a twist of " + std::to_string(o.twist) +
-          " degrees is no symmetry of the cross-section: the path's end is joined to its "
-          "start by the nearest match, points up to " +
-          std::to_string(gap) + " apart");
-    for (std::size_t j = 0; j < around; ++j) {
-      const std::size_t k = (j + 1) % m;
-      add_band_face(piece, {vertex(n - 1, j), vertex(n - 1, k), to[k], to[j]}, n - 1, j, o.faces);
-    }
-    return result;
-  }
-  // Caps close a closed section; on an open one (JIPCAD's files cap those too) they span its ends.
-  if (m < 3) return result;
-  std::vector<Index> cap(m);
-  if (o.has_begin_cap) {
-    for (std::size_t j = 0; j < m; ++j) cap[j] = vertex(first, m - 1 - j);
-    piece.add_face(cap, "begincap");
-  }
-  if (o.has_end_cap) {
-    for (std::size_t j = 0; j < m; ++j) cap[j] = vertex(last, j);
-    piece.add_face(cap, "endcap");
-  }
-  return result;
+  return Sweeper(path, sections, o).run();
+}
+
+Buffer<Vec3> sweep_positions(std::span<const PathSample> path, std::span<const CrossSection> sections,
+                             const SweepOptions& o) {
+  check_input(path, sections, o);
+  return Sweeper(path, sections, o).positions();
 }
 
 }  // namespace nome::scene

@@ -61,6 +61,11 @@ struct SweepResult {
 SweepResult sweep(std::span<const PathSample> path, std::span<const CrossSection> sections,
                   const SweepOptions& options);
 
+// The positions sweep() gives its vertices, alone: what a slider that moves the path or reshapes the
+// cross-section changes (the faces and names stay), for a caller that updates positions in place.
+Buffer<Vec3> sweep_positions(std::span<const PathSample> path, std::span<const CrossSection> sections,
+                             const SweepOptions& options);
+
 // The frames alone (rows N, B, T per sample, then for a closed path one more: the first sample's frame
 // carried once around), for the sweep and for a ribbon along a rim line.
 struct Frame {
