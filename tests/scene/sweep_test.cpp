@@ -8,6 +8,7 @@
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/subdivide.hpp"
+#include "nome/scene/save_nome.hpp"
 #include "nome/scene/sweep.hpp"
 #include "scene/scene_support.hpp"
 #include "support/point_sets.hpp"
@@ -303,4 +304,29 @@ TEST_CASE("sweep_positions() gives exactly the positions of sweep()", "[scene]")
   path[5].rotate = {5, 10, 30};
   const PolygonSoup soup = sweep(path, {&square, 1}, o).piece.soup;
   CHECK(sweep_positions(path, {&square, 1}, o) == soup.positions);
+}
+
+TEST_CASE("a sweep with every option is saved and read back to the same surface", "[scene]") {
+  const std::string text =
+      "bank b set az 30 -180 180 1 endbank\n" + std::string(square_points) +
+      "point a (0 0 0) endpoint\npoint b (0 0 2) endpoint\npoint c (1 0 3) endpoint\npoint d (3 0 3) "
+      "endpoint\n"
+      "point e (4 1 3) endpoint\n"
+      "controlpoint cb point b scale (1.5 1 0) rotate (0 0 20) reverse endcontrolpoint\n"
+      "bspline p order 3 (a cb c d e) segs 12 endbspline\n"
+      "sweep s crosssection sq reverse begincap endcap endcrosssection\n"
+      "  path p mintorsion azimuth ($b_az + 180) twist 45 cutbegin cutend endpath brep TRIANGLES endsweep\n"
+      "instance i s endinstance\n";
+  const Scene s = Scene::from_text(text, "t.nome");
+  const PolygonSoup& soup = s.instances()[0].geometry.soup;
+  CHECK(soup.num_vertices() == 11 * 4);
+  CHECK(soup.num_faces() == 10 * 4 * 2 + 2);
+  const TopologyReport r = topology(soup);
+  CHECK(r.borders == 0);
+  CHECK(r.chi == 2);
+  const Scene back = Scene::from_text(to_nome_text(s), "saved.nome");
+  const PolygonSoup& again = back.instances()[0].geometry.soup;
+  CHECK(again.positions == soup.positions);
+  CHECK(again.face_vertices == soup.face_vertices);
+  CHECK(again.face_names == soup.face_names);
 }
