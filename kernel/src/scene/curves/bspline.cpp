@@ -9,19 +9,20 @@ namespace {
 // The K non-zero basis functions at t over the integer knots 0, 1, 2, ... whose span starts at knot r
 // (The NURBS Book, algorithm A2.2).
 void basis(double t, int r, int order, std::vector<double>& n) {
-  std::vector<double> left(std::size_t(order), 0.0), right(std::size_t(order), 0.0);
-  n.assign(std::size_t(order), 0.0);
+  const std::size_t k = std::size_t(order);
+  std::vector<double> left(k, 0.0), right(k, 0.0);
+  n.assign(k, 0.0);
   n[0] = 1;
-  for (int j = 1; j < order; ++j) {
-    left[std::size_t(j)] = t - double(r + 1 - j);
-    right[std::size_t(j)] = double(r + j) - t;
+  for (std::size_t j = 1; j < k; ++j) {
+    left[j] = t - (double(r) + 1 - double(j));
+    right[j] = double(r) + double(j) - t;
     double saved = 0;
-    for (int q = 0; q < j; ++q) {
-      const double temp = n[std::size_t(q)] / (right[std::size_t(q + 1)] + left[std::size_t(j - q)]);
-      n[std::size_t(q)] = saved + right[std::size_t(q + 1)] * temp;
-      saved = left[std::size_t(j - q)] * temp;
+    for (std::size_t q = 0; q < j; ++q) {
+      const double temp = n[q] / (right[q + 1] + left[j - q]);
+      n[q] = saved + right[q + 1] * temp;
+      saved = left[j - q] * temp;
     }
-    n[std::size_t(j)] = saved;
+    n[j] = saved;
   }
 }
 
@@ -50,11 +51,12 @@ SampledCurve sample(DefinitionContext& context, Index decl) {
     const int r = std::min(int(std::floor(t)), count - 1);
     basis(t, r, order, n);
     CurvePoint p{Vec3(0.0), glm::dvec2(0.0), Vec3(0.0)};
-    for (int k = 0; k < order; ++k) {
-      const CurvePoint& cp = cps[std::size_t(r - order + 1 + k)];
-      p.position += n[std::size_t(k)] * cp.position;
-      p.scale += n[std::size_t(k)] * cp.scale;
-      p.rotate += n[std::size_t(k)] * cp.rotate;
+    const std::size_t base = std::size_t(r) + 1 - std::size_t(order);
+    for (std::size_t k = 0; k < n.size(); ++k) {
+      const CurvePoint& cp = cps[base + k];
+      p.position += n[k] * cp.position;
+      p.scale += n[k] * cp.scale;
+      p.rotate += n[k] * cp.rotate;
     }
     curve.points.push_back(p);
   }
