@@ -12,6 +12,7 @@
 #include "nome/scene/sweep.hpp"
 #include "scene/scene_support.hpp"
 #include "support/point_sets.hpp"
+#include "support/shared_examples.hpp"
 
 using namespace nome;
 using namespace nome::scene;
@@ -329,4 +330,20 @@ TEST_CASE("a sweep with every option is saved and read back to the same surface"
   CHECK(again.positions == soup.positions);
   CHECK(again.face_vertices == soup.face_vertices);
   CHECK(again.face_names == soup.face_names);
+}
+
+// JIPCAD's file as it is: 11 circles swept along B-splines of 51 points each, each capped at one end.
+TEST_CASE("JIPCAD's arts_expo__antcolony.nom: eleven tubes, each a disc", "[scene]") {
+  NOME_NEEDS_SHARED_EXAMPLES("jipcad");
+  const Scene s = test::load_scene_file(test::shared_examples_dir("jipcad") + "/arts_expo__antcolony.nom");
+  REQUIRE(s.instances().size() == 11);
+  for (const SceneInstance& instance : s.instances()) {
+    INFO(instance.name);
+    const TopologyReport r = topology(instance.geometry.soup);
+    CHECK(r.components.size() == 1);
+    CHECK(r.borders == 1);
+    CHECK(r.chi == 1);
+    CHECK(r.orientable);
+    CHECK(r.mobius_edges == 0);
+  }
 }
