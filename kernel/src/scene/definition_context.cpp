@@ -44,14 +44,43 @@ double DefinitionContext::ratio(const Value& v) {
   return x;
 }
 
+const ControlPointDecl* DefinitionScope::control_point(const std::string& name) const {
+  const auto it = scene_.control_points_.find(name);
+  return it == scene_.control_points_.end() ? nullptr : &scene_.ast_.control_points[it->second];
+}
+
+std::optional<std::pair<Index, Index>> DefinitionScope::definition(const std::string& name) const {
+  const auto it = scene_.definitions_.find(name);
+  if (it == scene_.definitions_.end() || it->second.kind == Scene::consolidated_kind) return std::nullopt;
+  return std::pair{it->second.kind, it->second.index};
+}
+
+std::optional<Vec3> DefinitionContext::position(const Name& name) {
+  Name point = name;
+  if (const ControlPointDecl* c = control_point(name.text)) {
+    if (!scene_.points_.count(c->point.text))
+      throw EvaluationError(c->point.location,
+                            "controlpoint '" + c->name.text + "': '" + c->point.text + "' is not a point");
+    point = c->point;
+  }
+  if (const auto it = scene_.points_.find(point.text); it != scene_.points_.end()) {
+    const PointDecl& pt = scene_.ast_.points[it->second];
+    return Vec3(number(pt.xyz[0]), number(pt.xyz[1]), number(pt.xyz[2]));
+  }
+  const Scene::VertexRef* ref = scene_.lookup_vertex(name, errors_);
+  if (!ref) return std::nullopt;
+  const Scene::Placement& source = scene_.placements_[ref->placement];
+  reads_.insert(reads_.end(), source.reads.begin(), source.reads.end());
+  return source.world.soup.positions[ref->vertex];
+}
+
 Index DefinitionContext::vertex(const Name& name) {
   const bool is_pt = is_point(name.text);
   const std::string key = (is_pt ? "p:" : "r:") + name.text;
   if (const auto it = local_.find(key); it != local_.end()) return it->second;
   Index v = no_index;
   if (is_pt) {
-    const PointDecl& pt = scene_.ast_.points[scene_.points_.at(name.text)];
-    v = piece_.add_vertex({number(pt.xyz[0]), number(pt.xyz[1]), number(pt.xyz[2])}, name.text);
+    v = piece_.add_vertex(*position(name), name.text);
   } else if (const Scene::VertexRef* ref = scene_.lookup_vertex(name, errors_)) {
     const Scene::Placement& source = scene_.placements_[ref->placement];
     v = piece_.add_vertex(source.world.soup.positions[ref->vertex],

@@ -15,7 +15,13 @@ class DefinitionScope {
  public:
   explicit DefinitionScope(const Scene& scene) : scene_(scene) {}
   const SceneAst& ast() const { return scene_.ast_; }
-  bool is_point(const std::string& name) const { return scene_.points_.count(name) > 0; }
+  bool is_point(const std::string& name) const {
+    return scene_.points_.count(name) > 0 || scene_.control_points_.count(name) > 0;
+  }
+  // The control point of that name, or null.
+  const ControlPointDecl* control_point(const std::string& name) const;
+  // What a name defines: its row of statement_kinds() and declaration, if a definition of a kind.
+  std::optional<std::pair<Index, Index>> definition(const std::string& name) const;
   // The top-level face definition of that name (objects are made of them), or no_index.
   Index top_level_face(const std::string& name) const;
 
@@ -40,6 +46,9 @@ class DefinitionContext : public DefinitionScope {
 
   // The piece's vertex for a name: a point, or a placed vertex; no_index (with the error) if unknown.
   Index vertex(const Name& name);
+  // Where a named vertex is, without adding it to the piece (a sweep reads its curves' points so).
+  std::optional<Vec3> position(const Name& name);
+  void warning(SourceLocation at, std::string message) const { scene_.add_warning(at, std::move(message)); }
   // A face over named vertices; left out when one of them is unknown.
   void add_face(const std::vector<Name>& names, const std::string& face_name,
                 const std::optional<Name>& surface);

@@ -35,6 +35,15 @@ Value StatementParser::value() {
   fail(start, "a number or '{expr ...}'");
 }
 
+Value StatementParser::grouped_value() {
+  const Token start = peek();
+  if (!start.is_symbol("(")) return value();
+  take();
+  const ExprId e = expression();
+  expect_symbol(")");
+  return {0, e, start.location};
+}
+
 ExprId StatementParser::node(ExprOp op, SourceLocation at, ExprId a, ExprId b) {
   int depth = 1;
   for (ExprId child : {a, b})

@@ -15,6 +15,14 @@ Diagnostic Scene::located(SourceLocation at, std::string message) const {
   return {Severity::error, ast_.file, at, std::move(message)};
 }
 
+void Scene::add_warning(SourceLocation at, std::string message) const {
+  Diagnostic d{Severity::warning, ast_.file, at, std::move(message)};
+  const auto is_same = [&](const Diagnostic& w) {
+    return w.location.line == at.line && w.location.column == at.column && w.message == d.message;
+  };
+  if (std::none_of(warnings_.begin(), warnings_.end(), is_same)) warnings_.push_back(std::move(d));
+}
+
 Scene Scene::from_text(std::string_view text, const std::string& file, const SceneOptions& options) {
   Diagnostics diagnostics(file);
   SceneAst ast = parse_nome(text, diagnostics, {options.dialect, {}});
@@ -108,6 +116,8 @@ void Scene::define_names(std::vector<Diagnostic>& errors) {
   std::unordered_map<std::string, SourceLocation> surface_at, point_at, definition_at;
   for (Index i = 0; i < ast_.surfaces.size(); ++i) define(surfaces_, ast_.surfaces[i].name, i, surface_at);
   for (Index i = 0; i < ast_.points.size(); ++i) define(points_, ast_.points[i].name, i, point_at);
+  for (Index i = 0; i < ast_.control_points.size(); ++i)
+    define(control_points_, ast_.control_points[i].name, i, point_at);
   std::vector<std::pair<DeclaredName, Index>> declared;  // with the row of its kind
   const std::span<const StatementKind> kinds = statement_kinds();
   for (Index k = 0; k < kinds.size(); ++k) {

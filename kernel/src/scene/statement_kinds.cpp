@@ -48,6 +48,12 @@ StatementKind frontcolor_statement();
 StatementKind backcolor_statement();
 StatementKind backgroundcolor_statement();
 StatementKind backface_statement();
+StatementKind control_point_statement();
+StatementKind bezier_curve_statement();
+StatementKind bspline_statement();
+StatementKind sweep_statement();
+StatementKind sweep_morph_statement();
+StatementKind morph_visualizer_statement();
 
 std::span<const StatementKind> statement_kinds() {
   // In the order error messages list the keywords and the writer writes the statements (any order
@@ -86,8 +92,16 @@ std::span<const StatementKind> statement_kinds() {
       subdivision_statement(),   // successor: root instances and the subdivision levels
       offset_statement(),        // successor: root instances and the offset distance
       camera_statement(),        // successor: render defaults
-      light_statement(),        window_statement(),          viewport_statement(), frontcolor_statement(),
-      backcolor_statement(),    backgroundcolor_statement(), backface_statement(),
+      light_statement(), window_statement(), viewport_statement(), frontcolor_statement(),
+      backcolor_statement(), backgroundcolor_statement(), backface_statement(),
+
+      // Curves and sweeps (issue 15)
+      control_point_statement(),     // a point that shapes a sweep's cross-section
+      bezier_curve_statement(),      // curve: a rim line, a sweep's path or cross-section
+      bspline_statement(),           // curve: uniform B-spline
+      sweep_statement(),             // a cross-section swept along a path (kernel sweep())
+      sweep_morph_statement(),       // a sweep whose cross-sections blend between control points
+      morph_visualizer_statement(),  // one of a sweep's cross-sections
   };
   return table;
 }

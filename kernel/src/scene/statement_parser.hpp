@@ -55,6 +55,8 @@ class StatementParser {
   // --- values and expressions
   Value literal_value();
   Value value();
+  // A value, or an expression in parentheses (JIPCAD's `azimuth ($p.a + 180)`).
+  Value grouped_value();
   // `( v v v )` with exactly `count` values.
   void value_tuple(Value* out, int count, const char* what);
 

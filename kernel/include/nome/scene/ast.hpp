@@ -96,6 +96,50 @@ struct SharpDecl {
   std::optional<Value> weight = std::nullopt;
 };
 
+// `controlpoint NAME point P [scale (sx sy sz)] [rotate (rx ry rz)] [crosssection C] [reverse]
+// endcontrolpoint`: point P, where a sweep shapes its cross-section (scale, tilt and turn in degrees, its
+// own cross-section, reversed order from here on). Faces and curves name it like a point.
+struct ControlPointDecl {
+  Name name;
+  Name point;
+  Value scale[3] = {{1, no_index, {}}, {1, no_index, {}}, {1, no_index, {}}};
+  Value rotate[3] = {};
+  bool has_scale = false, has_rotate = false;
+  std::optional<Name> cross_section;
+  bool is_reversing = false;
+};
+
+// `beziercurve NAME (p1 p2 ...) [segs N] endbeziercurve`, `bspline NAME [order K] (p1 p2 ...) [segs N]
+// [closed] endbspline`: a curve sampled into N segments over named points (or control points).
+struct CurveDecl {
+  Index kind = 0;  // row of statement_kinds()
+  Name name;
+  std::vector<Name> points;
+  std::optional<Value> order, segs;
+  bool is_closed = false;
+};
+
+// `sweep NAME crosssection C [reverse] [begincap] [endcap] endcrosssection path P [mintorsion]
+// [azimuth A] [twist T] [cutbegin] [cutend] endpath [brep TRIANGLES|QUADRILATERALS] endsweep`; a
+// `sweepmorph` has no crosssection block (its path's control points give them) but takes the flags.
+struct SweepDecl {
+  Index kind = 0;  // row of statement_kinds(): sweep or sweepmorph
+  Name name;
+  std::optional<Name> cross_section;
+  Name path;
+  bool is_reversed = false, has_begin_cap = false, has_end_cap = false;
+  bool is_minimal_torsion = false, is_cut_begin = false, is_cut_end = false, is_triangles = false;
+  std::optional<Value> azimuth, twist;
+};
+
+// `morphvisualizer NAME sweep S index (I) endmorphvisualizer`: the cross-section a sweep uses at its
+// I-th path sample, as a closed rim line in the plane z = 0.
+struct MorphVisualizerDecl {
+  Name name;
+  Name sweep;
+  Value index;
+};
+
 // `mesh NAME face ... endface ... [sharp ...] endmesh`
 struct MeshDecl {
   Name name;
@@ -177,6 +221,10 @@ struct SceneAst {
   std::vector<PolylineDecl> polylines;
   std::vector<ObjectDecl> objects;
   std::vector<GeneratorDecl> generators;
+  std::vector<ControlPointDecl> control_points;
+  std::vector<CurveDecl> curves;
+  std::vector<SweepDecl> sweeps;
+  std::vector<MorphVisualizerDecl> morph_visualizers;
   std::vector<MeshDecl> meshes;
   std::vector<GroupDecl> groups;
   std::vector<InstanceDecl> instances;  // top-level: the scene's roots

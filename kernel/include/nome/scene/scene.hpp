@@ -171,6 +171,8 @@ class Scene {
   void define_names(std::vector<Diagnostic>& errors);
   void build(std::vector<Diagnostic>& errors);
   Diagnostic located(SourceLocation at, std::string message) const;
+  // A warning found while evaluating (a sweep's inexact join), kept once however often it is evaluated.
+  void add_warning(SourceLocation at, std::string message) const;
 
   // instance_expansion.cpp: the placements of the instance tree, counted against the budget first.
   void expand_roots(std::vector<Diagnostic>& errors);
@@ -209,13 +211,14 @@ class Scene {
 
   SceneAst ast_;
   SceneOptions options_;
-  std::vector<Diagnostic> warnings_;
+  mutable std::vector<Diagnostic> warnings_;
   std::vector<Bank> banks_;
   std::vector<Parameter> parameters_;
   std::vector<double> values_;
   std::unordered_map<std::string, Index> parameter_ids_;
   std::unordered_map<std::string, Definition> definitions_;
   std::unordered_map<std::string, Index> points_;
+  std::unordered_map<std::string, Index> control_points_;  // share the points' names
   std::unordered_map<std::string, Index> surfaces_;
   std::vector<Placement> placements_;
   std::vector<SceneInstance> instances_;

@@ -17,6 +17,7 @@ class StatementParser;
 class SceneWriter;
 class DefinitionScope;
 class DefinitionContext;
+struct SampledCurve;
 
 // A definition as the names table sees it: its name and where the kind keeps it.
 struct DeclaredName {
@@ -47,6 +48,9 @@ struct StatementKind {
   // which must then be evaluated first. Null: the definition makes its own vertices.
   void (*vertex_lists)(const DefinitionScope& scope, Index decl,
                        std::vector<const std::vector<Name>*>& out) = nullptr;
+  // Curves only (polyline, circle, beziercurve, bspline): the points a sweep takes as its path or
+  // cross-section (scene/curves.hpp).
+  SampledCurve (*sample)(DefinitionContext& context, Index decl) = nullptr;
   // What follows `keyword NAME` in a smallest working definition, given points p0 p1 p2 p3 and a top-level
   // face pf (p0 p1 p2): the registry test round-trips it.
   std::string_view example = {};

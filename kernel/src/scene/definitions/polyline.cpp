@@ -1,5 +1,6 @@
 // `polyline NAME (v1 v2 ...) [isloop | closed] endpolyline`: a rim line over named vertices.
 #include "nome/scene/statement_kinds.hpp"
+#include "scene/curves.hpp"
 #include "scene/definition_context.hpp"
 #include "scene/scene_writer.hpp"
 #include "scene/statement_parser.hpp"
@@ -47,6 +48,17 @@ Piece evaluate(DefinitionContext& context, Index decl) {
   return std::move(context.piece());
 }
 
+// As a sweep's path or cross-section: its points (control points with their values), closed by
+// `isloop` or by ending on its first point.
+SampledCurve sample(DefinitionContext& context, Index decl) {
+  const PolylineDecl& line = context.ast().polylines[decl];
+  SampledCurve curve;
+  for (const Name& n : line.vertices) curve.points.push_back(curve_point(context, n));
+  curve.is_closed = line.is_loop;
+  if (!curve.is_closed) close_if_repeated(curve);
+  return curve;
+}
+
 void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
   out.push_back(&scope.ast().polylines[decl].vertices);
 }
@@ -61,6 +73,7 @@ StatementKind polyline_statement() {
           .declare = declare,
           .evaluate = evaluate,
           .vertex_lists = vertex_lists,
+          .sample = sample,
           .example = "(p0 p1 p2) isloop"};
 }
 

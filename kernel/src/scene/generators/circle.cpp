@@ -1,5 +1,9 @@
-// `circle NAME (n r) endcircle` (NOME 2.x): a closed rim line.
+// `circle NAME (n r) endcircle` (NOME 2.x; JIPCAD writes `(radius segs)`): a closed curve, drawn as a
+// rim line, that sweeps take as a path or a cross-section.
+#include <cmath>
+
 #include "nome/scene/generators/circle.hpp"
+#include "scene/curves.hpp"
 #include "scene/generators/generator_support.hpp"
 
 namespace nome::scene {
@@ -16,9 +20,24 @@ Piece circle(int n, double r) {
 
 namespace {
 
+bool is_count(double x) {
+  return x >= 3 && std::abs(x - std::round(x)) < 1e-9;
+}
+
+// The two orders meet in one statement: the argument that is a whole number of at least 3 is the
+// count (JIPCAD's `(0.7 20)`, NOME 2.x's `(20 1)`); when both are, the first is (NOME 2.x's order).
 Piece evaluate(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
-  return circle(c.whole(a[0], 3, "n"), c.positive(a[1], "r"));
+  const bool is_count_first = is_count(c.number(a[0])) || !is_count(c.number(a[1]));
+  const Value& count = a[is_count_first ? 0 : 1];
+  return circle(c.whole(count, 3, "n"), c.positive(a[is_count_first ? 1 : 0], "r"));
+}
+
+SampledCurve sample(DefinitionContext& c, Index decl) {
+  const Piece ring = evaluate(c, decl);
+  SampledCurve curve{{}, true};
+  for (const Vec3& p : ring.soup.positions) curve.points.push_back({p});
+  return curve;
 }
 
 }  // namespace
@@ -29,6 +48,7 @@ StatementKind circle_statement() {
                                 .signature = "(n r)",
                                 .argument_count = 2,
                                 .evaluate = evaluate,
+                                .sample = sample,
                                 .example = "(6 1.5)"});
 }
 

@@ -1,0 +1,278 @@
+// A cross-section swept along a sampled path: each sample's section placed in its frame, bands of faces
+// between consecutive sections, caps, and a closed path's join by position.
+#include "nome/scene/sweep.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "nome/error.hpp"
+#include "nome/scene/expression.hpp"
+#include "scene/sweep_geometry.hpp"
+
+namespace nome::scene {
+namespace {
+
+constexpr double degrees = std::numbers::pi / 180;
+
+// The samples' turn of the cross-section and whether its order is reversed there.
+struct SampleTurns {
+  std::vector<double> angle;  // radians, from N towards B
+  std::vector<unsigned char> is_reversed;
+};
+
+SampleTurns sample_turns(std::span<const PathSample> path, const SweepOptions& o, double holonomy) {
+  const std::size_t n = path.size();
+  // The twist reaches its full amount at the last sample, or back at the first on a closed path.
+  const double steps = double(o.is_path_closed ? n : n - 1);
+  SampleTurns turns{std::vector<double>(n + 1), std::vector<unsigned char>(n + 1)};
+  bool is_reversed = o.is_reversed;
+  bool is_turn_reversed = false;  // a control point's `reverse` turns the section the other way after it
+  for (std::size_t i = 0; i <= n; ++i) {
+    const bool is_virtual = i == n;  // a closed path's first sample, reached again
+    if (!is_virtual && path[i].is_reversing) {
+      is_reversed = !is_reversed;
+      is_turn_reversed = !is_turn_reversed;
+    }
+    const double sense = is_turn_reversed ? -1 : 1;
+    const double own = is_virtual ? path[0].rotate.z : path[i].rotate.z;
+    turns.angle[i] =
+        (sense * (o.azimuth + own + o.twist * double(i) / steps) - holonomy * double(i) / steps) * degrees;
+    turns.is_reversed[i] = is_reversed;
+  }
+  return turns;
+}
+
+// Where point j of the sample's cross-section lands, turned by the angle whose cosine and sine are c, s.
+Vec3 place(const CrossSection& section, std::size_t j, bool is_reversed, const PathSample& sample,
+           const Frame& frame, double c, double s, const Vec3& bend, double stretch) {
+  const std::size_t m = section.points.size();
+  const glm::dvec2 p = section.points[is_reversed ? m - 1 - j : j] * sample.scale;
+  Vec3 local(p.x * c - p.y * s, p.x * s + p.y * c, 0.0);
+  // A control point's tilt: about N by rx, then about B by ry.
+  if (sample.rotate.x != 0 || sample.rotate.y != 0) {
+    const double a = sample.rotate.x * degrees, b = sample.rotate.y * degrees;
+    local = Vec3(local.x, local.y * std::cos(a) - local.z * std::sin(a),
+                 local.y * std::sin(a) + local.z * std::cos(a));
+    local = Vec3(local.x * std::cos(b) + local.z * std::sin(b), local.y,
+                 -local.x * std::sin(b) + local.z * std::cos(b));
+  }
+  Vec3 q = local.x * frame.normal + local.y * frame.binormal + local.z * frame.tangent;
+  q += (stretch - 1) * glm::dot(q, bend) * bend;
+  return sample.position + q;
+}
+
+// The correspondence of a closed path's end to its start: `to[j]` is the start's point that the end's
+// point j meets, the one of all cyclic shifts and reversals (for an open section: identity and reversal)
+// that lies nearest. Returns the largest distance of a matched pair.
+double nearest_correspondence(std::span<const Vec3> end, std::span<const Vec3> start, bool is_closed,
+                              std::vector<Index>& to) {
+  const std::size_t m = end.size();
+  double best = 1e300, best_worst = 0;
+  const std::size_t shifts = is_closed ? m : 1;
+  std::vector<Index> candidate(m);
+  for (const bool is_mirrored : {false, true})
+    for (std::size_t k = 0; k < shifts; ++k) {
+      double sum = 0, worst = 0;
+      for (std::size_t j = 0; j < m; ++j) {
+        const std::size_t target =
+            is_closed ? (is_mirrored ? (k + m - j) % m : (k + j) % m) : (is_mirrored ? m - 1 - j : j);
+        candidate[j] = Index(target);
+        const double d = glm::length(end[j] - start[target]);
+        sum += d * d;
+        worst = std::max(worst, d);
+      }
+      if (sum < best) {
+        best = sum;
+        best_worst = worst;
+        to = candidate;
+      }
+    }
+  return best_worst;
+}
+
+// `kind` i `_` j `suffix`, written once (such names fit a string's own buffer: no allocation).
+std::string element_name(char kind, std::size_t i, std::size_t j, const char* suffix = "") {
+  char text[64];
+  char* end = text;
+  *end++ = kind;
+  end = std::to_chars(end, text + 30, i).ptr;
+  *end++ = '_';
+  end = std::to_chars(end, text + 60, j).ptr;
+  while (*suffix) *end++ = *suffix++;
+  return std::string(text, end);
+}
+
+void add_band_face(Piece& piece, const std::array<Index, 4>& quad, std::size_t i, std::size_t j,
+                   FaceShape shape) {
+  if (shape == FaceShape::quadrilaterals) {
+    piece.add_face(quad, element_name('f', i, j));
+    return;
+  }
+  piece.add_face(std::array<Index, 3>{quad[0], quad[1], quad[2]}, element_name('f', i, j, "a"));
+  piece.add_face(std::array<Index, 3>{quad[0], quad[2], quad[3]}, element_name('f', i, j, "b"));
+}
+
+void check_input(std::span<const PathSample> path, std::span<const CrossSection> sections,
+                 const SweepOptions& o) {
+  const std::size_t cut = std::size_t(o.is_cut_begin) + std::size_t(o.is_cut_end);
+  if (o.is_path_closed && cut > 0) throw InvalidInputError("sweep: cutbegin and cutend need an open path");
+  if (path.size() < (o.is_path_closed ? 3u : 2u + cut))
+    throw InvalidInputError("sweep: the path needs at least 2 drawn samples (3 when closed)");
+  if (sections.empty() || sections[0].points.empty())
+    throw InvalidInputError("sweep: an empty cross-section");
+  for (const PathSample& s : path) {
+    if (s.section >= sections.size()) throw InvalidInputError("sweep: a sample names no cross-section");
+    const CrossSection& c = sections[s.section];
+    if (c.points.size() != sections[0].points.size() || c.is_closed != sections[0].is_closed)
+      throw InvalidInputError(
+          "sweep: the cross-sections along a path must have the same number of points "
+          "and be all closed or all open");
+  }
+}
+
+// One sweep being made: the path's shape, frames and turns, and the piece the sections go into.
+class Sweeper {
+ public:
+  Sweeper(std::span<const PathSample> path, std::span<const CrossSection> sections, const SweepOptions& o)
+      : path_(path), sections_(sections), o_(o), n_(path.size()), m_(sections[0].points.size()) {
+    std::vector<Vec3> points(n_);
+    for (std::size_t i = 0; i < n_; ++i) points[i] = path[i].position;
+    shape_ = path_shape(points, o.is_path_closed);
+    frames_ = frames_of(points, shape_, o.is_path_closed, o.frames);
+    // Rotation-minimising frames come back turned once around a closed path: spread that turn along it.
+    double holonomy = 0;
+    if (o.is_path_closed)
+      holonomy = std::atan2(glm::dot(frames_[n_].normal, frames_[0].binormal),
+                            glm::dot(frames_[n_].normal, frames_[0].normal)) /
+                 degrees;
+    turns_ = sample_turns(path, o, holonomy);
+    first_ = o.is_cut_begin ? 1 : 0;
+    last_ = o.is_cut_end ? n_ - 2 : n_ - 1;
+    around_ = sections[0].is_closed ? m_ : m_ - 1;
+  }
+
+  Buffer<Vec3> positions() const {
+    Buffer<Vec3> out;
+    out.reserve((last_ - first_ + 1) * m_);
+    for (std::size_t i = first_; i <= last_; ++i) {
+      const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
+      for (std::size_t j = 0; j < m_; ++j) out.push_back(placed(i, j, c, s));
+    }
+    return out;
+  }
+
+  SweepResult run() {
+    reserve();
+    for (std::size_t i = first_; i <= last_; ++i) {
+      const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
+      for (std::size_t j = 0; j < m_; ++j)
+        result_.piece.add_vertex(placed(i, j, c, s), element_name('v', i, j));
+    }
+    if (m_ == 1) {
+      RimLine rim{"", {}, o_.is_path_closed};
+      for (std::size_t i = first_; i <= last_; ++i) rim.vertices.push_back(vertex(i, 0));
+      result_.piece.rims.push_back(std::move(rim));
+      return std::move(result_);
+    }
+    for (std::size_t i = first_; i < last_; ++i)
+      for (std::size_t j = 0; j < around_; ++j) {
+        const std::size_t k = (j + 1) % m_;
+        add_band_face(result_.piece, {vertex(i, j), vertex(i, k), vertex(i + 1, k), vertex(i + 1, j)}, i, j,
+                      o_.faces);
+      }
+    if (o_.is_path_closed)
+      join_ends();
+    else
+      add_caps();
+    return std::move(result_);
+  }
+
+ private:
+  Index vertex(std::size_t i, std::size_t j) const { return Index((i - first_) * m_ + j); }
+  // Point j of sample i's section; sample n is a closed path's first sample reached again.
+  Vec3 placed(std::size_t i, std::size_t j, double c, double s) const {
+    const std::size_t at = i % n_;
+    return place(sections_[path_[at].section], j, turns_.is_reversed[i], path_[at], frames_[i], c, s,
+                 shape_.bend[at], shape_.stretch[at]);
+  }
+
+  void reserve() {
+    PolygonSoup& soup = result_.piece.soup;
+    const std::size_t vertices = (last_ - first_ + 1) * m_;
+    const std::size_t per_quad = o_.faces == FaceShape::triangles ? 2 : 1;
+    const std::size_t faces = (last_ - first_ + 1) * around_ * per_quad + 2;
+    soup.positions.reserve(vertices);
+    soup.vertex_names.reserve(vertices);
+    soup.face_vertices.reserve(faces * 4);
+    soup.face_offsets.reserve(faces + 1);
+    soup.face_names.reserve(faces);
+    soup.face_colors.reserve(faces);
+    result_.piece.face_has_color.reserve(faces);
+  }
+
+  // The last band of a closed path, to the first section by position.
+  void join_ends() {
+    std::vector<Vec3> end(m_), start(m_);
+    for (std::size_t j = 0; j < m_; ++j) {
+      end[j] = placed(n_, j, std::cos(turns_.angle[n_]), std::sin(turns_.angle[n_]));
+      start[j] = result_.piece.soup.positions[vertex(0, j)];
+    }
+    std::vector<Index> to;
+    const double gap = nearest_correspondence(end, start, sections_[0].is_closed, to);
+    double size = 0;
+    for (const Vec3& p : start) size = std::max(size, glm::length(p - path_[0].position));
+    if (gap > 1e-6 * std::max(size, 1e-12))
+      result_.warnings.push_back("a twist of " + format_number(o_.twist) +
+                                 " degrees is no symmetry of the cross-section: the path's end is joined to "
+                                 "its start by the nearest match, points up to " +
+                                 format_number(std::round(gap * 1e6) / 1e6) + " apart");
+    for (std::size_t j = 0; j < around_; ++j) {
+      const std::size_t k = (j + 1) % m_;
+      add_band_face(result_.piece, {vertex(n_ - 1, j), vertex(n_ - 1, k), to[k], to[j]}, n_ - 1, j, o_.faces);
+    }
+  }
+
+  // Caps close a closed section; on an open one (JIPCAD's files cap those too) they span its ends.
+  void add_caps() {
+    if (m_ < 3) return;
+    std::vector<Index> cap(m_);
+    if (o_.has_begin_cap) {
+      for (std::size_t j = 0; j < m_; ++j) cap[j] = vertex(first_, m_ - 1 - j);
+      result_.piece.add_face(cap, "begincap");
+    }
+    if (o_.has_end_cap) {
+      for (std::size_t j = 0; j < m_; ++j) cap[j] = vertex(last_, j);
+      result_.piece.add_face(cap, "endcap");
+    }
+  }
+
+  std::span<const PathSample> path_;
+  std::span<const CrossSection> sections_;
+  const SweepOptions& o_;
+  std::size_t n_, m_, first_ = 0, last_ = 0, around_ = 0;
+  PathShape shape_;
+  std::vector<Frame> frames_;
+  SampleTurns turns_;
+  SweepResult result_;
+};
+
+}  // namespace
+
+SweepResult sweep(std::span<const PathSample> path, std::span<const CrossSection> sections,
+                  const SweepOptions& o) {
+  check_input(path, sections, o);
+  return Sweeper(path, sections, o).run();
+}
+
+Buffer<Vec3> sweep_positions(std::span<const PathSample> path, std::span<const CrossSection> sections,
+                             const SweepOptions& o) {
+  check_input(path, sections, o);
+  return Sweeper(path, sections, o).positions();
+}
+
+}  // namespace nome::scene
