@@ -28,7 +28,10 @@ void print_warnings(const std::vector<std::string>& warnings) {
 std::vector<OptionSpec> input_options() {
   std::vector<OptionSpec> options = {
       {"--set", "", "BANK_PARAM=VALUE", "override a slider of a scene (repeatable)", true},
-      {"--quads", "", "", "pair the triangles of .sif files into quads where convex and nearly planar"}};
+      {"--quads", "", "", "pair the triangles of .sif files into quads where convex and nearly planar"},
+      {"--dialect", "", "2016|jipcad",
+       "read scenes in this spelling (default: as their statements say; funnel and tunnel's arguments "
+       "differ)"}};
   for (OptionSpec& o : pipeline_option_specs()) options.push_back(std::move(o));
   return options;
 }
@@ -42,7 +45,8 @@ Stage stage_argument(const std::string& name) {
 Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
   InputFiles input = read_input_files(args);
-  const PipelineSettings settings = pipeline_settings(args, last);
+  PipelineSettings settings = pipeline_settings(args, last);
+  apply_scene_stages(input.scenes, args, settings);
   Pipeline pipeline;
   pipeline.set_input(std::move(input.geometry));
   try {

@@ -62,4 +62,15 @@ PipelineSettings pipeline_settings(const Arguments& args, Stage stage) {
   return s;
 }
 
+void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments& args,
+                        PipelineSettings& settings) {
+  for (const scene::Scene& s : scenes) {
+    const scene::StageSettings stages = s.stage_settings();
+    if (stages.subdivision_levels && !args.has("--subdiv"))
+      settings.subdivision_levels = std::max(settings.subdivision_levels, *stages.subdivision_levels);
+    if (stages.offset_distance && !args.has("--offset"))
+      settings.offset_distance = std::max(settings.offset_distance, *stages.offset_distance);
+  }
+}
+
 }  // namespace nome::cli

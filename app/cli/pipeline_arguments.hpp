@@ -4,6 +4,7 @@
 
 #include "cli/arguments.hpp"
 #include "nome/ops/pipeline_settings.hpp"
+#include "nome/scene/scene.hpp"
 
 namespace nome::cli {
 
@@ -12,5 +13,10 @@ std::vector<OptionSpec> pipeline_option_specs();
 
 // The options as the kernel's pipeline takes them, making `stage`; UsageError for values out of range.
 PipelineSettings pipeline_settings(const Arguments& args, Stage stage);
+
+// The scenes' stage blocks (`subdivision ... sd_level N`, `offset ... height H`) where the command line
+// gives no --subdiv or --offset of its own: the highest level and the largest distance of all scenes.
+void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments& args,
+                        PipelineSettings& settings);
 
 }  // namespace nome::cli

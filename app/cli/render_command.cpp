@@ -25,6 +25,20 @@ std::pair<double, double> parse_pair(const std::string& option, const std::strin
   return {a, b};
 }
 
+// The scenes' render statements where the command line says nothing: the first scene that has one wins.
+void apply_render_defaults(const std::vector<scene::Scene>& scenes, const Arguments& args,
+                           render::DisplaySettings& display) {
+  for (auto it = scenes.rbegin(); it != scenes.rend(); ++it) {
+    const scene::RenderDefaults d = it->render_defaults();
+    if (d.background && !args.has("--background")) display.background = glm::vec4(*d.background, 1.0f);
+    if (d.front_color && !args.has("--color")) display.front_color = *d.front_color;
+    if (d.back_color && !args.has("--backface-color")) {
+      display.back_faces = render::BackFacePolicy::different;
+      display.back_color = *d.back_color;
+    }
+  }
+}
+
 render::SnapshotOptions snapshot_options(const Arguments& args) {
   render::SnapshotOptions options;
   if (const auto size = args.value("--size")) {
@@ -101,7 +115,8 @@ int render_command(const std::vector<std::string>& args) {
       {"--transparent", "", "", "transparent background (PNG alpha)"},
       {"--backend", "", "egl|egl-device|osmesa",
        "force the offscreen GL backend (default: EGL surfaceless, else an EGL device, else OSMesa)"},
-      {"--verbose", "-v", "", "print the GL backend, vendor, renderer and timings"}};
+      {"--verbose", "-v", "", "print the GL backend, vendor, renderer and timings"},
+      {"--time", "", "T", "the scenes' $time (default 0)"}};
   for (OptionSpec& s : input_options()) specs.push_back(std::move(s));
   Arguments parsed("render",
                    "nome render FILE... -o OUT.png [--size WxH] [--view AZ,EL] [--wire] [--flat] "
@@ -119,7 +134,7 @@ int render_command(const std::vector<std::string>& args) {
   if (!out) throw UsageError("render needs -o OUT.png");
   if (std::filesystem::path(*out).extension() != ".png")
     throw UsageError("output must end in .png, found '" + *out + "'");
-  const render::SnapshotOptions options = snapshot_options(parsed);
+  render::SnapshotOptions options = snapshot_options(parsed);
   render::Backend backend = render::Backend::automatic;
   if (const auto name = parsed.value("--backend")) {
     try {
@@ -137,7 +152,9 @@ int render_command(const std::vector<std::string>& args) {
     return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
   };
   const auto start = Clock::now();
-  const Mesh mesh = load_input(parsed, stage);
+  std::vector<scene::Scene> scenes;
+  const Mesh mesh = load_input(parsed, stage, &scenes);
+  apply_render_defaults(scenes, parsed, options.display);
   const double load_ms = milliseconds(start);
   const auto context_start = Clock::now();
   const render::OffscreenContext context(backend);

@@ -14,12 +14,19 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
+// `jipcad (decided by 'list' in a bank at f.nom:3:3)`.
+std::string dialect_text(const scene::DialectChoice& d) {
+  const std::string name = d.dialect == scene::Dialect::jipcad ? "jipcad" : "2016";
+  return name + (d.cue.empty() ? " (the default: no statement decided)" : " (decided by " + d.cue + ")");
+}
+
 }  // namespace
 
 std::string scene_text(const scene::Scene& scene) {
   using scene::format_number;
   std::ostringstream out;
   out << "scene " << scene.file() << "\n";
+  out << "  dialect " << dialect_text(scene.dialect()) << "\n";
   for (const scene::Bank& bank : scene.banks()) {
     out << "  bank " << bank.name << "\n";
     for (Index id : bank.parameters) {
@@ -39,7 +46,8 @@ std::string scene_text(const scene::Scene& scene) {
 
 std::string scene_json(const scene::Scene& scene) {
   std::ostringstream out;
-  out << "{\"file\": " << quoted(scene.file()) << ", \"banks\": [";
+  out << "{\"file\": " << quoted(scene.file()) << ", \"dialect\": " << quoted(dialect_text(scene.dialect()))
+      << ", \"banks\": [";
   for (size_t b = 0; b < scene.banks().size(); ++b) {
     const scene::Bank& bank = scene.banks()[b];
     out << (b ? ", " : "") << "{\"name\": " << quoted(bank.name) << ", \"parameters\": [";

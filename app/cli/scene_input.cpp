@@ -38,8 +38,33 @@ void apply_overrides(std::vector<scene::Scene>& scenes, const std::vector<std::s
   }
 }
 
+namespace {
+
+scene::SceneOptions scene_options(const Arguments& args) {
+  scene::SceneOptions options{.force = args.has("--force")};
+  if (const auto dialect = args.value("--dialect")) {
+    if (*dialect == "2016")
+      options.dialect = scene::Dialect::report2016;
+    else if (*dialect == "jipcad")
+      options.dialect = scene::Dialect::jipcad;
+    else
+      throw UsageError("--dialect expects 2016 or jipcad, found '" + *dialect + "'");
+  }
+  return options;
+}
+
+// `--time T` (nome render): the scenes' $time.
+void apply_time(std::vector<scene::Scene>& scenes, const Arguments& args) {
+  if (!args.has("--time")) return;
+  const double time = args.double_value("--time", 0.0);
+  for (scene::Scene& s : scenes) s.set_clock(scene::time_parameter, time);
+}
+
+}  // namespace
+
 InputFiles read_input_files(const Arguments& args) {
   InputFiles input;
+  const scene::SceneOptions options = scene_options(args);
   std::vector<std::pair<std::string, PolygonSoup>> flat;  // flat geometry, in argument order after the scenes
   for (const std::string& file : args.positionals()) {
     std::string ext = std::filesystem::path(file).extension().string();
@@ -47,7 +72,7 @@ InputFiles read_input_files(const Arguments& args) {
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (is_scene_file(file)) {
       try {
-        input.scenes.push_back(read_scene(file, {.force = args.has("--force")}));
+        input.scenes.push_back(read_scene(file, options));
       } catch (const BudgetError& e) {
         throw BudgetError(std::string(e.what()) + "; use --force to expand it anyway");
       }
@@ -64,6 +89,7 @@ InputFiles read_input_files(const Arguments& args) {
   for (const scene::Scene& s : input.scenes)
     for (const scene::Diagnostic& w : s.warnings()) std::cerr << "nome: " << w.to_string() << "\n";
   apply_overrides(input.scenes, args.values("--set"));
+  apply_time(input.scenes, args);
   auto add_part = [&](const PolygonSoup& soup, const std::string& file) {
     append_soup(input.geometry.soup, soup);
     input.geometry.parts.push_back({file, soup.num_faces()});

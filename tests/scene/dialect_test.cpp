@@ -179,3 +179,18 @@ TEST_CASE("$time and $frame are built-in parameters, 0 until set", "[scene]") {
   CHECK(s.combined_soup().positions[0] == Vec3(2.5, 3, 0));
   CHECK_THROWS_AS(s.set_clock("clock", 1), InvalidInputError);
 }
+
+TEST_CASE("the successor's tuples hold bare expressions; a sign after a space starts the next value",
+          "[scene]") {
+  const Scene s = Scene::from_text(
+      "bank b set h 2 0 4 1 endbank\n"
+      "point p (1/2 -1 2*$b.h) endpoint\npoint q (1 - 1, {expr $b.h} * 2, -(1)) endpoint\n"
+      "point r (-1*{expr $b_h} sqrt(4) b.h) endpoint\nface f (p q r) endface\ninstance i f endinstance\n",
+      "t.nom");
+  const auto& positions = s.combined_soup().positions;
+  REQUIRE(positions.size() == 3);
+  CHECK(positions[0] == Vec3(0.5, -1, 4));
+  CHECK(positions[1] == Vec3(0, 4, -1));
+  CHECK(positions[2] == Vec3(-2, 2, 2));
+  CHECK(s.ast().points[0].xyz[1].expr == no_index);  // a plain number stays a literal
+}

@@ -23,16 +23,63 @@ struct DepthGuard {
 
 Value StatementParser::value() {
   const Token start = peek();
-  if (start.is_symbol("{")) {
+  if (start.is_symbol("{") && !is_operator_next()) {
     take();
     if (peek().is_word("expr")) take();
     const ExprId e = expression();
     expect_symbol("}");
+    if (peek().is_symbol(",")) take();
     return {0, e, start.location};
   }
-  if (start.kind == TokenKind::parameter) return {0, primary(), start.location};
-  if (start.kind == TokenKind::number || start.is_symbol("-") || start.is_symbol("+")) return literal_value();
-  fail(start, "a number or '{expr ...}'");
+  const bool can_start = start.kind == TokenKind::number || start.kind == TokenKind::parameter ||
+                         start.is_symbol("-") || start.is_symbol("+") || start.is_symbol("(") ||
+                         start.is_symbol("{") || (start.kind == TokenKind::word && peek(1).is_symbol("(")) ||
+                         start.is_word("pi") ||
+                         (start.kind == TokenKind::word && start.text.find('.') != std::string::npos);
+  if (!can_start) fail(start, "a number or '{expr ...}'");
+  // The successor writes bare expressions in tuples: `(1/2 -sqrt(2) 2*$s.h)`. A sign with a space
+  // before it and none after starts the next value (`(1 -1 1)` is three values); commas may separate.
+  is_bare_value_ = true;
+  ExprId e = no_index;
+  try {
+    e = expression();
+  } catch (const SyntaxError&) {
+    is_bare_value_ = false;
+    throw;
+  }
+  is_bare_value_ = false;
+  if (peek().is_symbol(",")) take();
+  const ExprNode& n = ast_->expressions.node(e);
+  if (n.op == ExprOp::number) return {n.number, no_index, start.location};
+  if (n.op == ExprOp::negate && ast_->expressions.node(n.args[0]).op == ExprOp::number)
+    return {-ast_->expressions.node(n.args[0]).number, no_index, start.location};
+  return {0, e, start.location};
+}
+
+// After a `{expr ...}` group that starts a value: does an operator follow it (`{expr $a} * 2`)?
+bool StatementParser::is_operator_next() const {
+  int depth = 0;
+  for (size_t i = pos_; i < tokens_.size(); ++i) {
+    if (tokens_[i].is_symbol("{")) ++depth;
+    if (tokens_[i].is_symbol("}") && --depth == 0) {
+      const Token& next = tokens_[std::min(i + 1, tokens_.size() - 1)];
+      return next.is_symbol("*") || next.is_symbol("/") || next.is_symbol("^") || next.is_symbol("%") ||
+             ((next.is_symbol("+") || next.is_symbol("-")) && !is_value_separator(i + 1));
+    }
+    if (tokens_[i].kind == TokenKind::end) return false;
+  }
+  return false;
+}
+
+// A `+` or `-` at `at` with a space before it and none after: a sign starting the next bare value.
+bool StatementParser::is_value_separator(size_t at) const {
+  if (at == 0 || at + 1 >= tokens_.size()) return false;
+  const Token &before = tokens_[at - 1], &sign = tokens_[at], &after = tokens_[at + 1];
+  const int before_end =
+      before.location.column + int(before.text.size()) + (before.kind == TokenKind::parameter ? 1 : 0);
+  return before.location.line != sign.location.line || before_end < sign.location.column
+             ? after.location.line == sign.location.line && after.location.column == sign.location.column + 1
+             : false;
 }
 
 Value StatementParser::grouped_value() {
@@ -81,7 +128,7 @@ ExprId StatementParser::expression() {
 
 ExprId StatementParser::additive() {
   ExprId left = term();
-  while (peek().is_symbol("+") || peek().is_symbol("-")) {
+  while ((peek().is_symbol("+") || peek().is_symbol("-")) && !(is_bare_value_ && is_value_separator(pos_))) {
     const Token t = take();
     left = node(t.text == "+" ? ExprOp::add : ExprOp::subtract, t.location, left, term());
   }
@@ -136,10 +183,15 @@ ExprId StatementParser::primary() {
     ast_->expressions.node(id).parameter_name = normalize_name(t.text);
     return id;
   }
-  if (t.is_symbol("(")) {
+  if (t.is_symbol("(") || t.is_symbol("{")) {
+    // Inside parentheses (and a `{expr ...}` within a bare value) signs are operators again.
+    const bool was_bare = is_bare_value_;
+    is_bare_value_ = false;
     take();
+    if (t.is_symbol("{") && peek().is_word("expr")) take();
     const ExprId inner = expression();
-    expect_symbol(")");
+    expect_symbol(t.is_symbol("(") ? ")" : "}");
+    is_bare_value_ = was_bare;
     return inner;
   }
   if (t.is_word("pi")) {

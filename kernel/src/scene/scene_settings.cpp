@@ -101,13 +101,15 @@ void Scene::check_settings(std::vector<Diagnostic>& errors) {
                     "offset_type '" + stage.type->text + "' is not supported yet (NOME_OFFSET_DEFAULT is)"));
     }
   }
-  if (stage_settings().has_sharp_weights)
-    warnings_.push_back(
-        {Severity::warning,
-         file(),
-         {1, 1},
-         "sharpness weights are read and kept, but every sharp edge is infinitely sharp until "
-         "weights are graded"});
+  // One warning per file, at its first weight.
+  for (const MeshDecl& m : ast_.meshes)
+    for (const SharpDecl& sharp : m.sharps)
+      if (sharp.weight) {
+        warnings_.push_back({Severity::warning, file(), sharp.weight->location,
+                             "sharpness weights are read and kept, but every sharp edge is infinitely sharp "
+                             "until weights are graded"});
+        return;
+      }
 }
 
 }  // namespace nome::scene

@@ -128,7 +128,10 @@ void StatementParser::value_tuple(Value* out, int count, const char* what) {
 std::vector<Name> StatementParser::name_list(const char* what) {
   expect_symbol("(");
   std::vector<Name> names;
-  while (!peek().is_symbol(")")) names.push_back(take_name(what));
+  while (!peek().is_symbol(")")) {
+    names.push_back(take_name(what));
+    if (peek().is_symbol(",")) take();  // arts_expo__cross.nom separates with commas
+  }
   take();
   return names;
 }

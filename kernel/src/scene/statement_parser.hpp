@@ -97,6 +97,8 @@ class StatementParser {
   ExprId unary();
   ExprId primary();
   ExprId call(const Token& name);
+  bool is_operator_next() const;
+  bool is_value_separator(size_t at) const;
 
   Diagnostics& diagnostics_;
   std::vector<Token> tokens_;
@@ -108,6 +110,7 @@ class StatementParser {
   SceneAst* ast_ = &own_ast_;          // an included file's parser writes into the including one's
   std::vector<int> expression_depth_;  // height of each expression node's subtree
   int parse_depth_ = 0;                // expression grammar levels being parsed
+  bool is_bare_value_ = false;         // parsing a value written without `{expr ...}`
 };
 
 bool is_top_level_keyword(const Token& t);

@@ -34,16 +34,21 @@ void parse(StatementParser& parser, Index kind) {
   const Token opener = parser.take();
   MeshDecl m;
   m.name = parser.take_name("a mesh name");
-  const BlockContext inner{{"face", "sharp"}, end};
+  const BlockContext inner{{"face", "sharp", "point"}, end};
   while (!parser.block_closed(opener, end, inner)) {
     const size_t start = parser.position();
     try {
-      if (parser.peek().is_word("face"))
+      if (parser.peek().is_word("face")) {
         m.faces.push_back(parser.face_statement());
-      else if (parser.peek().is_word("sharp"))
+      } else if (parser.peek().is_word("sharp")) {
         sharp(parser, m.sharps);
-      else
-        parser.fail(parser.peek(), "'face', 'sharp' or 'endmesh'");
+      } else if (parser.peek().is_word("point")) {
+        // The successor's meshes may define their points inside (kleinbottle.nom): names stay global.
+        const Index point = *find_statement_kind("point");
+        statement_kinds()[point].parse(parser, point);
+      } else {
+        parser.fail(parser.peek(), "'face', 'sharp', 'point' or 'endmesh'");
+      }
     } catch (const SyntaxError&) {
       parser.resynchronise(inner, start);
     }

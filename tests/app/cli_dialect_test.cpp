@@ -1,0 +1,44 @@
+// The successor's files through the command line: stage blocks set the pipeline unless the options do,
+// the dialect is printed with its cue, and --dialect overrides it.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+#include "app/cli_support.hpp"
+#include "support/shared_examples.hpp"
+
+using nome::test::run_nome;
+
+TEST_CASE("hello_cube: --merge makes one closed sphere, its subdivision block two levels", "[app]") {
+  NOME_NEEDS_SHARED_EXAMPLES("jipcad");
+  const std::string cube = nome::test::shared_examples_dir("jipcad") + "intro_files__hello_cube.nom";
+  const auto r = run_nome("info " + cube + " --merge --json");
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("\"faces\": 96, \"chi\": 2, \"orientable\": true, \"borders\": 0"));
+  CHECK_THAT(r.out, Catch::Contains("\"dialect\": \"jipcad (decided by 'list' in a bank at "));
+  const auto coarse = run_nome("info " + cube + " --merge --subdiv 0 --json");
+  CHECK_THAT(coarse.out, Catch::Contains("\"vertices\": 8, \"edges\": 12, \"faces\": 6, \"chi\": 2"));
+  const auto slider = run_nome("info " + cube + " --merge --set sub_level_level=1 --json");
+  CHECK_THAT(slider.out, Catch::Contains("\"faces\": 24, \"chi\": 2"));
+}
+
+TEST_CASE("--dialect overrides what the statements say, for every command that reads files", "[app]") {
+  const std::string dir = nome::test::scratch_dir("dialect");
+  const std::string file = dir + "/funnel.nome";
+  std::ofstream(file) << "funnel f (1 0.5 2 6) endfunnel\ninstance i f endinstance\n";
+  const auto as_2016 = run_nome("info " + file);
+  CHECK(as_2016.status == 1);  // n = 1: not a funnel in the 2016 order
+  CHECK_THAT(as_2016.err, Catch::Contains("funnel.nome:1:11: n must be a whole number"));
+  const auto jip = run_nome("info " + file + " --dialect jipcad");
+  CHECK(jip.status == 0);
+  CHECK_THAT(jip.out, Catch::Contains("dialect jipcad (decided by --dialect)"));
+  CHECK_THAT(jip.out, Catch::Contains("instance i: 12 vertices, 6 faces"));
+  const auto exported = run_nome("export " + file + " --dialect jipcad -o " + dir + "/out.nome");
+  CHECK(exported.status == 0);
+  const auto again = run_nome("info " + dir + "/out.nome");
+  CHECK(again.status == 0);
+  CHECK_THAT(again.out, Catch::Contains("dialect jipcad (decided by the line '# nome-dialect: jipcad'"));
+  const auto bad = run_nome("info " + file + " --dialect nome3");
+  CHECK(bad.status == 2);
+  CHECK_THAT(bad.err, Catch::Contains("--dialect expects 2016 or jipcad, found 'nome3'"));
+}
