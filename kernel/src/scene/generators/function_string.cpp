@@ -1,6 +1,7 @@
 #include "scene/generators/function_string.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -10,6 +11,8 @@
 
 namespace nome::scene {
 namespace {
+
+constexpr size_t max_call_arguments = 16;
 
 struct FunctionInfo {
   const char* name;
@@ -242,6 +245,7 @@ class Reader {
     const auto* f = std::find_if(std::begin(functions), std::end(functions),
                                  [&](const FunctionInfo& fi) { return fi.name == word; });
     if (f == std::end(functions)) fail_at(start, "a known function");
+    if (args.size() > max_call_arguments) fail_at(start, "at most 16 arguments");
     const int n = int(args.size());
     if (n < f->min_args || (f->max_args != 0 && n > f->max_args))
       fail_at(start, std::string(f->name) + " with " + std::to_string(f->min_args) + " argument" +
@@ -315,9 +319,10 @@ double FunctionString::evaluate(int id, std::span<const double> values) const {
     case Op::condition:
       return arg(0) != 0 ? arg(1) : arg(2);
     case Op::call: {
-      std::vector<double> a;
-      for (size_t k = 0; k < n.args.size(); ++k) a.push_back(arg(k));
-      return functions[n.function].apply(a);
+      // No allocation: an implicit surface calls this a million times.
+      std::array<double, max_call_arguments> a{};
+      for (size_t k = 0; k < n.args.size(); ++k) a[k] = arg(k);
+      return functions[n.function].apply(std::span<const double>(a.data(), n.args.size()));
     }
   }
   return std::nan("");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace nome::scene {
 namespace {
@@ -40,7 +41,7 @@ GridVertices add_surface_grid(Piece& piece, const SurfaceGrid& g,
       const auto [fi, fj] = fold(i, j);
       ids[slot(i, j)] = ids[slot(fi, fj)];
     }
-  const GridVertices grid(g.across, ids);
+  GridVertices grid(g.across, std::move(ids));
   for (int j = 0; j < g.along; ++j)
     for (int i = 0; i < g.across; ++i) {
       std::vector<Index> face{grid(i, j), grid(i + 1, j), grid(i + 1, j + 1), grid(i, j + 1)};
