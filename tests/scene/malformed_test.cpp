@@ -69,8 +69,6 @@ TEST_CASE("malformed scenes: each error says where and what was expected", "[sce
        "t.nome:2:8: duplicate name 'a' (first defined at 1:8)"},
       {"funnel fun (4 1 0 1) endfunnel\ninstance i fn endinstance\n",
        "t.nome:2:12: unknown name 'fn' to instantiate (did you mean fun?)"},
-      {"funnel fun (4 1 0 1) endfunnel\ninstance i fun endinstance\ninstance i fun endinstance\n",
-       "t.nome:3:10: duplicate instance name 'i' (first at 2:10)"},
       {"funnel fun ({expr $p_n} 1 0 1) endfunnel\n", "t.nome:1:19: unknown parameter '$p_n'"},
       {"bank p set n 4 3 10 1 endbank funnel fun ({expr $p_m} 1 0 1) endfunnel\n",
        "t.nome:1:49: unknown parameter '$p_m' (did you mean p_n?)"},
@@ -169,4 +167,16 @@ TEST_CASE("a file of garbage lists its first 20 errors, not one per byte", "[sce
   REQUIRE(errors.size() == 21);
   CHECK(errors[19] == "t.nome:1:20: unexpected character code 1");
   CHECK(errors[20] == "t.nome:1:21: more errors follow from here; fix those above first");
+}
+
+TEST_CASE("a repeated instance name is drawn under a name of its own, with a warning", "[scene]") {
+  const nome::scene::Scene s = nome::scene::Scene::from_text(
+      "funnel fun (4 1 0 1) endfunnel\ninstance i fun endinstance\ninstance i fun translate (0 0 1) "
+      "endinstance\ninstance i_2 fun endinstance\n",
+      "t.nome");
+  REQUIRE(s.instances().size() == 3);
+  CHECK(s.instances()[1].name == "i_3");
+  REQUIRE(s.warnings().size() == 1);
+  CHECK(s.warnings()[0].to_string() ==
+        "t.nome:3:10: warning: instance name 'i' repeated (first at 2:10): this one is named 'i_3'");
 }

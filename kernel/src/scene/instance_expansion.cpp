@@ -33,15 +33,8 @@ void Scene::expand_roots(std::vector<Diagnostic>& errors) {
   // The whole tree is counted before any of it is expanded, so that refusing it costs nothing.
   const std::vector<double> group_sizes = group_expansion_sizes();
   double placements = 0;
-  std::unordered_map<std::string, SourceLocation> seen;
   for (Index i = 0; i < ast_.instances.size(); ++i) {
     const InstanceDecl& decl = ast_.instances[i];
-    if (const auto s = seen.find(decl.name.text); s != seen.end()) {
-      errors.push_back(located(decl.name.location, "duplicate instance name '" + decl.name.text +
-                                                       "' (first at " + location_text(s->second) + ")"));
-      continue;
-    }
-    seen[decl.name.text] = decl.name.location;
     const auto target = definitions_.find(decl.target.text);
     placements += 1;
     if (target != definitions_.end() && is_group(target->second))

@@ -26,6 +26,8 @@ glm::dmat4 transform_matrix(const TransformDecl& t, const double* a) {
     case TransformKind::scale:
       return glm::scale(glm::dmat4(1.0), v);
     case TransformKind::rotate:
+      // A turn by no angle is the identity whatever its axis (arts_expo__cross.nom writes (0 0 0) (0)).
+      if (a[3] == 0) return glm::dmat4(1.0);
       if (glm::length(v) == 0) throw EvaluationError(t.location, "rotate needs a non-zero axis");
       return glm::rotate(glm::dmat4(1.0), a[3] * std::numbers::pi / 180, glm::normalize(v));
     case TransformKind::mirror:

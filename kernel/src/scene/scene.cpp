@@ -106,9 +106,15 @@ void Scene::define_names(std::vector<Diagnostic>& errors) {
   const auto define = [&](auto& table, const Name& name, auto value,
                           std::unordered_map<std::string, SourceLocation>& at) {
     if (const auto it = at.find(name.text); it != at.end()) {
-      errors.push_back(located(name.location, "duplicate name '" + name.text + "' (first defined at " +
-                                                  location_text(it->second) + ")"));
-      return;
+      const std::string first = location_text(it->second);
+      if (ast_.dialect.dialect != Dialect::jipcad) {
+        errors.push_back(
+            located(name.location, "duplicate name '" + name.text + "' (first defined at " + first + ")"));
+        return;
+      }
+      // JIPCAD reads its statements in order, a later definition replacing the earlier one.
+      add_warning(name.location, "'" + name.text + "' is defined again (first at " + first +
+                                     "): this definition is used everywhere");
     }
     at[name.text] = name.location;
     table[name.text] = value;
@@ -136,13 +142,26 @@ void Scene::define_names(std::vector<Diagnostic>& errors) {
     errors.push_back(located(definition_at[consolidated_mesh_name],
                              std::string("'") + consolidated_mesh_name + "' is a reserved name"));
   definitions_[consolidated_mesh_name] = {consolidated_kind, 0};
-  for (const GroupDecl& g : ast_.groups) {
-    std::unordered_map<std::string, SourceLocation> seen;
-    for (const InstanceDecl& i : g.instances)
-      if (const auto [it, is_fresh] = seen.emplace(i.name.text, i.name.location); !is_fresh)
-        errors.push_back(located(i.name.location, "duplicate instance name '" + i.name.text + "' in group '" +
-                                                      g.name.text + "' (first at " +
-                                                      location_text(it->second) + ")"));
+  rename_repeated_instances(ast_.instances);
+  for (GroupDecl& g : ast_.groups) rename_repeated_instances(g.instances);
+}
+
+// Files written with JIPCAD repeat instance names in one group, and JIPCAD draws every one; here names
+// are paths to vertices, so each repeat gets a name of its own (`bc` again becomes `bc_2`), with a warning.
+void Scene::rename_repeated_instances(std::vector<InstanceDecl>& instances) {
+  std::unordered_map<std::string, SourceLocation> seen;
+  for (const InstanceDecl& i : instances) seen.emplace(i.name.text, i.name.location);
+  std::unordered_map<std::string, SourceLocation> first;
+  for (InstanceDecl& i : instances) {
+    const auto [it, is_fresh] = first.emplace(i.name.text, i.name.location);
+    if (is_fresh) continue;
+    std::string renamed;
+    for (int k = 2; renamed.empty() || seen.count(renamed); ++k)
+      renamed = i.name.text + "_" + std::to_string(k);
+    add_warning(i.name.location, "instance name '" + i.name.text + "' repeated (first at " +
+                                     location_text(it->second) + "): this one is named '" + renamed + "'");
+    seen.emplace(renamed, i.name.location);
+    i.name.text = renamed;
   }
 }
 

@@ -56,6 +56,12 @@ void StatementParser::expect_symbol(const char* symbol) {
 }
 
 Name StatementParser::take_name(const char* what) {
+  if (peek().kind == TokenKind::parameter) {
+    // geom__trefoil.nom names its torus knot `$trefoil` and instantiates it as `trefoil`.
+    const Token t = take();
+    diagnostics_.warning(t.location, "a definition's name takes no '$': read as '" + t.text + "'");
+    return {normalize_name(t.text), t.location};
+  }
   if (peek().kind != TokenKind::word) fail(peek(), what);
   const Token t = take();
   return {normalize_name(t.text), t.location};

@@ -169,6 +169,7 @@ class Scene {
   double current(const Value& v) const;
   void check_settings(std::vector<Diagnostic>& errors);
   void define_names(std::vector<Diagnostic>& errors);
+  void rename_repeated_instances(std::vector<InstanceDecl>& instances);
   void build(std::vector<Diagnostic>& errors);
   Diagnostic located(SourceLocation at, std::string message) const;
   // A warning found while evaluating (a sweep's inexact join), kept once however often it is evaluated.
