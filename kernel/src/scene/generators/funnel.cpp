@@ -7,8 +7,8 @@ namespace nome::scene {
 Piece funnel(const FunnelParams& p) {
   require(p.n >= 3, "funnel: n must be at least 3");
   Piece piece;
-  const Index base = ring(piece, p.n, p.ro, 0, "bc");
-  const Index high = ring(piece, p.n, p.ro * (1 + p.ratio), p.h, "hc");
+  const Index base = ring(piece, p.n, p.ro, 0, p.base_names);
+  const Index high = ring(piece, p.n, p.ro * (1 + p.ratio), p.h, p.high_names);
   band(piece, p.n, base, high, "f");
   return piece;
 }
@@ -19,7 +19,8 @@ namespace {
 Piece evaluate(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   if (c.ast().dialect.dialect == Dialect::jipcad)
-    return funnel({c.whole(a[3], 3, "segs"), c.positive(a[0], "radius"), c.ratio(a[1]), c.number(a[2])});
+    return funnel(
+        {c.whole(a[3], 3, "segs"), c.positive(a[0], "radius"), c.ratio(a[1]), c.number(a[2]), "v1_", "v2_"});
   return funnel({c.whole(a[0], 3, "n"), c.positive(a[1], "ro"), c.ratio(a[2]), c.number(a[3])});
 }
 
