@@ -40,7 +40,7 @@ void measure(const nome::render::Renderer& renderer, const nome::Mesh& mesh, boo
   camera.set_view(30, 25);
   camera.fit(mesh.positions(), double(width) / height);
   DisplaySettings settings;
-  settings.show_wireframe = wire;
+  settings.draws_wireframe = wire;
   std::vector<double> frames;
   for (int i = 0; i < 12; ++i) {
     camera.set_view(30 + 3 * i, 25);

@@ -25,8 +25,8 @@ std::vector<OptionSpec> pipeline_option_specs() {
 namespace {
 
 void read_merge(const Arguments& args, PipelineSettings& s) {
-  s.merge = args.has("--merge");
-  if (!s.merge) {
+  s.should_merge = args.has("--merge");
+  if (!s.should_merge) {
     if (args.has("--tolerance")) throw UsageError("--tolerance applies with --merge only");
     return;
   }

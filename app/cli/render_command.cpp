@@ -73,10 +73,10 @@ render::SnapshotOptions snapshot_options(const Arguments& args) {
     throw UsageError("--fit frames the whole scene: it cannot be combined with --target or --distance");
   options.views = render::views_around(view, args.int_value("--views", 1, 1, 16));
   render::DisplaySettings& display = options.display;
-  display.show_wireframe = args.has("--wire");
+  display.draws_wireframe = args.has("--wire");
   display.shading = args.has("--flat") ? render::Shading::flat : render::Shading::smooth;
-  display.show_mobius_edges = args.has("--mobius-edges");
-  display.show_borders = args.has("--borders");
+  display.draws_mobius_edges = args.has("--mobius-edges");
+  display.draws_borders = args.has("--borders");
   if (const auto back = args.value("--backface-color")) {
     if (*back == "same")
       display.back_faces = render::BackFacePolicy::same;

@@ -15,11 +15,11 @@ enum class Shading { smooth, flat };
 struct DisplaySettings {
   Shading shading = Shading::smooth;
   BackFacePolicy back_faces = BackFacePolicy::different;
-  bool show_faces = true;
-  bool show_wireframe = false;
-  bool show_mobius_edges = false;
-  bool show_borders = false;
-  bool use_face_colors = true;
+  bool draws_faces = true;
+  bool draws_wireframe = false;
+  bool draws_mobius_edges = false;
+  bool draws_borders = false;
+  bool uses_face_colors = true;
 
   glm::vec3 front_color{0.80f, 0.62f, 0.25f};  // warm gold
   glm::vec3 back_color{0.25f, 0.45f, 0.80f};   // blue: the other side

@@ -65,7 +65,7 @@ void Renderer::begin(const Frame& frame, const glm::vec4& background) const {
 
 void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const DisplaySettings& settings) const {
   glViewport(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
-  if (settings.show_faces && mesh.triangle_index_count() > 0) {
+  if (settings.draws_faces && mesh.triangle_index_count() > 0) {
     const ShaderProgram& p = programs_->mesh();
     p.use();
     p.set("model_view", frame.view);
@@ -75,7 +75,7 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     p.set("back_color", settings.back_color);
     p.set("selection_color", settings.selection_color);
     p.set("different_back_color", settings.back_faces == BackFacePolicy::different ? 1 : 0);
-    p.set("use_face_colors", settings.use_face_colors ? 1 : 0);
+    p.set("uses_face_colors", settings.uses_face_colors ? 1 : 0);
     p.set("opacity", 1.0f);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_BUFFER, mesh.face_color_texture());
@@ -97,12 +97,12 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
   }
-  if (settings.show_wireframe)
+  if (settings.draws_wireframe)
     draw_segments(mesh.edge_vao(), mesh.all_edges(), frame, settings.wire_color, settings.wire_width);
-  if (settings.show_borders)
+  if (settings.draws_borders)
     draw_segments(mesh.edge_vao(), mesh.border_edges(), frame, settings.border_color,
                   settings.highlight_width);
-  if (settings.show_mobius_edges)
+  if (settings.draws_mobius_edges)
     draw_segments(mesh.edge_vao(), mesh.mobius_edges(), frame, settings.mobius_color,
                   settings.highlight_width);
   glBindVertexArray(0);

@@ -32,7 +32,7 @@ void draw_stage_section(const ActionRegistry& actions, PipelineSettings& setting
   if (ImGui::InputFloat("tolerance", &tolerance, 0.0f, 0.0f, "%.5f", ImGuiInputTextFlags_EnterReturnsTrue))
     settings.merge_tolerance = std::max(0.0f, tolerance);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: a thousandth of the scene's size");
-  ImGui::Checkbox("subdivide the merged mesh", &settings.merge);
+  ImGui::Checkbox("subdivide the merged mesh", &settings.should_merge);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("off: the scene's pieces are subdivided each on its own");
   ImGui::SetNextItemWidth(120);
   ImGui::SliderInt("subdivision", &settings.subdivision_levels, 0, 6);

@@ -33,11 +33,11 @@ std::optional<std::filesystem::path> draw_file_menu(const ActionRegistry& action
 
 void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& display,
                     PanelVisibility& panels) {
-  bool is_wire = display.show_wireframe;
-  if (ImGui::MenuItem("Faces", shortcut(Action::toggle_faces).c_str(), &display.show_faces) &&
-      !display.show_faces)
-    display.show_wireframe = true;
-  if (ImGui::MenuItem("Wireframe overlay", nullptr, &is_wire)) display.show_wireframe = is_wire;
+  bool is_wire = display.draws_wireframe;
+  if (ImGui::MenuItem("Faces", shortcut(Action::toggle_faces).c_str(), &display.draws_faces) &&
+      !display.draws_faces)
+    display.draws_wireframe = true;
+  if (ImGui::MenuItem("Wireframe overlay", nullptr, &is_wire)) display.draws_wireframe = is_wire;
   bool is_flat = display.shading == render::Shading::flat;
   if (ImGui::MenuItem("Flat shading", shortcut(Action::toggle_shading).c_str(), &is_flat))
     display.shading = is_flat ? render::Shading::flat : render::Shading::smooth;
@@ -47,9 +47,9 @@ void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& disp
   bool is_back_colored = display.back_faces == render::BackFacePolicy::different;
   if (ImGui::MenuItem("Back faces in their own colour", nullptr, &is_back_colored))
     display.back_faces = is_back_colored ? render::BackFacePolicy::different : render::BackFacePolicy::same;
-  ImGui::MenuItem("Möbius edges", nullptr, &display.show_mobius_edges);
-  ImGui::MenuItem("Borders", nullptr, &display.show_borders);
-  ImGui::MenuItem("Instance colours", nullptr, &display.use_face_colors);
+  ImGui::MenuItem("Möbius edges", nullptr, &display.draws_mobius_edges);
+  ImGui::MenuItem("Borders", nullptr, &display.draws_borders);
+  ImGui::MenuItem("Instance colours", nullptr, &display.uses_face_colors);
   ImGui::Separator();
   action_item(actions, "Frame all", Action::frame_all);
   action_item(actions, "Reset view", Action::reset_view);

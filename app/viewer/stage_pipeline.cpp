@@ -9,7 +9,7 @@ namespace nome::viewer {
 PipelineSettings initial_settings() {
   PipelineSettings s;
   s.stage = Stage::scene;
-  s.merge = true;
+  s.should_merge = true;
   s.subdivision_levels = 2;
   s.offset_distance = 0.05;
   s.subdivision_after = 1;

@@ -125,11 +125,39 @@ void Window::open(const std::filesystem::path& path) {
   if (!sessions_.open(path)) return;
   selection_.clear();
   stage_.clear();
+  apply_file_defaults();
   update_stage();
   // The first picture of a file waits for its geometry, so that it can be framed.
   while (stage_.is_busy() && !stage_.shown()) update_stage();
   set_view(ViewController::default_azimuth, ViewController::default_elevation);
   platform_.set_title("Nome - " + path.filename().string());
+}
+
+void Window::apply_file_defaults() {
+  const render::DisplaySettings plain;
+  display_.background = plain.background;
+  display_.front_color = plain.front_color;
+  display_.back_color = plain.back_color;
+  const scene::Scene* scene = sessions_.scene();
+  if (!scene) return;
+  const scene::RenderDefaults colors = scene->render_defaults();
+  if (colors.background) display_.background = glm::vec4(*colors.background, 1.0f);
+  if (colors.front_color) display_.front_color = *colors.front_color;
+  if (colors.back_color) {
+    display_.back_faces = render::BackFacePolicy::different;
+    display_.back_color = *colors.back_color;
+  }
+  // A file that asks for subdivision or an offset is shown with them, as JIPCAD shows it.
+  const scene::StageSettings stages = scene->stage_settings();
+  PipelineSettings& settings = stage_.settings();
+  if (stages.subdivision_levels) {
+    settings.subdivision_levels = *stages.subdivision_levels;
+    if (settings.stage < Stage::subdivided) settings.stage = Stage::subdivided;
+  }
+  if (stages.offset_distance) {
+    settings.offset_distance = *stages.offset_distance;
+    if (settings.stage < Stage::offset) settings.stage = Stage::offset;
+  }
 }
 
 void Window::request_quit() {

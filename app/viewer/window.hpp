@@ -53,6 +53,8 @@ class Window : private ScriptHost {
 
   // Opens a file; on error logs it and keeps the current one.
   void open(const std::filesystem::path& path);
+  // The file's stage blocks and render statements as the control panel's and the view's starting point.
+  void apply_file_defaults();
   // Opens a file the user chose: asks about unsaved changes first; an .anom file applies instead.
   void request_open(const std::filesystem::path& path);
   // Files dropped on the window (GLFW's drop callback and the script's `drop`): the last scene or mesh

@@ -56,8 +56,8 @@ void Window::bind_actions() {
   actions_.bind(Action::zoom_in, always([this] { view_.zoom(1.0 / 1.25); }));
   actions_.bind(Action::zoom_out, always([this] { view_.zoom(1.25); }));
   actions_.bind(Action::toggle_faces, always([this] {
-                  display_.show_faces = !display_.show_faces;
-                  display_.show_wireframe = !display_.show_faces || display_.show_wireframe;
+                  display_.draws_faces = !display_.draws_faces;
+                  display_.draws_wireframe = !display_.draws_faces || display_.draws_wireframe;
                 }));
   actions_.bind(Action::toggle_shading, always([this] {
                   const bool is_smooth = display_.shading == render::Shading::smooth;

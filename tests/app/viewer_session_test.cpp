@@ -234,3 +234,18 @@ TEST_CASE("an .anom file given after its scene, or dropped on it, applies to the
   CHECK(alone.status == 2);
   CHECK_THAT(alone.err, Catch::Contains("give the .nome file before it"));
 }
+
+TEST_CASE("the viewer opens a file at the stage its subdivision block asks for", "[app]") {
+  NOME_NEEDS_SHARED_EXAMPLES("jipcad");
+  const std::string dir = nome::test::private_scratch_dir("viewer_stage_block");
+  const std::string script = write_script(dir, "export " + dir + "/shown.obj\nquit\n");
+  const auto r = run_window(nome::test::shared_examples_dir("jipcad") +
+                            "intro_files__hello_cube.nom --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  // JIPCAD's hello cube: six faces merged into a cube, its block's level 2.
+  const TopologyReport shown = topology_report(build_mesh(read_polygons(dir + "/shown.obj")));
+  CHECK(shown.faces == 96);
+  CHECK(shown.borders == 0);
+  CHECK(shown.chi == 2);
+}

@@ -59,7 +59,7 @@ TEST_CASE("back-face policies: own colour, same colour, culled", "[render]") {
 
 TEST_CASE("the wireframe draws the polygon's edges, not its triangulation's diagonal", "[render]") {
   render::SnapshotOptions options = looking_from(0, 0);
-  options.display.show_wireframe = true;
+  options.display.draws_wireframe = true;
   options.display.shading = render::Shading::flat;
   const render::Image image = test::render_small(build_mesh(test::grid(1, 1)), options);
   // The fan's diagonal would cross the centre; the quad's four edges cross the middle row twice.

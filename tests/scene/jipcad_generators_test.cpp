@@ -218,7 +218,7 @@ TEST_CASE("a parametric Möbius band, u over a full turn, becomes one-sided afte
   pipeline.set_input(PipelineInput{s.combined_soup(), {}, Joining::manifold});
   PipelineSettings settings;
   settings.stage = Stage::merged;
-  settings.merge = true;
+  settings.should_merge = true;
   const TopologyReport merged = topology_report(pipeline.run(settings));
   CHECK(merged.components.size() == 1);
   CHECK_FALSE(merged.orientable);
@@ -234,7 +234,7 @@ TEST_CASE("param_surf__genParametricSurfExample.nom's Dupin cyclide closes after
   pipeline.set_input(PipelineInput{s.combined_soup(), {}, Joining::manifold});
   PipelineSettings settings;
   settings.stage = Stage::merged;
-  settings.merge = true;
+  settings.should_merge = true;
   const TopologyReport merged = topology_report(pipeline.run(settings));
   CHECK(merged.borders == 0);
   CHECK(merged.chi == 0);

@@ -13,7 +13,7 @@ namespace {
 PipelineSettings solid_settings() {
   PipelineSettings s;
   s.stage = Stage::subdivided_offset;
-  s.merge = true;
+  s.should_merge = true;
   s.subdivision_levels = 2;
   s.offset_distance = 0.03;
   s.subdivision_after = 1;

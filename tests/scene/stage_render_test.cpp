@@ -90,7 +90,7 @@ TEST_CASE("JIPCAD's hello_cube merges into one closed sphere and its block subdi
   const StageSettings stages = s.stage_settings();
   REQUIRE(stages.subdivision_levels == 2);
   PipelineSettings settings;
-  settings.merge = true;
+  settings.should_merge = true;
   settings.subdivision_levels = *stages.subdivision_levels;
   Pipeline pipeline;
   pipeline.set_input(PipelineInput{s.combined_soup()});

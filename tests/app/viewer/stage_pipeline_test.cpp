@@ -40,12 +40,12 @@ TEST_CASE("the later stages start from the merged mesh, or from the scene's piec
   settings.subdivision_levels = 1;
   // Merged: one 4 x 2 grid of quads; apart: two 2 x 2 grids.
   CHECK(shown(pipeline, soup, settings).num_vertices() == 15);
-  settings.merge = false;
+  settings.should_merge = false;
   const Mesh apart = shown(pipeline, soup, settings);
   CHECK(apart.num_vertices() == 18);
   CHECK(apart.num_components() == 2);
 
-  settings.merge = true;
+  settings.should_merge = true;
   settings.stage = Stage::offset;
   const TopologyReport solid = topology_report(shown(pipeline, soup, settings));
   CHECK(solid.borders == 0);

@@ -99,8 +99,8 @@ TEST_CASE("the window takes clicks, drags, the wheel and keys as input frames", 
   }
   SECTION("keys run the actions of the table; Ctrl+Q without changes closes") {
     press_key(viewer, GLFW_KEY_W);
-    CHECK_FALSE(window.display().show_faces);
-    CHECK(window.display().show_wireframe);
+    CHECK_FALSE(window.display().draws_faces);
+    CHECK(window.display().draws_wireframe);
     press_key(viewer, GLFW_KEY_SLASH, KeyModifier::shift);
     CHECK(window.panels().is_help_shown);
     press_key(viewer, GLFW_KEY_Z, KeyModifier::control);

@@ -140,7 +140,7 @@ TEST_CASE("the pipeline's result is the stage asked for, also after a later stag
   PipelineSettings s = full_options();
   const Index solid_faces = pipeline.run(s).num_faces();
   s.stage = Stage::merged;
-  s.merge = true;
+  s.should_merge = true;
   const Index merged_faces = pipeline.run(s).num_faces();
   CHECK(merged_faces == 24);
   CHECK(solid_faces > merged_faces);

@@ -11,7 +11,7 @@ namespace nome {
 // command line fills it from its options, the viewer from its control panel.
 struct PipelineSettings {
   Stage stage = Stage::subdivided_offset;  // the last stage made; the ones after it are skipped
-  bool merge = false;                      // the stages after `merged` start from the merged mesh
+  bool should_merge = false;               // the stages after `merged` start from the merged mesh
   double merge_tolerance = 0.0;            // 0: relative to the size of the scene (MergeOptions)
   int subdivision_levels = 0;              // Catmull-Clark levels before the offset
   SubdivisionRule rule = SubdivisionRule::classic;
@@ -24,7 +24,7 @@ struct PipelineSettings {
   bool operator==(const PipelineSettings&) const = default;
 
   // What the stage asked for uses: a stage after it is off (no levels, no distance, no merge).
-  bool is_merging() const { return stage == Stage::merged || (stage > Stage::merged && merge); }
+  bool is_merging() const { return stage == Stage::merged || (stage > Stage::merged && should_merge); }
   int levels_before() const { return stage >= Stage::subdivided ? subdivision_levels : 0; }
   double distance() const { return stage >= Stage::offset ? offset_distance : 0.0; }
   int levels_after() const { return stage == Stage::subdivided_offset ? subdivision_after : 0; }
