@@ -22,7 +22,8 @@ TEST_CASE("hello_cube: --merge makes one closed sphere, its subdivision block tw
   CHECK_THAT(slider.out, Catch::Contains("\"faces\": 24, \"chi\": 2"));
 }
 
-TEST_CASE("--dialect overrides what the statements say, for every command that reads files", "[app]") {
+TEST_CASE("the --dialect option overrides what the statements say, for every command that reads files",
+          "[app]") {
   const std::string dir = nome::test::scratch_dir("dialect");
   const std::string file = dir + "/funnel.nome";
   std::ofstream(file) << "funnel f (1 0.5 2 6) endfunnel\ninstance i f endinstance\n";

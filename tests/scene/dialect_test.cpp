@@ -180,7 +180,7 @@ TEST_CASE("$time and $frame are built-in parameters, 0 until set", "[scene]") {
   CHECK_THROWS_AS(s.set_clock("clock", 1), InvalidInputError);
 }
 
-TEST_CASE("the successor's tuples hold bare expressions; a sign after a space starts the next value",
+TEST_CASE("the successor's tuples hold bare expressions, a sign after a space starts the next value",
           "[scene]") {
   const Scene s = Scene::from_text(
       "bank b set h 2 0 4 1 endbank\n"

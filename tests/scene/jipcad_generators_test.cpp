@@ -58,7 +58,7 @@ TEST_CASE("an ellipsoid is closed with chi 2 and its own polar radius", "[scene]
         Approx(2 * std::cos(-0.6283185307179586 * 0.5)).epsilon(1e-9));
 }
 
-TEST_CASE("a capped cylinder is closed with chi 2; without caps it is an annulus", "[scene]") {
+TEST_CASE("a capped cylinder is closed with chi 2, without caps it is an annulus", "[scene]") {
   CHECK(is_closed_surface(topology(one_generator("cylinder", "(1 2 360 8 botcap topcap)")), 2));
   const TopologyReport open = topology(one_generator("cylinder", "(1 2 360 8)"));
   CHECK(open.chi == 0);
@@ -77,14 +77,14 @@ TEST_CASE("the wedge of a cylinder with caps, as arts_expo__blooming_flower.nom 
   CHECK(test::vertex_position(s, "i_top").z == Approx(0.1));
 }
 
-TEST_CASE("a cone to its apex with a base is closed; a truncated one with both caps too", "[scene]") {
+TEST_CASE("a cone to its apex with a base is closed, a truncated one with both caps too", "[scene]") {
   const Scene s = one_generator("cone", "(1 3 1 360 7 botcap)");
   CHECK(is_closed_surface(topology(s), 2));
   CHECK(test::vertex_position(s, "i_apex").z == Approx(3));
   CHECK(is_closed_surface(topology(one_generator("cone", "(1 3 0.5 360 7 botcap topcap)")), 2));
 }
 
-TEST_CASE("a whole disk is one disk; a wedge too", "[scene]") {
+TEST_CASE("a whole disk is one disk, a wedge too", "[scene]") {
   for (const char* arguments : {"(1 360 9)", "(1 90 3)"}) {
     const TopologyReport r = topology(one_generator("disk", arguments));
     CHECK(r.chi == 1);
@@ -92,7 +92,7 @@ TEST_CASE("a whole disk is one disk; a wedge too", "[scene]") {
   }
 }
 
-TEST_CASE("a full torus is closed with chi 0; a half torus has two borders", "[scene]") {
+TEST_CASE("a full torus is closed with chi 0, a half torus has two borders", "[scene]") {
   CHECK(is_closed_surface(topology(one_generator("torus", "(12 4 360 0 360 12 12)")), 0));
   // intro_files__hw1.nom's half torus.
   const TopologyReport half = topology(one_generator("torus", "(5 0.2 180 0 360 60 5)"));
@@ -310,7 +310,7 @@ TEST_CASE("hyperboloids: one sheet an annulus, a paraboloid a disk, two sheets t
   CHECK(test::vertex_position(two, "i_bottom_apex").z == Approx(-2));
 }
 
-TEST_CASE("a whole Dupin cyclide is closed with chi 0; a quarter is a disk", "[scene]") {
+TEST_CASE("a whole Dupin cyclide is closed with chi 0, a quarter is a disk", "[scene]") {
   // The ring cyclide of param_surf__genParametricSurfExample.nom, as a generator: b^2 = a^2 - c^2.
   CHECK(is_closed_surface(topology(one_generator("dupin", "(1 0.98 0.2 0.5 2 2 24)")), 0));
   const TopologyReport quarter = topology(one_generator("dupin", "(1 0.98 0.2 0.5 1 1 8)"));

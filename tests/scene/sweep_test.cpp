@@ -162,7 +162,7 @@ TEST_CASE("sweep core: caps face away from the path, triangles on request, cut e
   CHECK(topology(triangles.soup).chi == 2);
 }
 
-TEST_CASE("rotation-minimising frames do not turn about a helix's tangent; Frenet frames do", "[scene]") {
+TEST_CASE("rotation-minimising frames do not turn about a helix's tangent, Frenet frames do", "[scene]") {
   std::vector<Vec3> helix;
   for (int i = 0; i <= 200; ++i) {
     const double a = 0.05 * i;
@@ -215,7 +215,7 @@ TEST_CASE("curves: a B-spline that repeats its first points is closed, a Bézier
   CHECK(rim.soup.positions[5] == Vec3(0, 2, 0));
 }
 
-TEST_CASE("a sweep follows its points' sliders; control points scale and turn its cross-section", "[scene]") {
+TEST_CASE("a sweep follows its points' sliders, control points scale and turn its cross-section", "[scene]") {
   const std::string text =
       "bank b set h 3 1 10 0.5 set w 2 0.5 4 0.1 endbank\n" + std::string(square_points) +
       "point a (0 0 0) endpoint\npoint m (0 0 {expr $b_h / 2}) endpoint\npoint c (0 0 {expr $b_h}) endpoint\n"
@@ -234,7 +234,7 @@ TEST_CASE("a sweep follows its points' sliders; control points scale and turn it
   CHECK(test::vertex_position(s, "i_v1_0").z == Approx(2.5));
 }
 
-TEST_CASE("sweepmorph blends the control points' cross-sections; morphvisualizer shows one", "[scene]") {
+TEST_CASE("sweepmorph blends the control points' cross-sections, morphvisualizer shows one", "[scene]") {
   const std::string text = std::string(square_points) +
                            "point t1 (1 0 0) endpoint\npoint t2 (0 1 0) endpoint\npoint t3 (-1 0 0) "
                            "endpoint\npoint t4 (0 -1 0) endpoint\n"
