@@ -92,9 +92,7 @@ render::SnapshotOptions snapshot_options(const Arguments& args) {
   return options;
 }
 
-}  // namespace
-
-int render_command(const std::vector<std::string>& args) {
+std::vector<OptionSpec> render_options() {
   std::vector<OptionSpec> specs = {
       {"--output", "-o", "OUT", "the PNG to write"},
       {"--size", "", "WxH", "picture size in pixels (default 1024x768)"},
@@ -118,10 +116,26 @@ int render_command(const std::vector<std::string>& args) {
       {"--verbose", "-v", "", "print the GL backend, vendor, renderer and timings"},
       {"--time", "", "T", "the scenes' $time (default 0)"}};
   for (OptionSpec& s : input_options()) specs.push_back(std::move(s));
+  return specs;
+}
+
+render::Backend backend_argument(const Arguments& parsed) {
+  const auto name = parsed.value("--backend");
+  if (!name) return render::Backend::automatic;
+  try {
+    return render::parse_backend(*name);
+  } catch (const InvalidInputError& e) {
+    throw UsageError(std::string("--backend: ") + e.what());
+  }
+}
+
+}  // namespace
+
+int render_command(const std::vector<std::string>& args) {
   Arguments parsed("render",
                    "nome render FILE... -o OUT.png [--size WxH] [--view AZ,EL] [--wire] [--flat] "
                    "[--backend egl|egl-device|osmesa] [pipeline options]",
-                   specs);
+                   render_options());
   parsed.parse(args);
   if (parsed.has("--help")) {
     std::cout
@@ -135,14 +149,7 @@ int render_command(const std::vector<std::string>& args) {
   if (std::filesystem::path(*out).extension() != ".png")
     throw UsageError("output must end in .png, found '" + *out + "'");
   render::SnapshotOptions options = snapshot_options(parsed);
-  render::Backend backend = render::Backend::automatic;
-  if (const auto name = parsed.value("--backend")) {
-    try {
-      backend = render::parse_backend(*name);
-    } catch (const InvalidInputError& e) {
-      throw UsageError(std::string("--backend: ") + e.what());
-    }
-  }
+  const render::Backend backend = backend_argument(parsed);
   const Stage stage =
       parsed.has("--stage") ? stage_argument(*parsed.value("--stage")) : Stage::subdivided_offset;
   const bool verbose = parsed.has("--verbose");
