@@ -8,6 +8,8 @@
 #include "support/shared_examples.hpp"
 
 using namespace nome;
+using nome::test::count_pixels;
+using nome::test::write_script;
 
 // The window's pictures in this process: the GL backend on a headless context (EGL, else OSMesa)
 // draws the scene as the real window does, without the panels.
@@ -15,27 +17,9 @@ namespace {
 
 const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
 
-std::string write_script(const std::string& dir, const std::string& text) {
-  const std::string path = dir + "/script.txt";
-  std::ofstream(path) << text;
-  return path;
-}
-
 nome::test::CommandResult run_gl_window(const std::string& arguments) {
   return nome::test::run_window(arguments, nome::test::TestViewer::private_stores(),
                                 nome::test::TestRenderer::gl);
-}
-
-// How many pixels of the picture are close to the colour (each channel within the tolerance).
-int count_pixels(const render::Image& image, int r, int g, int b, int tolerance) {
-  int n = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const auto* p = image.pixel(x, y);
-      n += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
-           std::abs(p[2] - b) <= tolerance;
-    }
-  return n;
 }
 
 }  // namespace

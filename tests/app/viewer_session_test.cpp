@@ -13,17 +13,12 @@
 
 using namespace nome;
 using nome::test::run_window;
+using nome::test::write_script;
 
 // The viewer's sessions in this process, on the null renderer: scripts, picks, edits, saves and prompts.
 namespace {
 
 const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
-
-std::string write_script(const std::string& dir, const std::string& text) {
-  const std::string path = dir + "/script.txt";
-  std::ofstream(path) << text;
-  return path;
-}
 
 // The viewer names the vertices of a flat file as its lines do: v1, v2, ...
 std::string obj_vertex(Index v) {

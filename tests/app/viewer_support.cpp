@@ -1,5 +1,7 @@
 #include "app/viewer_support.hpp"
 
+#include <fstream>
+
 #include <sstream>
 
 #include <imgui.h>
@@ -157,6 +159,23 @@ std::optional<glm::dvec2> click_position(const Mesh& mesh, const ScreenProjectio
     if (pick_vertex(mesh, bvh, projection, click, 8.0) == v) return click;
   }
   return std::nullopt;
+}
+
+std::string write_script(const std::string& dir, const std::string& text) {
+  const std::string path = dir + "/script.txt";
+  std::ofstream(path) << text;
+  return path;
+}
+
+int count_pixels(const render::Image& image, int r, int g, int b, int tolerance) {
+  int n = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      n += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
+           std::abs(p[2] - b) <= tolerance;
+    }
+  return n;
 }
 
 }  // namespace nome::test

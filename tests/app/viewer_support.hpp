@@ -1,5 +1,7 @@
 #pragma once
 
+#include "render/image.hpp"
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,6 +33,11 @@ constexpr int viewer_height = 800;
 
 // Runs `nome ARGUMENTS` on a fresh virtual display (xvfb-run), as a user's session would run.
 CommandResult run_viewer(const std::string& arguments);
+
+// Writes a viewer script into `dir` and returns its path.
+std::string write_script(const std::string& dir, const std::string& text);
+// How many pixels of the picture are close to the colour (each channel within the tolerance).
+int count_pixels(const render::Image& image, int r, int g, int b, int tolerance);
 
 // A fixed-size window whose clock moves a sixtieth of a second a frame.
 class TestPlatform final : public viewer::Platform {

@@ -10,18 +10,14 @@
 #include "render/image.hpp"
 
 using namespace nome;
+using nome::test::count_pixels;
 using nome::test::run_viewer;
+using nome::test::write_script;
 
 // The real window, end to end: the `nome` binary under Xvfb (GLFW, ImGui's GL backend, the swap).
 namespace {
 
 const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
-
-std::string write_script(const std::string& dir, const std::string& text) {
-  const std::string path = dir + "/script.txt";
-  std::ofstream(path) << text;
-  return path;
-}
 
 // The viewer names the vertices of a flat file as its lines do: v1, v2, ...
 std::string obj_vertex(Index v) {
@@ -30,18 +26,6 @@ std::string obj_vertex(Index v) {
 
 std::string click_line(glm::dvec2 p) {
   return "click " + std::to_string(int(p.x)) + " " + std::to_string(int(p.y)) + "\n";
-}
-
-// How many pixels of the picture are close to the colour (each channel within the tolerance).
-int count_pixels(const render::Image& image, int r, int g, int b, int tolerance) {
-  int n = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const auto* p = image.pixel(x, y);
-      n += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
-           std::abs(p[2] - b) <= tolerance;
-    }
-  return n;
 }
 
 }  // namespace
