@@ -90,12 +90,13 @@ InputFiles read_input_files(const Arguments& args) {
     for (const scene::Diagnostic& w : s.warnings()) std::cerr << "nome: " << w.to_string() << "\n";
   apply_overrides(input.scenes, args.values("--set"));
   apply_time(input.scenes, args);
-  auto add_part = [&](const PolygonSoup& soup, const std::string& file) {
+  // A scene's pieces may meet at a point (JIPCAD's examples do); a flat file's polygons must be a manifold.
+  auto add_part = [&](const PolygonSoup& soup, const std::string& file, bool is_scene) {
     append_soup(input.geometry.soup, soup);
-    input.geometry.parts.push_back({file, soup.num_faces()});
+    input.geometry.parts.push_back({file, soup.num_faces(), is_scene});
   };
-  for (const scene::Scene& s : input.scenes) add_part(s.combined_soup(), s.file());
-  for (const auto& [file, soup] : flat) add_part(soup, file);
+  for (const scene::Scene& s : input.scenes) add_part(s.combined_soup(), s.file(), true);
+  for (const auto& [file, soup] : flat) add_part(soup, file, false);
   return input;
 }
 

@@ -7,7 +7,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
+
+#include "cli/commands.hpp"
 
 namespace nome::test {
 
@@ -22,6 +25,23 @@ std::string scratch_dir(const std::string& name) {
 
 std::string private_scratch_dir(const std::string& name) {
   return scratch_dir(name + "_" + std::to_string(::getpid()));
+}
+
+CommandResult run_nome_in_process(const std::vector<std::string>& arguments) {
+  std::vector<std::string> words{"nome"};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  std::ostringstream out, err;
+  std::streambuf* const cout_buffer = std::cout.rdbuf(out.rdbuf());
+  std::streambuf* const cerr_buffer = std::cerr.rdbuf(err.rdbuf());
+  CommandResult r;
+  r.status = nome::cli::run(int(argv.size()), argv.data());
+  std::cout.rdbuf(cout_buffer);
+  std::cerr.rdbuf(cerr_buffer);
+  r.out = out.str();
+  r.err = err.str();
+  return r;
 }
 
 CommandResult run_nome(const std::string& arguments) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace nome::test {
 
@@ -14,6 +15,10 @@ struct CommandResult {
 CommandResult run_nome(const std::string& arguments);
 // The same, with a command word list put before the executable (`xvfb-run -a`, `env X=1`).
 CommandResult run_nome_prefixed(const std::string& prefix, const std::string& arguments);
+
+// The same command run inside the test process (nome::cli::run with std::cout and std::cerr captured): no
+// process start, for tests that run many files; a crash takes the test binary down with it.
+CommandResult run_nome_in_process(const std::vector<std::string>& arguments);
 
 // A fresh scratch folder for one test's files.
 std::string scratch_dir(const std::string& name);

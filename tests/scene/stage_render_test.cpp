@@ -93,7 +93,7 @@ TEST_CASE("JIPCAD's hello_cube merges into one closed sphere and its block subdi
   settings.should_merge = true;
   settings.subdivision_levels = *stages.subdivision_levels;
   Pipeline pipeline;
-  pipeline.set_input(PipelineInput{s.combined_soup()});
+  pipeline.set_input(PipelineInput{s.combined_soup(), {}, {}});
   settings.stage = Stage::merged;
   const TopologyReport merged = topology_report(pipeline.run(settings));
   CHECK(merged.components.size() == 1);

@@ -1,6 +1,7 @@
 #include "ops/scene_stage.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "nome/error.hpp"
 #include "nome/mesh/glue_faces.hpp"
@@ -29,16 +30,15 @@ PolygonSoup part_of(const PolygonSoup& soup, Index first, Index count) {
 
 // build_mesh on the whole input; a topology error names the part at fault, with element numbers of that
 // part alone: the parts are built one by one (only on this error path) to find it.
-Mesh build_naming_the_part(PipelineInput& input) {
-  PolygonSoup whole = input.soup;
+Mesh build_naming_the_part(const PipelineInput& input) {
   try {
-    return build_mesh(std::move(input.soup));
+    return build_mesh(PolygonSoup(input.soup));
   } catch (const TopologyError&) {
     if (input.parts.empty()) throw;
     Index first = 0;
     for (const InputPart& part : input.parts) {
       try {
-        build_mesh(part_of(whole, first, part.faces));
+        build_mesh(part_of(input.soup, first, part.faces));
       } catch (const TopologyError& in_part) {
         throw TopologyError(part.name + ": " + in_part.what());
       }
@@ -46,6 +46,48 @@ Mesh build_naming_the_part(PipelineInput& input) {
     }
     throw;
   }
+}
+
+// The input joined across edges, when its only faults are vertices where faces of parts that may touch
+// meet at a point; nothing otherwise (the caller then reports build_mesh's error). Adds one warning
+// naming the vertices split.
+std::optional<GluedFaces> split_touching_vertices(const PipelineInput& input,
+                                                  std::vector<std::string>& warnings) {
+  const PolygonSoup& soup = input.soup;
+  std::vector<bool> is_fixed(soup.num_vertices(), false);  // used by a part that may not touch
+  Index first = 0;
+  for (const InputPart& part : input.parts) {
+    if (!part.may_touch_at_vertices)
+      for (Index c = soup.face_offsets[first]; c < soup.face_offsets[first + part.faces]; ++c)
+        is_fixed[soup.face_vertices[c]] = true;
+    first += part.faces;
+  }
+  if (input.parts.empty() || std::find(is_fixed.begin(), is_fixed.end(), false) == is_fixed.end())
+    return std::nullopt;
+  GluedFaces glued;
+  try {
+    glued = glue_faces(soup);
+  } catch (const TopologyError&) {
+    return std::nullopt;  // faces that are no polygons: build_mesh's error says which
+  }
+  if (!glued.problems.empty()) return std::nullopt;
+  std::vector<Index> copies(soup.num_vertices(), 0);
+  for (Index source : glued.vertex_sources) ++copies[source];
+  std::vector<std::string> names;
+  for (Index v = 0; v < copies.size(); ++v) {
+    if (copies[v] < 2) continue;
+    if (is_fixed[v]) return std::nullopt;
+    names.push_back(v < soup.vertex_names.size() && !soup.vertex_names[v].empty() ? soup.vertex_names[v]
+                                                                                  : "v" + std::to_string(v));
+  }
+  constexpr size_t names_shown = 8;
+  std::string list;
+  for (size_t i = 0; i < names.size() && i < names_shown; ++i) list += (i ? ", " : "") + names[i];
+  if (names.size() > names_shown) list += " and " + std::to_string(names.size() - names_shown) + " more";
+  warnings.push_back("faces meet at " + std::to_string(names.size()) +
+                     " vertices without sharing an edge there (" + list +
+                     "): each is split, one vertex per fan of faces");
+  return glued;
 }
 
 }  // namespace
@@ -68,7 +110,6 @@ InputChange SceneStage::update(PipelineInput input) {
       for (Index v = 0; v < positions.size(); ++v) positions[v] = soup.positions[vertex_sources_[v]];
     }
     mesh_.face_colors() = std::move(soup.face_colors);
-    problems_.clear();
     work_ = StageWork::positions;
     return InputChange::positions;
   }
@@ -95,8 +136,15 @@ void SceneStage::rebuild(PipelineInput input) {
     vertex_sources_ = std::move(glued.vertex_sources);
     problems_ = std::move(glued.problems);
   } else {
-    mesh_ = build_naming_the_part(input);
-    vertex_sources_.clear();
+    try {
+      mesh_ = build_naming_the_part(input);
+      vertex_sources_.clear();
+    } catch (const TopologyError&) {
+      std::optional<GluedFaces> split = split_touching_vertices(input, problems_);
+      if (!split) throw;
+      mesh_ = std::move(split->mesh);
+      vertex_sources_ = std::move(split->vertex_sources);
+    }
   }
   has_mesh_ = true;
   work_ = StageWork::rebuilt;

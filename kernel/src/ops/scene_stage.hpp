@@ -23,7 +23,8 @@ class SceneStage {
   const Mesh& mesh() const { return mesh_; }
   Mesh& mesh() { return mesh_; }
   StageWork work() const { return work_; }
-  // Edges that joined no faces (three or more faces on them; across_edges joining only), when rebuilt.
+  // What the joining left apart: edges of three or more faces (across_edges joining), vertices split
+  // where faces only touch (parts that may touch at vertices).
   const std::vector<std::string>& problems() const { return problems_; }
 
  private:

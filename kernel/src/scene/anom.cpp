@@ -43,7 +43,7 @@ void Scene::apply_anom(std::string_view text, const std::string& file) {
       next.consolidated_.push_back(std::move(face));
     }
   }
-  next.vertex_suffixes_.clear();
+  next.is_vertex_index_current_ = false;
   next.build(errors);
   if (!errors.empty()) throw SceneError(std::move(errors));
   *this = std::move(next);

@@ -16,21 +16,24 @@ bool is_same_topology(const PolygonSoup& a, const PolygonSoup& b) {
 // deleted; returns whether any appended face carries its own colour.
 bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::string>& deleted) {
   const PolygonSoup& s = piece.soup;
+  std::vector<unsigned char> is_deleted(s.num_faces(), 0);
+  if (!deleted.empty())
+    for (Index f = 0; f < s.num_faces(); ++f) is_deleted[f] = deleted.count(s.face_names[f]) ? 1 : 0;
   std::vector<unsigned char> is_used(s.num_vertices(), 0), is_kept(s.num_vertices(), 0);
   for (Index f = 0; f < s.num_faces(); ++f) {
-    const bool keep = !deleted.count(s.face_names[f]);
     for (Index c = s.face_offsets[f]; c < s.face_offsets[f + 1]; ++c) {
       is_used[s.face_vertices[c]] = 1;
-      if (keep) is_kept[s.face_vertices[c]] = 1;
+      if (!is_deleted[f]) is_kept[s.face_vertices[c]] = 1;
     }
   }
   std::vector<Index> new_id(s.num_vertices(), no_index);
   for (Index v = 0; v < s.num_vertices(); ++v)
     if (is_kept[v] || !is_used[v]) new_id[v] = out.add_vertex(s.positions[v], s.vertex_names[v]);
   bool has_color = false;
+  std::vector<Index> corners;
   for (Index f = 0; f < s.num_faces(); ++f) {
-    if (deleted.count(s.face_names[f])) continue;
-    std::vector<Index> corners;
+    if (is_deleted[f]) continue;
+    corners.clear();
     for (Index c = s.face_offsets[f]; c < s.face_offsets[f + 1]; ++c)
       corners.push_back(new_id[s.face_vertices[c]]);
     out.add_face(corners, s.face_names[f]);

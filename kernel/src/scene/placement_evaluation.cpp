@@ -178,16 +178,14 @@ std::optional<std::string> Scene::evaluate_all(const std::vector<Index>& placeme
   };
   mark_references(placements);
   // Placements whose vertices others copy go first; the name index follows their vertex names.
-  bool has_new_names = vertex_suffixes_.empty();
   for (const bool is_referencing : {false, true}) {
-    if (is_referencing && has_new_names) index_vertex_names();
     for (Index i : placements) {
       if (placements_[i].references != is_referencing) continue;
       std::vector<Index> reads;
       Piece piece = evaluate_placement(i, reads, errors);
       Placement& p = placements_[i];
-      has_new_names =
-          has_new_names || (!is_referencing && piece.soup.vertex_names != p.world.soup.vertex_names);
+      if (!is_referencing && is_vertex_index_current_ && piece.soup.vertex_names != p.world.soup.vertex_names)
+        is_vertex_index_current_ = false;
       p.world = std::move(piece);
       p.reads = std::move(reads);
       if (auto over = over_budget(i)) return over;

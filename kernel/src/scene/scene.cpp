@@ -226,7 +226,7 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
       placements_[affected[k]].world = std::move(backup[k].first);
       placements_[affected[k]].reads = std::move(backup[k].second);
     }
-    index_vertex_names();
+    is_vertex_index_current_ = false;
     if (over_budget) throw BudgetError(*over_budget);
     throw SceneError(std::move(errors));
   }
@@ -249,7 +249,7 @@ void Scene::set_consolidated_faces(std::vector<std::vector<std::string>> faces) 
   next.consolidated_ = std::move(faces);
   next.consolidated_file_.clear();
   std::vector<Diagnostic> errors;
-  next.vertex_suffixes_.clear();
+  next.is_vertex_index_current_ = false;
   next.build(errors);
   if (!errors.empty()) throw SceneError(std::move(errors));
   *this = std::move(next);

@@ -18,8 +18,9 @@ void for_each_suffix(const std::string& name, F f) {
 
 }  // namespace
 
-void Scene::index_vertex_names() {
+void Scene::build_vertex_index() const {
   vertex_suffixes_.clear();
+  is_vertex_index_current_ = true;
   for (Index p = 0; p < placements_.size(); ++p) {
     if (!is_leaf(placements_[p]) || placements_[p].references) continue;
     const auto& names = placements_[p].world.soup.vertex_names;
@@ -29,6 +30,7 @@ void Scene::index_vertex_names() {
 }
 
 const Scene::VertexRef* Scene::lookup_vertex(const Name& name, std::vector<Diagnostic>& errors) const {
+  if (!is_vertex_index_current_) build_vertex_index();
   const auto it = vertex_suffixes_.find(name.text);
   if (it != vertex_suffixes_.end() && it->second.size() == 1) return &it->second.front();
   const auto full_name = [&](const VertexRef& r) -> const std::string& {
@@ -62,6 +64,7 @@ std::string Scene::resolve_vertex_name(const std::string& name) const {
 // Faces are deleted by a unique suffix of their hierarchical names too.
 std::vector<std::string> Scene::resolve_deleted(const std::vector<Name>& names,
                                                 std::vector<Diagnostic>& errors) {
+  if (names.empty()) return {};
   std::unordered_map<std::string, std::vector<std::string>> suffixes;
   std::vector<std::string> all;
   for (const Placement& p : placements_)

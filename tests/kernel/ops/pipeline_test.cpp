@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "nome/error.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/offset.hpp"
@@ -145,4 +147,45 @@ TEST_CASE("the pipeline's result is the stage asked for, also after a later stag
   CHECK(merged_faces == 24);
   CHECK(solid_faces > merged_faces);
   CHECK(pipeline.take_result().num_faces() == merged_faces);
+}
+
+TEST_CASE("a part that may touch at vertices is split there with a warning; other faults stay refused",
+          "[kernel]") {
+  // Two triangles meeting only at vertex 0 (a bowtie), named so that the warning can say which.
+  PolygonSoup bowtie;
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0), Vec3(-1, -1, 0)})
+    bowtie.add_vertex(p);
+  bowtie.add_face({0, 1, 2});
+  bowtie.add_face({0, 3, 4});
+  bowtie.vertex_names = {"apex", "a", "b", "c", "d"};
+  PipelineSettings scene_stage;
+  scene_stage.stage = Stage::scene;
+
+  CHECK_THROWS_WITH(
+      Pipeline().set_input(PipelineInput{bowtie, {{"bowtie.obj", 2, false}}, Joining::manifold}),
+      Catch::Contains("bowtie.obj") && Catch::Contains("vertex apex") && Catch::Contains("one fan"));
+
+  Pipeline splitting;
+  splitting.set_input(PipelineInput{bowtie, {{"bowtie.nome", 2, true}}, Joining::manifold});
+  const Mesh& split = splitting.run(scene_stage);
+  CHECK(split.num_vertices() == 6);
+  CHECK(topology_report(split).components.size() == 2);
+  REQUIRE(splitting.warnings().size() == 1);
+  CHECK_THAT(splitting.warnings()[0], Catch::Contains("1 vertices") && Catch::Contains("(apex)"));
+
+  // A slider that moves the shared vertex moves both copies and keeps the warning.
+  PolygonSoup moved = bowtie;
+  moved.positions[0] = Vec3(0, 0, 2);
+  splitting.set_input(PipelineInput{moved, {{"bowtie.nome", 2, true}}, Joining::manifold});
+  const Mesh& after = splitting.run(scene_stage);
+  CHECK(splitting.work(Stage::scene) == StageWork::positions);
+  CHECK(std::count(after.positions().begin(), after.positions().end(), Vec3(0, 0, 2)) == 2);
+  CHECK(splitting.warnings().size() == 1);
+
+  // An edge of three faces is refused all the same.
+  PolygonSoup fin = bowtie;
+  fin.add_face({0, 1, 3});
+  fin.add_face({1, 0, 4});
+  CHECK_THROWS_WITH(Pipeline().set_input(PipelineInput{fin, {{"fin.nome", 4, true}}, Joining::manifold}),
+                    Catch::Contains("fin.nome") && Catch::Contains("has a third face"));
 }

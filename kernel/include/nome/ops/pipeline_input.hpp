@@ -20,6 +20,10 @@ enum class Joining {
 struct InputPart {
   std::string name;  // named in topology errors: the file it came from, or what it is
   Index faces = 0;
+  // Manifold joining only: where this part's faces touch at a vertex without sharing an edge there (a
+  // scene's pieces meeting at a point), the vertex is split, one copy per fan, with a warning naming it,
+  // instead of refusing the input. Edges of three or more faces are refused all the same.
+  bool may_touch_at_vertices = false;
 };
 
 // The pipeline's input: the scene stage's polygons, part after part.

@@ -201,8 +201,9 @@ class Scene {
   std::optional<std::string> evaluate_all(const std::vector<Index>& placements,
                                           std::vector<Diagnostic>& errors);
 
-  // vertex_names.cpp: names by unique suffix.
-  void index_vertex_names();
+  // vertex_names.cpp: names by unique suffix, indexed on the first lookup after they changed (a scene
+  // that looks no vertex up by name, a sweep's, never pays for indexing its hundred thousand names).
+  void build_vertex_index() const;
   const VertexRef* lookup_vertex(const Name& name, std::vector<Diagnostic>& errors) const;
   std::vector<std::string> resolve_deleted(const std::vector<Name>& names, std::vector<Diagnostic>& errors);
 
@@ -223,7 +224,8 @@ class Scene {
   std::unordered_map<std::string, Index> surfaces_;
   std::vector<Placement> placements_;
   std::vector<SceneInstance> instances_;
-  std::unordered_map<std::string, std::vector<VertexRef>> vertex_suffixes_;
+  mutable std::unordered_map<std::string, std::vector<VertexRef>> vertex_suffixes_;
+  mutable bool is_vertex_index_current_ = false;
   std::vector<std::vector<std::string>> consolidated_;
   std::string consolidated_file_;  // where the consolidated faces' names are located, if not in file()
   std::vector<std::string> deleted_;
