@@ -1,12 +1,13 @@
 #include "viewer/session_controller.hpp"
 
 #include "nome/error.hpp"
+#include "viewer/layout.hpp"
 #include "viewer/picking.hpp"
 
 namespace nome::viewer {
 
 ViewerStores ViewerStores::from_environment() {
-  return {RecentFiles::default_store(), Autosave::default_folder()};
+  return {RecentFiles::default_store(), Autosave::default_folder(), default_layout_file()};
 }
 
 SessionController::SessionController(MessageLog& log, const ViewerStores& stores)

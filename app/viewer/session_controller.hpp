@@ -14,10 +14,12 @@
 
 namespace nome::viewer {
 
-// Where a viewer keeps its state between runs: the recent-files list and the recovery folder.
+// Where a viewer keeps its state between runs: the recent-files list, the recovery folder and the
+// layout of its panels.
 struct ViewerStores {
   std::filesystem::path recent_files;
   std::filesystem::path recovery_folder;
+  std::filesystem::path layout_file;
 
   // The user's, from the environment (XDG folders).
   static ViewerStores from_environment();
