@@ -42,8 +42,9 @@ void draw_slider_menu(const scene::Parameter& p, Index id, ParameterPanelState& 
   ImGui::EndPopup();
 }
 
-// One slider row; returns the value the user moved it to.
-std::optional<double> draw_slider(const scene::Parameter& p, Index id, ParameterPanelState& state) {
+// One slider row; returns the value the user moved it to. `continues`: by a drag begun earlier.
+std::optional<double> draw_slider(const scene::Parameter& p, Index id, ParameterPanelState& state,
+                                  bool& continues) {
   ImGui::PushID(int(id));
   std::optional<double> moved;
   const bool is_moved = state.is_moved(p, id);
@@ -56,6 +57,7 @@ std::optional<double> draw_slider(const scene::Parameter& p, Index id, Parameter
   // Ctrl+click types an exact value (ImGui's own behaviour).
   if (ImGui::SliderFloat(p.name.c_str(), &value, float(range.first), float(range.second), "%.4g"))
     moved = snap_to_step(p, value, range);
+  continues = ImGui::IsItemActive() && !ImGui::IsItemActivated();
   if (is_moved) ImGui::PopStyleColor();
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("$%s: %g .. %g, step %g%s", p.full_name.c_str(), p.min, p.max, p.step,
@@ -82,8 +84,7 @@ void report_header(const std::string& name, LayoutReport& report) {
 }
 
 void draw_bank(const scene::Scene& scene, const scene::Bank& bank, const std::vector<Index>& shown,
-               ParameterPanelState& state, LayoutReport& report,
-               std::vector<std::pair<Index, double>>& moves) {
+               ParameterPanelState& state, LayoutReport& report, ParameterMoves& moves) {
   std::size_t moved_count = 0;
   for (Index id : bank.parameters) moved_count += state.is_moved(scene.parameters()[id], id);
   const std::string label = moved_count == 0
@@ -93,21 +94,25 @@ void draw_bank(const scene::Scene& scene, const scene::Bank& bank, const std::ve
   report_header(bank.name, report);
   if (!is_open) return;
   ImGui::PushID(bank.name.c_str());
-  for (Index id : shown)
-    if (const auto value = draw_slider(scene.parameters()[id], id, state)) moves.push_back({id, *value});
+  for (Index id : shown) {
+    bool continues = false;
+    if (const auto value = draw_slider(scene.parameters()[id], id, state, continues)) {
+      moves.moves.push_back({id, *value});
+      moves.continues = continues;
+    }
+  }
   ImGui::BeginDisabled(moved_count == 0);
   if (ImGui::SmallButton("reset bank"))
-    for (const auto& move : bank_reset(scene, bank, state)) moves.push_back(move);
+    for (const auto& move : bank_reset(scene, bank, state)) moves.moves.push_back(move);
   ImGui::EndDisabled();
   ImGui::PopID();
 }
 
 }  // namespace
 
-std::vector<std::pair<Index, double>> draw_parameter_section(const scene::Scene& scene,
-                                                             ParameterPanelState& state,
-                                                             LayoutReport& report) {
-  std::vector<std::pair<Index, double>> moves;
+ParameterMoves draw_parameter_section(const scene::Scene& scene, ParameterPanelState& state,
+                                      LayoutReport& report) {
+  ParameterMoves moves;
   state.track(scene);
   if (scene.banks().empty()) {
     ImGui::TextDisabled("no sliders in this scene");

@@ -40,12 +40,18 @@ std::vector<std::pair<Index, double>> bank_reset(const scene::Scene& scene, cons
 // A slider value on its step from the minimum, within the range.
 double snap_to_step(const scene::Parameter& p, double value, std::pair<double, double> range);
 
+// The slider moves of one frame (a reset bank moves several), and whether they continue a drag that
+// began in an earlier frame (the undo history merges such moves into one step).
+struct ParameterMoves {
+  std::vector<std::pair<Index, double>> moves;
+  bool continues = false;
+};
+
 // The right sidebar's lower part: the filter box and every bank as a collapsing header in one
 // scrolling panel. Sliders: drag, Ctrl+click to type, right-click for reset / type / range, arrow keys
 // step the slider under the mouse; moved sliders are marked. Returns the slider moves of this frame;
 // adds the bank headers that are wholly visible to `report`.
-std::vector<std::pair<Index, double>> draw_parameter_section(const scene::Scene& scene,
-                                                             ParameterPanelState& state,
-                                                             LayoutReport& report);
+ParameterMoves draw_parameter_section(const scene::Scene& scene, ParameterPanelState& state,
+                                      LayoutReport& report);
 
 }  // namespace nome::viewer

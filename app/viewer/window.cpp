@@ -67,6 +67,7 @@ bool Window::frame(const InputFrame& input) {
   renderer_.draw(view_.camera(), platform_.framebuffer_size(), viewport_pixels(), display_, rim_color_);
   draw_panels();
   draw_prompts();
+  record_view_state();
   if (is_layout_print_pending_)
     for (const std::string& line : report_.lines()) log_.info(line);
   is_layout_print_pending_ = false;
@@ -156,6 +157,7 @@ void Window::open(const std::filesystem::path& path) {
   selection_.clear();
   stage_.clear();
   apply_file_defaults();
+  recorded_ = view_state();  // the file's defaults are where the history starts
   update_stage();
   // The first picture of a file waits for its geometry, so that it can be framed.
   while (stage_.is_busy() && !stage_.shown()) update_stage();

@@ -91,6 +91,16 @@ class Window : private ScriptHost {
   void refresh_selection();
   void frame_all();
   void draw_prompts();
+  // window_history.cpp
+  struct ViewState {
+    PipelineSettings settings;
+    render::DisplaySettings colors;  // only its colours are recorded
+    glm::vec3 rim_color;
+    EditColors edit_colors;
+  };
+  ViewState view_state() const;
+  void restore(const ViewState& state);
+  void record_view_state();
   // window_panels.cpp
   void apply_style();
   void arrange_layout();
@@ -152,7 +162,10 @@ class Window : private ScriptHost {
   bool is_framing_pending_ = false;  // framing waits for the first layout
   bool is_layout_print_pending_ = false;
   std::array<double, 3> pending_scroll_{};
-  int settle_frames_ = 0;  // frames a script waits for ImGui to apply a scroll
+  int settle_frames_ = 0;
+  ViewState recorded_{};                // the stage settings and colours the undo history last saw
+  bool is_settings_drag_open_ = false;  // a held widget's changes merge into one step  // frames a script
+                                        // waits for ImGui to apply a scroll
   float style_scale_ = 0.0f;
   bool is_style_dark_ = false;
 

@@ -74,9 +74,8 @@ void Window::scroll(ScrolledPanel panel, double pixels) {
 void Window::draw_panels() {
   report_ = {};
   report_.panels.push_back({"viewport", layout_.viewport});
-  const Document* document = sessions_.document();
   const MenuContext menu{sessions_.recent(), sessions_.has_session(), sessions_.has_scene(),
-                         document && document->can_undo(), document && document->can_redo()};
+                         sessions_.can_undo(), sessions_.can_redo()};
   if (const auto chosen = draw_main_menu(actions_, menu, display_, layout_settings_)) request_open(*chosen);
   draw_sidebars();
   draw_log_panel(log_, layout_.log, layout_settings_.is_log_open, take_scroll(ScrolledPanel::log));
@@ -106,7 +105,7 @@ void Window::draw_sidebars() {
   }
   if (!layout_settings_.is_right_shown) return;
   report_.panels.push_back({"parameters", layout_.right});
-  std::vector<std::pair<Index, double>> moves;
+  ParameterMoves moves;
   if (begin_docked_panel("Parameters", layout_.right, &width, take_scroll(ScrolledPanel::parameters))) {
     if (const StageResult* shown = stage_.shown())
       if (ImGui::CollapsingHeader("Topology", ImGuiTreeNodeFlags_DefaultOpen))
@@ -119,7 +118,7 @@ void Window::draw_sidebars() {
   ImGui::End();
   layout_settings_.right_width =
       dragged_width(width, layout_.right.size.x, layout_settings_.right_width, scale);
-  for (const auto& [parameter, value] : moves) sessions_.set_parameter(parameter, value);
+  sessions_.move_sliders(moves.moves, moves.continues);
 }
 
 void Window::draw_status() {
