@@ -84,12 +84,13 @@ void report_header(const std::string& name, LayoutReport& report) {
 }
 
 void draw_bank(const scene::Scene& scene, const scene::Bank& bank, const std::vector<Index>& shown,
-               ParameterPanelState& state, LayoutReport& report, ParameterMoves& moves) {
+               bool is_selected, ParameterPanelState& state, LayoutReport& report, ParameterMoves& moves) {
   std::size_t moved_count = 0;
   for (Index id : bank.parameters) moved_count += state.is_moved(scene.parameters()[id], id);
-  const std::string label = moved_count == 0
-                                ? bank.name + "###" + bank.name
-                                : bank.name + "  (" + std::to_string(moved_count) + " moved)###" + bank.name;
+  std::string label = bank.name;
+  if (is_selected) label += "  (selection)";
+  if (moved_count > 0) label += "  (" + std::to_string(moved_count) + " moved)";
+  label += "###" + bank.name;
   const bool is_open = ImGui::CollapsingHeader(label.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
   report_header(bank.name, report);
   if (!is_open) return;
@@ -110,8 +111,8 @@ void draw_bank(const scene::Scene& scene, const scene::Bank& bank, const std::ve
 
 }  // namespace
 
-ParameterMoves draw_parameter_section(const scene::Scene& scene, ParameterPanelState& state,
-                                      LayoutReport& report) {
+ParameterMoves draw_parameter_section(const scene::Scene& scene, const std::vector<Index>& selected,
+                                      ParameterPanelState& state, LayoutReport& report) {
   ParameterMoves moves;
   state.track(scene);
   if (scene.banks().empty()) {
@@ -123,11 +124,13 @@ ParameterMoves draw_parameter_section(const scene::Scene& scene, ParameterPanelS
                            state.filter.size());
   const std::string filter = state.filter.data();
   bool is_any_shown = false;
-  for (const scene::Bank& bank : scene.banks()) {
+  const std::vector<Index> order = bank_order(scene, selected);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const scene::Bank& bank = scene.banks()[order[i]];
     const std::vector<Index> shown = filtered_parameters(scene, bank, filter);
     if (shown.empty()) continue;
     is_any_shown = true;
-    draw_bank(scene, bank, shown, state, report, moves);
+    draw_bank(scene, bank, shown, holds_any(bank, selected), state, report, moves);
   }
   if (!is_any_shown) ImGui::TextDisabled("no slider matches '%s'", filter.c_str());
   return moves;

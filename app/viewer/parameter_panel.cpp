@@ -42,6 +42,20 @@ std::vector<Index> filtered_parameters(const scene::Scene& scene, const scene::B
   return kept;
 }
 
+bool holds_any(const scene::Bank& bank, const std::vector<Index>& parameters) {
+  return std::any_of(bank.parameters.begin(), bank.parameters.end(), [&](Index id) {
+    return std::find(parameters.begin(), parameters.end(), id) != parameters.end();
+  });
+}
+
+std::vector<Index> bank_order(const scene::Scene& scene, const std::vector<Index>& first) {
+  std::vector<Index> leading, rest;
+  for (Index b = 0; b < scene.banks().size(); ++b)
+    (holds_any(scene.banks()[b], first) ? leading : rest).push_back(b);
+  leading.insert(leading.end(), rest.begin(), rest.end());
+  return leading;
+}
+
 std::vector<std::pair<Index, double>> bank_reset(const scene::Scene& scene, const scene::Bank& bank,
                                                  const ParameterPanelState& state) {
   std::vector<std::pair<Index, double>> moves;

@@ -33,6 +33,13 @@ struct ParameterPanelState {
 std::vector<Index> filtered_parameters(const scene::Scene& scene, const scene::Bank& bank,
                                        const std::string& filter);
 
+// The bank has one of the sliders.
+bool holds_any(const scene::Bank& bank, const std::vector<Index>& parameters);
+
+// The banks in the panel's order: those holding one of the `first` sliders (the ones the selection
+// depends on), then the others, each group in the file's order.
+std::vector<Index> bank_order(const scene::Scene& scene, const std::vector<Index>& first);
+
 // The moves that return the bank's moved sliders to the file's values ("reset bank").
 std::vector<std::pair<Index, double>> bank_reset(const scene::Scene& scene, const scene::Bank& bank,
                                                  const ParameterPanelState& state);
@@ -51,7 +58,8 @@ struct ParameterMoves {
 // scrolling panel. Sliders: drag, Ctrl+click to type, right-click for reset / type / range, arrow keys
 // step the slider under the mouse; moved sliders are marked. Returns the slider moves of this frame;
 // adds the bank headers that are wholly visible to `report`.
-ParameterMoves draw_parameter_section(const scene::Scene& scene, ParameterPanelState& state,
-                                      LayoutReport& report);
+// `selected`: the sliders the selection depends on, whose banks come first (marked).
+ParameterMoves draw_parameter_section(const scene::Scene& scene, const std::vector<Index>& selected,
+                                      ParameterPanelState& state, LayoutReport& report);
 
 }  // namespace nome::viewer

@@ -110,6 +110,8 @@ class Window : private ScriptHost {
   void draw_status();
   void draw_browser();
   double take_scroll(ScrolledPanel panel);
+  // The sliders the selected vertices and faces depend on.
+  std::vector<Index> selection_parameters(const scene::Scene& scene) const;
   void print_layout() override { is_layout_print_pending_ = true; }
   void scroll(ScrolledPanel panel, double pixels) override;
   // ScriptHost (window_actions.cpp)

@@ -61,6 +61,21 @@ render::PixelRect Window::viewport_pixels() const {
   return {{int(low.x), height - int(high.y)}, glm::max(glm::ivec2(high - low), glm::ivec2(1))};
 }
 
+std::vector<Index> Window::selection_parameters(const scene::Scene& scene) const {
+  const Mesh* mesh = stage_.shown_mesh();
+  if (!mesh || selection_.is_empty()) return {};
+  std::vector<Index> vertices = selection_.vertices();
+  for (Index f : selection_.faces())
+    for (Index v : mesh->face_vertices(f)) vertices.push_back(v);
+  // Computed stages have no names: their vertices depend on no slider that a name could tell.
+  const auto& names = mesh->vertex_names();
+  std::vector<Index> parameters;
+  for (Index v : vertices)
+    if (v < names.size())
+      for (Index p : scene.parameters_of_vertex(names[v])) parameters.push_back(p);
+  return parameters;
+}
+
 double Window::take_scroll(ScrolledPanel panel) {
   return std::exchange(pending_scroll_[std::size_t(panel)], 0.0);
 }
@@ -111,7 +126,7 @@ void Window::draw_sidebars() {
       if (ImGui::CollapsingHeader("Topology", ImGuiTreeNodeFlags_DefaultOpen))
         draw_topology_section(shown->topology, shown_size_);
     if (const scene::Scene* scene = sessions_.scene())
-      moves = draw_parameter_section(*scene, parameters_, report_);
+      moves = draw_parameter_section(*scene, selection_parameters(*scene), parameters_, report_);
     else
       ImGui::TextDisabled("no sliders: open a scene (.nome)");
   }

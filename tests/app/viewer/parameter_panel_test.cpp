@@ -54,3 +54,25 @@ TEST_CASE("a slider snaps to its step within the range the sculptor narrowed", "
   CHECK(state.range(p, 0) == std::pair{0.0, 0.5});
   CHECK(state.range(p, 1) == std::pair{-1.0, 1.0});
 }
+
+TEST_CASE("the banks a selected vertex depends on come first", "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("parameter_order");
+  nome::test::write_twelve_banks(dir + "/twelve.nome");
+  const viewer::Session session = viewer::Session::open(dir + "/twelve.nome");
+  const scene::Scene& scene = *session.scene();
+  const auto& names = session.scene_soup().vertex_names;
+  const auto vertex =
+      std::find_if(names.begin(), names.end(), [](const std::string& n) { return n.starts_with("i7_"); });
+  REQUIRE(vertex != names.end());
+  const std::vector<Index> parameters = scene.parameters_of_vertex(*vertex);
+  REQUIRE_FALSE(parameters.empty());
+  for (Index p : parameters) CHECK(scene.parameters()[p].bank == "b7");
+  const std::vector<Index> order = viewer::bank_order(scene, parameters);
+  REQUIRE(order.size() == 12);
+  CHECK(order[0] == 7);
+  CHECK(order[1] == 0);
+  CHECK(order[7] == 6);
+  CHECK(order[8] == 8);
+  CHECK(viewer::bank_order(scene, {})[7] == 7);
+  CHECK(scene.parameters_of_vertex("no_such_vertex").empty());
+}
