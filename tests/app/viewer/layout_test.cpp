@@ -191,3 +191,26 @@ TEST_CASE("the script's layout and scroll bring every bank's header into the par
   CHECK(viewport->max().x <= panel->origin.x);
   CHECK(seen.size() == 12);
 }
+
+TEST_CASE("a sidebar dragged by its corner keeps the new width, which the viewport gives up", "[app]") {
+  viewer::ViewerOptions options;
+  options.script = nome::test::write_script(nome::test::private_scratch_dir("layout_drag"), "");
+  nome::test::TestViewer viewer(options);
+  viewer.frame();
+  const ScreenRect left = viewer.window().layout().left;
+  const glm::dvec2 grip = left.max() - glm::dvec2(3.0);
+  ImGuiIO& io = ImGui::GetIO();
+  auto mouse = [&](glm::dvec2 at, bool is_down) {
+    io.MousePos = ImVec2(float(at.x), float(at.y));
+    io.MouseDown[0] = is_down;
+    viewer.frame();
+  };
+  mouse(grip, false);
+  mouse(grip, true);
+  for (double dx = 10.0; dx <= 80.0; dx += 10.0) mouse(grip + glm::dvec2(dx, 0.0), true);
+  mouse(grip + glm::dvec2(80.0, 0.0), false);
+  viewer.frame();
+  CHECK(viewer.window().layout_settings().left_width == Approx(left.size.x + 80.0).margin(2.0));
+  CHECK(viewer.window().layout().viewport.origin.x == Approx(left.size.x + 80.0).margin(2.0));
+  CHECK(viewer.window().layout().left.size.y == left.size.y);  // the height stays the layout's
+}
