@@ -35,6 +35,8 @@ namespace nome::viewer {
 //   script_runner    script commands           prompts          unsaved changes, recovery
 //   panel_*.cpp      one panel each            window_actions   what each action does here
 //   layout           sidebars, log, viewport   window_panels    the panels in their places
+//   parameter_panel  banks, sliders, filter    window_history   settings and colours as undo steps
+//   undo_history     one history (in session_controller) of edits, slider moves, settings
 class Window : private ScriptHost {
  public:
   // Needs ImGui initialised (a frame begun before each frame()); the platform and renderer outlive it.
