@@ -42,6 +42,7 @@ int view_command(const std::vector<std::string>& args) {
       throw UsageError("--size expects WxH between 64x64 and 8192x8192, found '" + *size + "'");
     options.width = w;
     options.height = h;
+    options.has_size = true;
   }
   return viewer::run_viewer(options);
 }

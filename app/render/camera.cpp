@@ -94,8 +94,9 @@ glm::mat4 Camera::projection_matrix(double aspect) const {
   return glm::mat4(glm::perspective(radians(fov_y_degrees), aspect, near_plane, far_plane));
 }
 
-ScreenProjection Camera::screen_projection(const glm::dvec2& viewport) const {
-  return {glm::dmat4(view_matrix()), glm::dmat4(projection_matrix(viewport.x / viewport.y)), viewport};
+ScreenProjection Camera::screen_projection(const glm::dvec2& viewport, const glm::dvec2& origin) const {
+  return {glm::dmat4(view_matrix()), glm::dmat4(projection_matrix(viewport.x / viewport.y)), viewport,
+          origin};
 }
 
 }  // namespace nome::render

@@ -38,8 +38,9 @@ class Camera {
   glm::dvec3 eye() const { return target + orientation * glm::dvec3(0.0, 0.0, distance); }
   glm::mat4 view_matrix() const;
   glm::mat4 projection_matrix(double aspect) const;
-  // The matrices and viewport (window pixels) the kernel's picking casts rays with.
-  ScreenProjection screen_projection(const glm::dvec2& viewport) const;
+  // The matrices and viewport (size and top-left corner in window pixels) the kernel's picking casts
+  // rays with.
+  ScreenProjection screen_projection(const glm::dvec2& viewport, const glm::dvec2& origin = {0.0, 0.0}) const;
 
  private:
   void depth_range(double& near_plane, double& far_plane) const;

@@ -3,6 +3,7 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <ostream>
 
 #include "nome/atomic_file.hpp"
@@ -29,6 +30,16 @@ Image read_png(const std::filesystem::path& path) {
   std::copy(data, data + image.rgba.size(), image.rgba.begin());
   stbi_image_free(data);
   return image;
+}
+
+Image crop(const Image& image, int x, int y, int width, int height) {
+  x = std::clamp(x, 0, image.width);
+  y = std::clamp(y, 0, image.height);
+  Image part(std::clamp(width, 0, image.width - x), std::clamp(height, 0, image.height - y));
+  if (part.rgba.empty()) return part;
+  for (int row = 0; row < part.height; ++row)
+    std::copy_n(image.pixel(x, y + row), std::size_t(part.width) * 4, part.pixel(0, row));
+  return part;
 }
 
 }  // namespace nome::render

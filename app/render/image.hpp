@@ -21,6 +21,9 @@ struct Image {
   }
 };
 
+// The part of the picture from (x, y) (top-left corner, clamped to the picture) of that size.
+Image crop(const Image& image, int x, int y, int width, int height);
+
 // Writes a PNG through write_file_atomically: the target is the complete old or the complete new file.
 void write_png(const std::filesystem::path& path, const Image& image);
 

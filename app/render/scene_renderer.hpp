@@ -17,6 +17,13 @@
 
 namespace nome::render {
 
+// Where in the framebuffer the scene goes: lower-left corner and size in framebuffer pixels (GL's
+// convention); the rest of the framebuffer is cleared to the background for the panels around it.
+struct PixelRect {
+  glm::ivec2 origin{0, 0};
+  glm::ivec2 size{1, 1};
+};
+
 // The line overlays the viewer keeps on the GPU beside the mesh.
 enum class Overlay { rim, selection };
 
@@ -37,9 +44,9 @@ class SceneRenderer {
   virtual void set_lines(Overlay overlay, std::span<const glm::vec3> points,
                          std::span<const std::uint32_t> segments) = 0;
 
-  // Clears the framebuffer and draws the mesh, the markers and the overlays.
-  virtual void draw(const Camera& camera, glm::ivec2 framebuffer_size, const DisplaySettings& display,
-                    const glm::vec3& rim_color) = 0;
+  // Clears the framebuffer and draws the mesh, the markers and the overlays into the viewport.
+  virtual void draw(const Camera& camera, glm::ivec2 framebuffer_size, const PixelRect& viewport,
+                    const DisplaySettings& display, const glm::vec3& rim_color) = 0;
   // The picture drawn so far (a screenshot); throws Error when the backend has none.
   virtual Image read_pixels(glm::ivec2 framebuffer_size) const = 0;
 };

@@ -38,7 +38,9 @@ const ActionInfo table[] = {
     {view_right, "view-right", GLFW_KEY_KP_3, none, "view from the right"},
     {view_top, "view-top", GLFW_KEY_KP_7, none, "view from the top"},
     {screenshot, "screenshot", GLFW_KEY_P, none, "save a screenshot PNG"},
-    {toggle_log, "log", GLFW_KEY_L, none, "show or hide the log panel"},
+    {toggle_log, "log", GLFW_KEY_L, none, "open or collapse the log"},
+    {toggle_sidebars, "sidebars", GLFW_KEY_TAB, none, "hide or show both sidebars"},
+    {toggle_theme, "theme", 0, none, "dark or light theme"},
     {undo, "undo", GLFW_KEY_Z, control, "undo"},
     {redo, "redo", GLFW_KEY_Y, control, "redo"},
     {add_polygon, "add-polygon", GLFW_KEY_ENTER, none, "add a polygon through the selected vertices"},
@@ -71,6 +73,8 @@ std::string key_name(int key) {
       return "Enter";
     case GLFW_KEY_SPACE:
       return "Space";
+    case GLFW_KEY_TAB:
+      return "Tab";
     default:
       return "Key" + std::to_string(key);
   }

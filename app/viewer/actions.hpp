@@ -50,6 +50,8 @@ enum class Action {
   view_top,
   screenshot,
   toggle_log,
+  toggle_sidebars,
+  toggle_theme,
 };
 
 // One row of the table every binding is read from: the script's name, a shortcut (key 0: none; an

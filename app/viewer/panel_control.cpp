@@ -94,12 +94,6 @@ ControlPanelChanges draw_color_section(const ControlPanelModel& model) {
 }  // namespace
 
 ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPanelModel model) {
-  ImGui::SetNextWindowPos(ImVec2(8, 30), ImGuiCond_FirstUseEver);
-  // Fits its content as sections open and close (every widget has a fixed width: no feedback loop).
-  if (!ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::End();
-    return {};
-  }
   ControlPanelChanges changes;
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
     draw_selection_section(actions, model.selection);
@@ -107,7 +101,6 @@ ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPan
     draw_stage_section(actions, model.settings);
   if (ImGui::CollapsingHeader("Edit", ImGuiTreeNodeFlags_DefaultOpen)) draw_edit_section(actions, model);
   if (ImGui::CollapsingHeader("Colours")) changes = draw_color_section(model);
-  ImGui::End();
   return changes;
 }
 

@@ -5,16 +5,9 @@
 #include "viewer/panels.hpp"
 
 namespace nome::viewer {
+namespace {
 
-void draw_log_panel(const MessageLog& log, bool& is_shown) {
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  const float height = 130.0f;
-  ImGui::SetNextWindowPos(ImVec2(8, size.y - status_bar_height() - height - 6), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(std::min(size.x - 16, 760.0f), height), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Log", &is_shown)) {
-    ImGui::End();
-    return;
-  }
+void draw_messages(const MessageLog& log, double scroll) {
   for (const Message& m : log.messages()) {
     const bool is_colored = m.level != MessageLevel::info;
     if (is_colored) ImGui::PushStyleColor(ImGuiCol_Text, message_color(m.level));
@@ -27,7 +20,28 @@ void draw_log_panel(const MessageLog& log, bool& is_shown) {
       ImGui::TextWrapped("%s%s", prefix, m.text.c_str());
     if (is_colored) ImGui::PopStyleColor();
   }
-  if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);
+  if (scroll != 0.0)
+    ImGui::SetScrollY(ImGui::GetScrollY() + float(scroll));
+  else if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY())
+    ImGui::SetScrollHereY(1.0f);
+}
+
+}  // namespace
+
+void draw_log_panel(const MessageLog& log, const ScreenRect& rect, bool& is_open, double scroll) {
+  ImGui::SetNextWindowPos(ImVec2(float(rect.origin.x), float(rect.origin.y)));
+  ImGui::SetNextWindowSize(ImVec2(float(rect.size.x), float(rect.size.y)));
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+  ImGui::Begin("Log", nullptr, flags);
+  if (ImGui::ArrowButton("##open", is_open ? ImGuiDir_Down : ImGuiDir_Right)) is_open = !is_open;
+  ImGui::SameLine();
+  ImGui::Text("Log (%zu)", log.messages().size());
+  if (is_open) {
+    ImGui::BeginChild("messages");
+    draw_messages(log, scroll);
+    ImGui::EndChild();
+  }
   ImGui::End();
 }
 

@@ -31,8 +31,7 @@ std::optional<std::filesystem::path> draw_file_menu(const ActionRegistry& action
   return chosen;
 }
 
-void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& display,
-                    PanelVisibility& panels) {
+void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& display, LayoutSettings& layout) {
   bool is_wire = display.draws_wireframe;
   if (ImGui::MenuItem("Faces", shortcut(Action::toggle_faces).c_str(), &display.draws_faces) &&
       !display.draws_faces)
@@ -57,14 +56,18 @@ void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& disp
   action_item(actions, "Right", Action::view_right);
   action_item(actions, "Top", Action::view_top);
   ImGui::Separator();
-  ImGui::MenuItem("Log panel", shortcut(Action::toggle_log).c_str(), &panels.is_log_shown);
+  ImGui::MenuItem("Controls sidebar", nullptr, &layout.is_left_shown);
+  ImGui::MenuItem("Parameters sidebar", nullptr, &layout.is_right_shown);
+  action_item(actions, "Hide / show both sidebars", Action::toggle_sidebars);
+  ImGui::MenuItem("Log open", shortcut(Action::toggle_log).c_str(), &layout.is_log_open);
+  ImGui::MenuItem("Dark theme", nullptr, &layout.is_dark);
 }
 
 }  // namespace
 
 std::optional<std::filesystem::path> draw_main_menu(const ActionRegistry& actions, const MenuContext& context,
                                                     render::DisplaySettings& display,
-                                                    PanelVisibility& panels) {
+                                                    LayoutSettings& layout) {
   if (!ImGui::BeginMainMenuBar()) return std::nullopt;
   std::optional<std::filesystem::path> chosen;
   if (ImGui::BeginMenu("File")) {
@@ -77,7 +80,7 @@ std::optional<std::filesystem::path> draw_main_menu(const ActionRegistry& action
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    draw_view_menu(actions, display, panels);
+    draw_view_menu(actions, display, layout);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

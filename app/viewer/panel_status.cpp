@@ -1,3 +1,5 @@
+#include <cstdio>
+
 #include <imgui.h>
 
 #include "viewer/panels.hpp"
@@ -6,6 +8,12 @@ namespace nome::viewer {
 
 ImVec4 message_color(MessageLevel level) {
   return level == MessageLevel::error ? ImVec4(0.85f, 0.15f, 0.15f, 1.0f) : ImVec4(0.80f, 0.55f, 0.05f, 1.0f);
+}
+
+std::string size_text(const glm::dvec3& size) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%.4g x %.4g x %.4g mm", size.x, size.y, size.z);
+  return text;
 }
 
 float status_bar_height() {
@@ -21,9 +29,9 @@ void draw_status_bar(const std::optional<StatusLine>& status, const MessageLog& 
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::Begin("##status", nullptr, flags);
   if (status)
-    ImGui::Text("%s%s | %s stage: %u V, %u F | %s mode", status->file.c_str(),
+    ImGui::Text("%s%s | %s stage: %u V, %u F, %s | %s mode", status->file.c_str(),
                 status->is_modified ? " *" : "", to_string(status->stage), status->vertices, status->faces,
-                to_string(status->mode));
+                size_text(status->size).c_str(), to_string(status->mode));
   else
     ImGui::TextUnformatted("no file: File > Open (Ctrl+O) or drop a file on the window");
   if (const Message* latest = log.latest()) {

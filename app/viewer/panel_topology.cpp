@@ -27,14 +27,8 @@ void draw_component_row(std::size_t i, const ComponentTopology& c) {
 
 }  // namespace
 
-void draw_topology_panel(const TopologyReport& report) {
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(size.x - 338, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 170), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Topology")) {
-    ImGui::End();
-    return;
-  }
+void draw_topology_section(const TopologyReport& report, const glm::dvec3& size) {
+  ImGui::Text("size %s", size_text(size).c_str());
   ImGui::Text("V %u  E %u  F %u  chi %lld", report.vertices, report.edges, report.faces, report.chi);
   ImGui::Text("%s, %u borders, %u Möbius edges", report.orientable ? "orientable" : "non-orientable",
               report.borders, report.mobius_edges);
@@ -48,7 +42,6 @@ void draw_topology_panel(const TopologyReport& report) {
   }
   if (report.components.size() > shown_rows)
     ImGui::Text("... %zu components in all", report.components.size());
-  ImGui::End();
 }
 
 }  // namespace nome::viewer

@@ -14,6 +14,7 @@
 #include "nome/scene/scene.hpp"
 #include "render/display_settings.hpp"
 #include "viewer/actions.hpp"
+#include "viewer/layout.hpp"
 #include "viewer/message_log.hpp"
 #include "viewer/picking.hpp"
 #include "viewer/recent_files.hpp"
@@ -24,11 +25,19 @@
 // actions go through the registry, so a button does what its key and its script name do.
 namespace nome::viewer {
 
-// Which panels are up (View > Log panel, Help, their keys).
+// Which panels are up (Help, its key); the sidebars and the log are in LayoutSettings.
 struct PanelVisibility {
   bool is_help_shown = false;
-  bool is_log_shown = true;
 };
+
+// The panels a script can scroll (`scroll PANEL PIXELS`).
+enum class ScrolledPanel { controls, parameters, log };
+
+// A panel pinned to its place in the layout, with a title bar and no collapse or move. When `width` is
+// given the panel can be resized by its edge: the width the user dragged it to is written there. Call
+// ImGui::End() after it whatever it returns. `scroll` pixels are added to its scroll position.
+bool begin_docked_panel(const char* title, const ScreenRect& rect, double* width = nullptr,
+                        double scroll = 0.0);
 
 // What the menu bar needs to know to enable its items.
 struct MenuContext {
@@ -40,8 +49,7 @@ struct MenuContext {
 };
 // The menu bar; returns the recent file chosen in File > Open Recent, if any.
 std::optional<std::filesystem::path> draw_main_menu(const ActionRegistry& actions, const MenuContext& context,
-                                                    render::DisplaySettings& display,
-                                                    PanelVisibility& panels);
+                                                    render::DisplaySettings& display, LayoutSettings& layout);
 
 // The control panel's state: selection mode, stage settings, edit buttons, colours.
 struct ControlPanelModel {
@@ -59,13 +67,15 @@ struct ControlPanelChanges {
   bool is_selection_changed = false;
   bool is_edit_color_changed = false;
 };
+// Draws into the current window (the left sidebar).
 ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPanelModel model);
 
-// One panel per slider bank; returns the slider moved this frame and its snapped value.
-std::optional<std::pair<Index, double>> draw_slider_panels(const scene::Scene& scene);
+// The shown stage's report and its bounding box's size (in the export unit: mm).
+void draw_topology_section(const TopologyReport& report, const glm::dvec3& size);
 
-void draw_topology_panel(const TopologyReport& report);
-void draw_log_panel(const MessageLog& log, bool& is_shown);
+// The log across the bottom of the viewport: a bar that opens and collapses it (`is_open`), then the
+// messages, scrolled to the newest unless the user scrolled up (or by `scroll` pixels).
+void draw_log_panel(const MessageLog& log, const ScreenRect& rect, bool& is_open, double scroll);
 // Errors red, warnings amber, in the log and the status bar.
 ImVec4 message_color(MessageLevel level);
 
@@ -77,7 +87,10 @@ struct StatusLine {
   Index vertices = 0;
   Index faces = 0;
   SelectionMode mode = SelectionMode::vertex;
+  glm::dvec3 size{0.0};  // the bounding box of the shown stage
 };
+// "12.5 x 8 x 3.25 mm": a bounding box's size in the export unit.
+std::string size_text(const glm::dvec3& size);
 void draw_status_bar(const std::optional<StatusLine>& status, const MessageLog& log);
 void draw_help_overlay(bool& is_shown);
 // The spinner while a stage takes longer than a frame.

@@ -37,6 +37,8 @@ class Platform {
   // Seconds of a steady clock.
   virtual double now() const = 0;
   virtual void set_title(const std::string& title) = 0;
+  // The monitor's scale for text and sizes (HiDPI: 2 on a screen of twice the usual density).
+  virtual float content_scale() const = 0;
 };
 
 // This frame's input from ImGui's IO (which its GLFW backend fills); needs a frame begun.

@@ -61,12 +61,15 @@ const Syntax syntaxes[] = {
     {"recover", ScriptCommand::Kind::recover, 1, 0, "recover restore|discard"},
     {"drop", ScriptCommand::Kind::drop, 1, 0, "drop PATH"},
     {"prompt", ScriptCommand::Kind::prompt, 1, 0, "prompt save|discard|cancel"},
+    {"layout", ScriptCommand::Kind::layout, 0, 0, "layout"},
+    {"scroll", ScriptCommand::Kind::scroll, 1, 1, "scroll controls|parameters|log PIXELS"},
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 
 const char* const modes[] = {"vertex", "face", "border", "border-partial"};
 const char* const recovery_answers[] = {"restore", "discard"};
 const char* const unsaved_answers[] = {"save", "discard", "cancel"};
+const char* const scrolled_panels[] = {"controls", "parameters", "log"};
 
 template <typename List>
 bool is_one_of(const std::string& word, const List& list) {
@@ -84,6 +87,7 @@ std::string expected_word(const ScriptCommand& command) {
   if (command.kind == Kind::action && !find_action(word)) return "an action (" + action_names() + ")";
   if (command.kind == Kind::recover && !is_one_of(word, recovery_answers)) return "restore or discard";
   if (command.kind == Kind::prompt && !is_one_of(word, unsaved_answers)) return "save, discard or cancel";
+  if (command.kind == Kind::scroll && !is_one_of(word, scrolled_panels)) return "controls, parameters or log";
   return {};
 }
 
@@ -107,6 +111,9 @@ const char* script_synopsis() {
          "  recover restore|discard   answer the offer to restore unsaved changes after a crash\n"
          "  drop PATH                 open PATH as if dropped on the window\n"
          "  prompt save|discard|cancel  answer the question about unsaved changes (quit, open)\n"
+         "  layout                    print the viewport, each panel and each visible bank header as\n"
+         "                            NAME X Y W H (window pixels; banks as bank NAME X Y W H)\n"
+         "  scroll PANEL PIXELS       scroll controls, parameters or log (negative: up)\n"
          "  quit                      end the session (without asking: key Ctrl+Q asks)\n";
 }
 
@@ -129,7 +136,7 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     if (!syntax) {
       fail(words[0].column,
            "expected a command (set, mode, click, double-click, key, action, subdiv, offset, view, "
-           "screenshot, save, export, recover, drop, prompt, quit), found '" +
+           "screenshot, save, export, recover, drop, prompt, layout, scroll, quit), found '" +
                words[0].text + "'");
       continue;
     }

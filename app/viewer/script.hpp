@@ -24,6 +24,8 @@ struct ScriptCommand {
     recover,
     drop,
     prompt,
+    layout,
+    scroll,
     quit
   };
   Kind kind = Kind::quit;

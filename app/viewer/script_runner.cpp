@@ -12,6 +12,12 @@ SelectionMode mode_named(const std::string& word) {
   return SelectionMode::vertex;
 }
 
+ScrolledPanel panel_named(const std::string& word) {
+  if (word == "controls") return ScrolledPanel::controls;
+  if (word == "log") return ScrolledPanel::log;
+  return ScrolledPanel::parameters;
+}
+
 UnsavedAnswer answer_named(const std::string& word) {
   if (word == "save") return UnsavedAnswer::save;
   if (word == "discard") return UnsavedAnswer::discard;
@@ -81,6 +87,12 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
       return true;
     case Kind::offset:
       host.set_offset(c.numbers[0]);
+      return true;
+    case Kind::layout:
+      host.print_layout();
+      return true;
+    case Kind::scroll:
+      host.scroll(panel_named(c.words[0]), c.numbers[0]);
       return true;
     case Kind::quit:
       host.quit();

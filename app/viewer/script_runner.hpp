@@ -8,6 +8,7 @@
 
 #include "viewer/actions.hpp"
 #include "viewer/message_log.hpp"
+#include "viewer/panels.hpp"
 #include "viewer/prompts.hpp"
 #include "viewer/script.hpp"
 #include "viewer/selection.hpp"
@@ -36,6 +37,9 @@ class ScriptHost {
   virtual void save(const std::filesystem::path& path) = 0;
   virtual void set_subdivision(double levels) = 0;
   virtual void set_offset(double distance) = 0;
+  // Prints the layout report (script `layout`) once this frame's panels are drawn.
+  virtual void print_layout() = 0;
+  virtual void scroll(ScrolledPanel panel, double pixels) = 0;
   virtual void quit() = 0;
 };
 

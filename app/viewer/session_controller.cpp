@@ -1,12 +1,15 @@
 #include "viewer/session_controller.hpp"
 
+#include <algorithm>
+
 #include "nome/error.hpp"
+#include "viewer/layout.hpp"
 #include "viewer/picking.hpp"
 
 namespace nome::viewer {
 
 ViewerStores ViewerStores::from_environment() {
-  return {RecentFiles::default_store(), Autosave::default_folder()};
+  return {RecentFiles::default_store(), Autosave::default_folder(), default_layout_file()};
 }
 
 SessionController::SessionController(MessageLog& log, const ViewerStores& stores)
@@ -16,6 +19,7 @@ bool SessionController::open(const std::filesystem::path& path) {
   try {
     Session session = Session::open(path);
     session_.emplace(std::move(session));
+    history_.clear();
     recovery_offer_ = autosave_.pending_recovery(path);
     std::error_code ec;
     file_time_ = std::filesystem::last_write_time(path, ec);
@@ -37,6 +41,7 @@ bool SessionController::apply_anom(const std::filesystem::path& path) {
   }
   try {
     session_->apply_anom(path);
+    history_.clear();  // the working mesh replaced the edits and their history
     recent_.add(path);
     log_.info("applied " + path.string() + " to " + session_->path().filename().string() + " (" +
               std::to_string(session_->scene_soup().num_faces()) + " faces)");
@@ -81,15 +86,41 @@ bool SessionController::save_logged(const std::optional<std::filesystem::path>& 
 
 void SessionController::set_parameter(const std::string& name, double value) {
   if (!session_) throw InvalidInputError("set: no file is open");
+  const scene::Scene* scene = session_->scene();
+  const std::optional<Index> id = scene ? scene->find_parameter(name) : std::nullopt;
+  const double before = id ? scene->parameters()[*id].value : 0.0;
   session_->set_parameter(name, value);
+  if (id) history_.push(slider_step({{*id, before}}, {{*id, value}}));
 }
 
-void SessionController::set_parameter(Index parameter, double value) {
+bool SessionController::apply_moves(const std::vector<std::pair<Index, double>>& moves) {
   try {
-    session_->set_parameter(parameter, value);
+    for (const auto& [parameter, value] : moves) session_->set_parameter(parameter, value);
+    return true;
   } catch (const std::exception& e) {
     log_.error(e.what());
+    return false;
   }
+}
+
+UndoHistory::Step SessionController::slider_step(std::vector<std::pair<Index, double>> before,
+                                                 std::vector<std::pair<Index, double>> after) {
+  const std::string key = after.size() == 1 ? "slider " + std::to_string(after[0].first) : "";
+  // Undone in the reverse order, so that a batch returns exactly to where it started.
+  std::reverse(before.begin(), before.end());
+  return {[this, before] { return apply_moves(before); }, [this, after] { return apply_moves(after); }, key};
+}
+
+void SessionController::move_sliders(const std::vector<std::pair<Index, double>>& moves, bool continues) {
+  if (!session_ || !session_->scene() || moves.empty()) return;
+  std::vector<std::pair<Index, double>> before, done;
+  for (const auto& [parameter, value] : moves) {
+    const double old = session_->scene()->parameters()[parameter].value;
+    if (!apply_moves({{parameter, value}})) break;
+    before.push_back({parameter, old});
+    done.push_back({parameter, value});
+  }
+  if (!done.empty()) history_.push(slider_step(std::move(before), std::move(done)), continues);
 }
 
 bool SessionController::edit(Action action, const StageResult* shown, const Selection& selection,
@@ -98,7 +129,7 @@ bool SessionController::edit(Action action, const StageResult* shown, const Sele
   EditOutcome outcome{false, {}};
   if (action == Action::undo || action == Action::redo) {
     const bool is_undo = action == Action::undo;
-    outcome.applied = is_undo ? session_->undo() : session_->redo();
+    outcome.applied = is_undo ? history_.undo() : history_.redo();
     outcome.message = outcome.applied ? (is_undo ? "undone" : "redone") : "nothing to " + name;
   } else if (action == Action::accept) {
     outcome = session_->accept_temporary();
@@ -117,6 +148,8 @@ bool SessionController::edit(Action action, const StageResult* shown, const Sele
     log_.error(name + ": " + outcome.message);
     return false;
   }
+  if (action != Action::undo && action != Action::redo)
+    history_.push({[this] { return session_->undo(); }, [this] { return session_->redo(); }, ""});
   log_.info(name + ": " + (outcome.message.empty() ? std::string("done") : outcome.message));
   return true;
 }
@@ -159,6 +192,7 @@ bool SessionController::answer_recovery(bool restore) {
   try {
     Session restored = Session::restore(document, recovery);
     session_.emplace(std::move(restored));
+    history_.clear();
     log_.info("restored the unsaved changes of " + document.filename().string() + " (not saved yet)");
     return true;
   } catch (const std::exception& e) {

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "viewer/actions.hpp"
 #include "viewer/autosave.hpp"
@@ -11,13 +13,16 @@
 #include "viewer/selection.hpp"
 #include "viewer/session.hpp"
 #include "viewer/stage_pipeline.hpp"
+#include "viewer/undo_history.hpp"
 
 namespace nome::viewer {
 
-// Where a viewer keeps its state between runs: the recent-files list and the recovery folder.
+// Where a viewer keeps its state between runs: the recent-files list, the recovery folder and the
+// layout of its panels.
 struct ViewerStores {
   std::filesystem::path recent_files;
   std::filesystem::path recovery_folder;
+  std::filesystem::path layout_file;
 
   // The user's, from the environment (XDG folders).
   static ViewerStores from_environment();
@@ -49,14 +54,20 @@ class SessionController {
   void save(const std::optional<std::filesystem::path>& target);
   // save() with the error logged; returns whether it saved.
   bool save_logged(const std::optional<std::filesystem::path>& target);
-  // Moves a slider; throws InvalidInputError for an unknown name or a value out of range.
+  // Moves a slider (a step of the undo history); throws InvalidInputError for an unknown name or a value
+  // out of range.
   void set_parameter(const std::string& name, double value);
-  // The panel's slider move: errors logged.
-  void set_parameter(Index parameter, double value);
+  // The panel's slider moves of one frame, one undo step (errors logged); `continues`: the same drag as
+  // the last step's, which it merges into.
+  void move_sliders(const std::vector<std::pair<Index, double>>& moves, bool continues);
+  // A change the window makes (stage settings, colours) as a step of the same history.
+  void push_step(UndoHistory::Step step, bool continues) { history_.push(std::move(step), continues); }
+  bool can_undo() const { return history_.can_undo(); }
+  bool can_redo() const { return history_.can_redo(); }
 
   // An edit action (undo, redo, accept, clear, and on the shown scene or merged stage with the selection
-  // on it: add-polygon, delete, zip with two borders); needs a session. The log says what happened.
-  // Returns whether it applied.
+  // on it: add-polygon, delete, zip with two borders); needs a session. Undo and redo go through the
+  // one history of edits and slider moves. The log says what happened. Returns whether it applied.
   bool edit(Action action, const StageResult* shown, const Selection& selection, const ZipperOptions& zipper);
 
   // Once a frame: reloads the file when it changed on disk (every half second at most) and keeps the
@@ -77,6 +88,11 @@ class SessionController {
   RecentFiles recent_;
   Autosave autosave_;
   std::optional<std::filesystem::path> recovery_offer_;
+  UndoHistory history_;
+
+  bool apply_moves(const std::vector<std::pair<Index, double>>& moves);
+  UndoHistory::Step slider_step(std::vector<std::pair<Index, double>> before,
+                                std::vector<std::pair<Index, double>> after);
 };
 
 }  // namespace nome::viewer

@@ -13,14 +13,24 @@ ViewController::ViewController() {
   camera_.set_view(default_azimuth, default_elevation);
 }
 
-std::optional<MouseEvent> ViewController::handle(const InputFrame& input, glm::dvec2 window_size) {
+namespace {
+
+glm::dvec2 to_ndc(glm::dvec2 p, const ScreenRect& viewport) {
+  const glm::dvec2 q = (p - viewport.origin) / glm::max(viewport.size, glm::dvec2(1.0));
+  return {2.0 * q.x - 1.0, 1.0 - 2.0 * q.y};
+}
+
+double aspect_of(const ScreenRect& viewport) {
+  return std::max(viewport.size.x, 1.0) / std::max(viewport.size.y, 1.0);
+}
+
+}  // namespace
+
+std::optional<MouseEvent> ViewController::handle(const InputFrame& input, const ScreenRect& viewport) {
   const glm::dvec2 position = input.cursor;
-  const double aspect = window_size.x / window_size.y;
-  auto to_ndc = [&](glm::dvec2 p) {
-    return glm::dvec2(2.0 * p.x / window_size.x - 1.0, 1.0 - 2.0 * p.y / window_size.y);
-  };
+  const double aspect = aspect_of(viewport);
   std::optional<MouseEvent> event;
-  if (pressed_button_ < 0 && !input.is_over_panel) {
+  if (pressed_button_ < 0 && !input.is_over_panel && viewport.contains(position)) {
     for (int button = 0; button < 3; ++button) {
       if (!input.is_pressed[button]) continue;
       pressed_button_ = button;
@@ -29,15 +39,15 @@ std::optional<MouseEvent> ViewController::handle(const InputFrame& input, glm::d
       if (button == 0 && input.is_double_click) event = MouseEvent{MouseEvent::Kind::double_click, position};
       break;
     }
-    if (input.wheel != 0.0) camera_.zoom(std::pow(0.88, input.wheel));
+    if (input.wheel != 0.0) zoom_at(std::pow(0.88, input.wheel), position, viewport);
   }
   if (pressed_button_ < 0) return event;
   if (glm::length(position - press_position_) >= click_pixels) is_dragging_ = true;
   if (is_dragging_ && position != last_position_) {
     if (pressed_button_ == 0)
-      camera_.arcball(to_ndc(last_position_), to_ndc(position), aspect);
+      camera_.arcball(to_ndc(last_position_, viewport), to_ndc(position, viewport), aspect);
     else
-      camera_.pan(to_ndc(last_position_), to_ndc(position), aspect);
+      camera_.pan(to_ndc(last_position_, viewport), to_ndc(position, viewport), aspect);
   }
   last_position_ = position;
   if (input.is_down[std::size_t(pressed_button_)]) return event;
@@ -48,12 +58,21 @@ std::optional<MouseEvent> ViewController::handle(const InputFrame& input, glm::d
   return event;
 }
 
-ScreenProjection ViewController::projection(glm::dvec2 window_size) const {
-  return camera_.screen_projection(window_size);
+ScreenProjection ViewController::projection(const ScreenRect& viewport) const {
+  return camera_.screen_projection(glm::max(viewport.size, glm::dvec2(1.0)), viewport.origin);
 }
 
-void ViewController::frame(std::span<const Vec3> mesh, std::span<const Vec3> more, glm::dvec2 window_size) {
-  const double aspect = window_size.x / window_size.y;
+void ViewController::zoom_at(double factor, glm::dvec2 pixel, const ScreenRect& viewport) {
+  // The point under the cursor at the orbit centre's depth lies `c` (NDC) from the centre; after the
+  // zoom it would lie factor * c from it, so the centre moves by (1 - factor) of that offset.
+  const glm::dvec2 c = to_ndc(pixel, viewport);
+  camera_.pan(c, factor * c, aspect_of(viewport));
+  camera_.zoom(factor);
+}
+
+void ViewController::frame(std::span<const Vec3> mesh, std::span<const Vec3> more,
+                           const ScreenRect& viewport) {
+  const double aspect = aspect_of(viewport);
   if (more.empty()) {
     camera_.fit(mesh, aspect);
     return;

@@ -17,6 +17,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "render/scene_renderer.hpp"
+#include "viewer/layout.hpp"
 #include "viewer/window.hpp"
 
 namespace nome::viewer {
@@ -37,6 +38,11 @@ class GlfwPlatform final : public Platform {
   }
   double now() const override { return glfwGetTime(); }
   void set_title(const std::string& title) override { glfwSetWindowTitle(window_, title.c_str()); }
+  float content_scale() const override {
+    float x = 1.0f, y = 1.0f;
+    glfwGetWindowContentScale(window_, &x, &y);
+    return std::clamp(std::max(x, y), 0.5f, 4.0f);
+  }
 
  private:
   GLFWwindow* window_;
@@ -72,7 +78,10 @@ GLFWwindow* open_window(const ViewerOptions& options) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SAMPLES, 4);
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "Nome", nullptr, nullptr);
+  glm::ivec2 size(options.width, options.height);
+  // The size the last run ended with, unless asked for one or scripted (a script's pixels repeat).
+  if (!options.has_size && !options.script) size = read_layout(default_layout_file()).window_size;
+  GLFWwindow* window = glfwCreateWindow(size.x, size.y, "Nome", nullptr, nullptr);
   if (!window) {
     std::cerr << "nome: cannot open a GL 3.3 core window; try `nome render FILE -o picture.png`\n";
     glfwTerminate();
@@ -95,9 +104,7 @@ void start_imgui(GLFWwindow* window) {
   glfwSetDropCallback(window, on_drop);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's folder
-  ImGui::StyleColorsLight();
-  ImGui::GetStyle().WindowRounding = 4.0f;
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's folder: the layout file keeps ours
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330");
 }

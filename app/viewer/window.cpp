@@ -6,6 +6,7 @@
 
 #include "nome/error.hpp"
 #include "nome/io/read_scene.hpp"
+#include "render/bounding_box.hpp"
 #include "render/image.hpp"
 
 namespace nome::viewer {
@@ -15,6 +16,11 @@ Window::Window(Platform& platform, render::SceneRenderer& renderer, const Viewer
     : platform_(platform), renderer_(renderer), sessions_(log_, stores) {
   bind_actions();
   log_.set_echo(options.script.has_value());
+  // A scripted session starts from the default layout, so that its pictures and pixels repeat.
+  if (!options.script && !stores.layout_file.empty()) {
+    layout_file_ = stores.layout_file;
+    layout_settings_ = read_layout(layout_file_);
+  }
   if (options.script) {
     try {
       script_ = ScriptRunner(*options.script, read_script(*options.script));
@@ -30,11 +36,23 @@ Window::Window(Platform& platform, render::SceneRenderer& renderer, const Viewer
   log_.info("Press ? or F1 for the keys; left drag turns, right drag pans, the wheel zooms.");
 }
 
-Window::~Window() = default;
+Window::~Window() {
+  if (layout_file_.empty()) return;
+  layout_settings_.window_size = glm::ivec2(platform_.window_size());
+  try {
+    write_layout(layout_file_, layout_settings_);
+  } catch (const std::exception&) {
+    // A layout that cannot be kept only costs the next run its arrangement.
+  }
+}
 
 // ---------------------------------------------------------------------------------------------- frame
 
 bool Window::frame(const InputFrame& input) {
+  apply_style();
+  // Laid out before the mouse is read (the press lands where the last frame showed the viewport) and
+  // again after the script, whose keys and commands may change it.
+  arrange_layout();
   sessions_.update(platform_.now());
   handle_mouse(input);
   for (const KeyPress& key : input.keys)
@@ -42,13 +60,20 @@ bool Window::frame(const InputFrame& input) {
   update_stage();
   // The first frames lay out the panels; a screenshot taken then would show them half-built. Each
   // command sees the result of the one before: the stage being computed is awaited.
-  if (frames_drawn_ >= 3 && !pending_screenshot_ && !stage_.is_busy()) script_.step(*this, log_);
+  if (frames_drawn_ >= 3 && !pending_screenshot_ && !stage_.is_busy() && settle_frames_ == 0)
+    script_.step(*this, log_);
   if (script_.has_failed()) exit_status_ = 1;
-  renderer_.draw(view_.camera(), platform_.framebuffer_size(), display_, rim_color_);
+  arrange_layout();
+  renderer_.draw(view_.camera(), platform_.framebuffer_size(), viewport_pixels(), display_, rim_color_);
   draw_panels();
   draw_prompts();
+  record_view_state();
+  if (is_layout_print_pending_)
+    for (const std::string& line : report_.lines()) log_.info(line);
+  is_layout_print_pending_ = false;
   ImGui::Render();
   ++frames_drawn_;
+  settle_frames_ = std::max(0, settle_frames_ - 1);
   // A clean end takes the recovery file along, unless it is still on offer.
   if (should_close_ && !sessions_.recovery_offer()) sessions_.discard_recovery();
   return !should_close_;
@@ -56,13 +81,18 @@ bool Window::frame(const InputFrame& input) {
 
 bool Window::is_animating() const {
   return stage_.is_busy() || !script_.is_done() || pending_screenshot_ || view_.is_pressed() ||
-         frames_drawn_ < 3;
+         frames_drawn_ < 3 || settle_frames_ > 0;
 }
 
 void Window::after_draw() {
   if (!pending_screenshot_) return;
   try {
-    render::write_png(*pending_screenshot_, renderer_.read_pixels(platform_.framebuffer_size()));
+    render::Image image = renderer_.read_pixels(platform_.framebuffer_size());
+    if (is_screenshot_of_model_) {
+      const render::PixelRect r = viewport_pixels();
+      image = render::crop(image, r.origin.x, image.height - r.origin.y - r.size.y, r.size.x, r.size.y);
+    }
+    render::write_png(*pending_screenshot_, image);
     log_.info("screenshot " + pending_screenshot_->string());
   } catch (const std::exception& e) {
     log_.error(e.what());
@@ -72,7 +102,7 @@ void Window::after_draw() {
 }
 
 void Window::handle_mouse(const InputFrame& input) {
-  const auto event = view_.handle(input, platform_.window_size());
+  const auto event = view_.handle(input, layout_.viewport);
   if (!event) return;
   switch (event->kind) {
     case MouseEvent::Kind::click:
@@ -123,9 +153,11 @@ void Window::request_open(const std::filesystem::path& path) {
 
 void Window::open(const std::filesystem::path& path) {
   if (!sessions_.open(path)) return;
+  parameters_ = {};
   selection_.clear();
   stage_.clear();
   apply_file_defaults();
+  recorded_ = view_state();  // the file's defaults are where the history starts
   update_stage();
   // The first picture of a file waits for its geometry, so that it can be framed.
   while (stage_.is_busy() && !stage_.shown()) update_stage();
@@ -232,6 +264,8 @@ void Window::show_result(StageResult result) {
   }
   for (const std::string& w : result.warnings) log_.warning(w);
   for (const std::string& note : result.notes) log_.info(note);
+  const render::BoundingBox box = render::BoundingBox::of(mesh.positions());
+  shown_size_ = box.is_empty() ? glm::dvec3(0.0) : box.max - box.min;
   renderer_.set_mesh(result.display);
   stage_.show(std::move(result), platform_.now());
   show_face_colors(renderer_, *stage_.shown(), edit_colors_);
@@ -244,47 +278,11 @@ void Window::refresh_selection() {
 }
 
 void Window::frame_all() {
-  if (const Mesh* mesh = stage_.shown_mesh())
-    view_.frame(mesh->positions(), rim_points_, platform_.window_size());
-}
-
-// --------------------------------------------------------------------------------------------- panels
-
-void Window::draw_panels() {
-  const Document* document = sessions_.document();
-  const MenuContext menu{sessions_.recent(), sessions_.has_session(), sessions_.has_scene(),
-                         document && document->can_undo(), document && document->can_redo()};
-  if (const auto chosen = draw_main_menu(actions_, menu, display_, panels_)) request_open(*chosen);
-  const ControlPanelChanges changes =
-      draw_control_panel(actions_, {selection_, stage_.settings(), zipper_options_, display_, rim_color_,
-                                    edit_colors_, document, can_edit()});
-  if (changes.is_selection_changed) refresh_selection();
-  if (changes.is_edit_color_changed && stage_.shown())
-    show_face_colors(renderer_, *stage_.shown(), edit_colors_);
-  if (const scene::Scene* scene = sessions_.scene())
-    if (const auto moved = draw_slider_panels(*scene)) sessions_.set_parameter(moved->first, moved->second);
-  const StageResult* shown = stage_.shown();
-  if (shown) draw_topology_panel(shown->topology);
-  if (panels_.is_log_shown) draw_log_panel(log_, panels_.is_log_shown);
-  std::optional<StatusLine> status;
-  if (sessions_.has_session() && shown)
-    status = StatusLine{sessions_.path().filename().string(), sessions_.is_modified(),  shown->stage,
-                        shown->mesh->num_vertices(),          shown->mesh->num_faces(), selection_.mode()};
-  draw_status_bar(status, log_);
-  if (panels_.is_help_shown) draw_help_overlay(panels_.is_help_shown);
-  if (stage_.is_busy() && stage_.seconds_running() >= 0.03) draw_progress(stage_.seconds_running());
-  const auto chosen = browser_.draw();
-  if (!chosen) return;
-  if (browser_purpose_ == Action::open)
-    request_open(*chosen);
-  else if (browser_purpose_ == Action::save_as)
-    sessions_.save_logged(*chosen);
-  else
-    try {
-      export_mesh(*chosen);
-    } catch (const std::exception& e) {
-      log_.error(e.what());
-    }
+  if (!is_layout_known_) {
+    is_framing_pending_ = true;
+    return;
+  }
+  if (const Mesh* mesh = stage_.shown_mesh()) view_.frame(mesh->positions(), rim_points_, layout_.viewport);
 }
 
 void Window::draw_prompts() {

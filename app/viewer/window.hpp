@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -9,8 +10,10 @@
 #include "render/scene_renderer.hpp"
 #include "viewer/actions.hpp"
 #include "viewer/file_browser.hpp"
+#include "viewer/layout.hpp"
 #include "viewer/message_log.hpp"
 #include "viewer/panels.hpp"
+#include "viewer/parameter_panel.hpp"
 #include "viewer/picking.hpp"
 #include "viewer/platform.hpp"
 #include "viewer/prompts.hpp"
@@ -31,6 +34,9 @@ namespace nome::viewer {
 //   stage_view       stage jobs, picking BVH   session_controller  open, save, edits, autosave
 //   script_runner    script commands           prompts          unsaved changes, recovery
 //   panel_*.cpp      one panel each            window_actions   what each action does here
+//   layout           sidebars, log, viewport   window_panels    the panels in their places
+//   parameter_panel  banks, sliders, filter    window_history   settings and colours as undo steps
+//   undo_history     one history (in session_controller) of edits, slider moves, settings
 class Window : private ScriptHost {
  public:
   // Needs ImGui initialised (a frame begun before each frame()); the platform and renderer outlive it.
@@ -69,6 +75,10 @@ class Window : private ScriptHost {
   const render::Camera& camera() const { return view_.camera(); }
   const render::DisplaySettings& display() const { return display_; }
   const PanelVisibility& panels() const { return panels_; }
+  const LayoutSettings& layout_settings() const { return layout_settings_; }
+  // Where the panels and the viewport are this frame, and what the last frame drew where.
+  const ScreenLayout& layout() const { return layout_; }
+  const LayoutReport& layout_report() const { return report_; }
 
  private:
   // window_actions.cpp: what each action does here
@@ -82,8 +92,30 @@ class Window : private ScriptHost {
   void show_result(StageResult result);
   void refresh_selection();
   void frame_all();
-  void draw_panels();
   void draw_prompts();
+  // window_history.cpp
+  struct ViewState {
+    PipelineSettings settings;
+    render::DisplaySettings colors;  // only its colours are recorded
+    glm::vec3 rim_color;
+    EditColors edit_colors;
+  };
+  ViewState view_state() const;
+  void restore(const ViewState& state);
+  void record_view_state();
+  // window_panels.cpp
+  void apply_style();
+  void arrange_layout();
+  render::PixelRect viewport_pixels() const;
+  void draw_panels();
+  void draw_sidebars();
+  void draw_status();
+  void draw_browser();
+  double take_scroll(ScrolledPanel panel);
+  // The sliders the selected vertices and faces depend on.
+  std::vector<Index> selection_parameters(const scene::Scene& scene) const;
+  void print_layout() override { is_layout_print_pending_ = true; }
+  void scroll(ScrolledPanel panel, double pixels) override;
   // ScriptHost (window_actions.cpp)
   void set_mode(SelectionMode mode) override { selection_.set_mode(mode); }
   void click(glm::dvec2 pixel) override;
@@ -92,7 +124,10 @@ class Window : private ScriptHost {
   bool press_key(const std::string& label) override { return actions_.press(label); }
   bool run_action(Action action) override { return actions_.run(action); }
   void set_view(double azimuth, double elevation) override;
-  void take_screenshot(const std::filesystem::path& path) override { pending_screenshot_ = path; }
+  void take_screenshot(const std::filesystem::path& path) override {
+    pending_screenshot_ = path;
+    is_screenshot_of_model_ = false;
+  }
   void export_mesh(const std::filesystem::path& path) override;
   void answer_recovery(bool restore) override;
   void set_parameter(const std::string& name, double value) override { sessions_.set_parameter(name, value); }
@@ -119,10 +154,28 @@ class Window : private ScriptHost {
   EditColors edit_colors_;
   ZipperOptions zipper_options_;
   std::vector<Vec3> rim_points_;  // framed with the mesh
+  glm::dvec3 shown_size_{0.0};    // the shown stage's bounding box
   PanelVisibility panels_;
+  ParameterPanelState parameters_;
+
+  LayoutSettings layout_settings_;
+  std::filesystem::path layout_file_;  // none for a scripted session, which starts from the defaults
+  ScreenLayout layout_;
+  LayoutReport report_;
+  bool is_layout_known_ = false;
+  bool is_framing_pending_ = false;  // framing waits for the first layout
+  bool is_layout_print_pending_ = false;
+  std::array<double, 3> pending_scroll_{};
+  int settle_frames_ = 0;
+  ViewState recorded_{};                // the stage settings and colours the undo history last saw
+  bool is_settings_drag_open_ = false;  // a held widget's changes merge into one step  // frames a script
+                                        // waits for ImGui to apply a scroll
+  float style_scale_ = 0.0f;
+  bool is_style_dark_ = false;
 
   bool should_close_ = false;
   std::optional<std::filesystem::path> pending_screenshot_;
+  bool is_screenshot_of_model_ = false;  // P: the viewport only; the script's screenshot: the window
   int frames_drawn_ = 0;
   int exit_status_ = 0;
 };

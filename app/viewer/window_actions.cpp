@@ -40,7 +40,13 @@ ActionRegistry::Handler always(F f) {
 
 void Window::bind_actions() {
   actions_.bind(Action::toggle_help, always([this] { panels_.is_help_shown = !panels_.is_help_shown; }));
-  actions_.bind(Action::toggle_log, always([this] { panels_.is_log_shown = !panels_.is_log_shown; }));
+  LayoutSettings& layout = layout_settings_;
+  actions_.bind(Action::toggle_log, always([&layout] { layout.is_log_open = !layout.is_log_open; }));
+  actions_.bind(Action::toggle_sidebars, always([&layout] {
+                  const bool is_any_shown = layout.is_left_shown || layout.is_right_shown;
+                  layout.is_left_shown = layout.is_right_shown = !is_any_shown;
+                }));
+  actions_.bind(Action::toggle_theme, always([&layout] { layout.is_dark = !layout.is_dark; }));
   for (Action action : {Action::open, Action::save_as, Action::export_mesh})
     actions_.bind(action, always([this, action] { open_browser(action); }));
   const Action recent[] = {Action::open_recent_1, Action::open_recent_2, Action::open_recent_3,
@@ -75,7 +81,10 @@ void Window::bind_actions() {
   actions_.bind(Action::view_front, always([this] { set_view(0.0, 0.0); }));
   actions_.bind(Action::view_right, always([this] { set_view(90.0, 0.0); }));
   actions_.bind(Action::view_top, always([this] { set_view(0.0, 90.0); }));
-  actions_.bind(Action::screenshot, always([this] { pending_screenshot_ = next_screenshot_path(); }));
+  actions_.bind(Action::screenshot, always([this] {
+                  pending_screenshot_ = next_screenshot_path();
+                  is_screenshot_of_model_ = true;
+                }));
   actions_.bind(Action::clear_selection, always([this] {
                   selection_.clear();
                   refresh_selection();
@@ -135,14 +144,14 @@ void Window::click(glm::dvec2 pixel) {
   const StageResult* shown = stage_.shown();
   if (!shown) return;
   const std::string hint =
-      select_at(selection_, *shown, stage_.picking_bvh(), view_.projection(platform_.window_size()), pixel);
+      select_at(selection_, *shown, stage_.picking_bvh(), view_.projection(layout_.viewport), pixel);
   if (!hint.empty()) log_.info(hint);
   refresh_selection();
 }
 
 bool Window::double_click(glm::dvec2 pixel) {
   if (!stage_.shown()) return false;
-  const auto ray = ray_through_pixel(view_.projection(platform_.window_size()), pixel);
+  const auto ray = ray_through_pixel(view_.projection(layout_.viewport), pixel);
   const auto hit = stage_.picking_bvh().cast_nearest(ray);
   if (!hit) {
     log_.info("double-click: no surface under the cursor, the orbit centre stays");

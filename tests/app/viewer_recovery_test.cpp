@@ -43,8 +43,9 @@ struct CrashedSession {
   nome::test::CommandResult run_viewer(const std::string& script_text) const {
     const fs::path script = dir / "script.txt";
     std::ofstream(script) << script_text;
-    return nome::test::run_window(document.string() + " --script " + script.string(),
-                                  {dir / "state" / "recent", dir / "state" / "nome" / "recovery"});
+    return nome::test::run_window(
+        document.string() + " --script " + script.string(),
+        {dir / "state" / "recent", dir / "state" / "nome" / "recovery", dir / "state" / "layout"});
   }
 };
 

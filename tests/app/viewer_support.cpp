@@ -42,9 +42,9 @@ class FramebufferRenderer final : public render::SceneRenderer {
                  std::span<const std::uint32_t> segments) override {
     gl_->set_lines(overlay, points, segments);
   }
-  void draw(const render::Camera& camera, glm::ivec2 size, const render::DisplaySettings& display,
-            const glm::vec3& rim_color) override {
-    gl_->draw(camera, size, display, rim_color);
+  void draw(const render::Camera& camera, glm::ivec2 size, const render::PixelRect& viewport,
+            const render::DisplaySettings& display, const glm::vec3& rim_color) override {
+    gl_->draw(camera, size, viewport, display, rim_color);
   }
   render::Image read_pixels(glm::ivec2) const override { return framebuffer_.read(false); }
 
@@ -57,10 +57,10 @@ class FramebufferRenderer final : public render::SceneRenderer {
 
 TestViewer::TestViewer(const viewer::ViewerOptions& options, const viewer::ViewerStores& stores,
                        TestRenderer renderer)
-    : context_(ImGui::CreateContext()) {
+    : context_(ImGui::CreateContext()), platform_({options.width, options.height}) {
   if (renderer == TestRenderer::gl) {
     gl_context_ = std::make_unique<render::OffscreenContext>();
-    framebuffer_ = std::make_unique<render::Framebuffer>(viewer_width, viewer_height);
+    framebuffer_ = std::make_unique<render::Framebuffer>(options.width, options.height);
     framebuffer_->bind();
     renderer_ = std::make_unique<FramebufferRenderer>(*framebuffer_);
   } else {
@@ -68,7 +68,7 @@ TestViewer::TestViewer(const viewer::ViewerOptions& options, const viewer::Viewe
   }
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;
-  io.DisplaySize = ImVec2(float(viewer_width), float(viewer_height));
+  io.DisplaySize = ImVec2(float(options.width), float(options.height));
   io.DeltaTime = 1.0f / 60.0f;
   // A font atlas is all ImGui needs to lay out panels; no texture is ever drawn.
   unsigned char* pixels = nullptr;
@@ -87,7 +87,7 @@ TestViewer::~TestViewer() {
 
 viewer::ViewerStores TestViewer::private_stores() {
   const std::string state = private_scratch_dir("viewer_state");
-  return {state + "/recent", state + "/recovery"};
+  return {state + "/recent", state + "/recovery", state + "/layout"};
 }
 
 bool TestViewer::frame(const viewer::InputFrame& input) {
@@ -118,9 +118,12 @@ CommandResult run_window(const std::string& arguments, const viewer::ViewerStore
                          TestRenderer renderer) {
   viewer::ViewerOptions options;
   std::istringstream words(arguments);
+  char x = 0;
   for (std::string word; words >> word;) {
     if (word == "--script" && words >> word)
       options.script = word;
+    else if (word == "--size" && words >> options.width >> x >> options.height)
+      continue;
     else if (is_anom_file(word) && options.file)
       options.anom_files.emplace_back(word);
     else
@@ -134,11 +137,24 @@ CommandResult run_window(const std::string& arguments, const viewer::ViewerStore
 }
 
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation) {
+  // The viewport of a window with no file, as a scripted session lays it out (the same every time).
+  static const viewer::ScreenRect viewport = [] {
+    ImGuiContext* const current = ImGui::GetCurrentContext();
+    viewer::ViewerOptions options;
+    options.script = write_script(private_scratch_dir("viewer_projection"), "");
+    viewer::ScreenRect rect;
+    {
+      TestViewer viewer(options);
+      viewer.frame();
+      rect = viewer.window().layout().viewport;
+    }
+    ImGui::SetCurrentContext(current);
+    return rect;
+  }();
   render::Camera camera;
-  const double aspect = double(viewer_width) / double(viewer_height);
   camera.set_view(azimuth, elevation);
-  camera.fit(mesh.positions(), aspect);
-  return camera.screen_projection({viewer_width, viewer_height});
+  camera.fit(mesh.positions(), viewport.size.x / viewport.size.y);
+  return camera.screen_projection(viewport.size, viewport.origin);
 }
 
 std::optional<glm::dvec2> click_position(const Mesh& mesh, const ScreenProjection& projection, Index v) {
@@ -165,6 +181,18 @@ std::string write_script(const std::string& dir, const std::string& text) {
   const std::string path = dir + "/script.txt";
   std::ofstream(path) << text;
   return path;
+}
+
+void write_twelve_banks(const std::string& path) {
+  std::ofstream out(path);
+  for (int i = 0; i < 12; ++i)
+    out << "bank b" << i << "\n  set n 6 3 10 1\n  set ro 0.4 0.1 1.0 0.1\n  set ratio 0.2 -0.5 0.5 0.1\n"
+        << "  set h 0.3 0.1 1.5 0.1\nendbank\n"
+        << "funnel f" << i << " ({expr $b" << i << "_n} {expr $b" << i << "_ro} {expr $b" << i
+        << "_ratio} {expr $b" << i << "_h}) endfunnel\n";
+  for (int i = 0; i < 12; ++i)
+    out << "instance i" << i << " f" << i << " translate (3 0 0) rotate (0 1 0) (" << 30 * i
+        << ") endinstance\n";
 }
 
 int count_pixels(const render::Image& image, int r, int g, int b, int tolerance) {

@@ -36,21 +36,29 @@ CommandResult run_viewer(const std::string& arguments);
 
 // Writes a viewer script into `dir` and returns its path.
 std::string write_script(const std::string& dir, const std::string& text);
+// A scene of twelve funnels in a ring, each with a bank of its own (b0 .. b11, four sliders each): a
+// parameter panel longer than the window.
+void write_twelve_banks(const std::string& path);
 // How many pixels of the picture are close to the colour (each channel within the tolerance).
 int count_pixels(const render::Image& image, int r, int g, int b, int tolerance);
 
 // A fixed-size window whose clock moves a sixtieth of a second a frame.
 class TestPlatform final : public viewer::Platform {
  public:
-  glm::dvec2 window_size() const override { return {viewer_width, viewer_height}; }
-  glm::ivec2 framebuffer_size() const override { return {viewer_width, viewer_height}; }
+  explicit TestPlatform(glm::ivec2 size) : size_(size) {}
+  glm::dvec2 window_size() const override { return glm::dvec2(size_); }
+  glm::ivec2 framebuffer_size() const override { return size_; }
   double now() const override { return time_; }
   void set_title(const std::string& title) override { title_ = title; }
+  float content_scale() const override { return scale_; }
   void advance() { time_ += 1.0 / 60.0; }
+  void set_content_scale(float scale) { scale_ = scale; }
   const std::string& title() const { return title_; }
 
  private:
+  glm::ivec2 size_;
   double time_ = 1.0;
+  float scale_ = 1.0f;
   std::string title_;
 };
 
@@ -72,7 +80,7 @@ class TestViewer {
   static viewer::ViewerStores private_stores();
 
   viewer::Window& window() { return *window_; }
-  const TestPlatform& platform() const { return platform_; }
+  TestPlatform& platform() { return platform_; }
   // One frame with this input; false once the window closes.
   bool frame(const viewer::InputFrame& input = {});
   // Frames until the window closes (a script's `quit`) or a frame limit; the exit status.
@@ -89,12 +97,14 @@ class TestViewer {
   std::unique_ptr<viewer::Window> window_;
 };
 
-// `nome ARGUMENTS` (FILE, .anom files, --script S.txt) in this process: the status and the log as err.
+// `nome ARGUMENTS` (FILE, .anom files, --script S.txt, --size WxH) in this process: the status and the
+// log as err.
 CommandResult run_window(const std::string& arguments,
                          const viewer::ViewerStores& stores = TestViewer::private_stores(),
                          TestRenderer renderer = TestRenderer::null);
 
-// The camera of the viewer after the script command `view AZ EL` (framed to the mesh).
+// The camera of the viewer after the script command `view AZ EL` (framed to the mesh in the viewport of
+// a scripted session's window, between its panels).
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation);
 
 // A window pixel where clicking in vertex mode picks vertex v (checked with the kernel's own pick),

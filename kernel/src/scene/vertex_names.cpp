@@ -61,6 +61,12 @@ std::string Scene::resolve_vertex_name(const std::string& name) const {
   return placements_[ref->placement].world.soup.vertex_names[ref->vertex];
 }
 
+std::vector<Index> Scene::parameters_of_vertex(const std::string& name) const {
+  const auto it = vertex_suffixes_.find(name);
+  if (it == vertex_suffixes_.end() || it->second.size() != 1) return {};
+  return placements_[it->second.front().placement].reads;
+}
+
 // Faces are deleted by a unique suffix of their hierarchical names too.
 std::vector<std::string> Scene::resolve_deleted(const std::vector<Name>& names,
                                                 std::vector<Diagnostic>& errors) {

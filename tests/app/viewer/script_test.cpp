@@ -58,3 +58,15 @@ TEST_CASE("every bad line of a script is reported with its line and column", "[a
                             Catch::Contains("undo, redo, add-polygon, accept, delete"));
   }
 }
+
+TEST_CASE("layout takes no argument, scroll a panel and pixels", "[app]") {
+  const auto commands = parse_script("layout\nscroll parameters -40.5\n", "s.txt");
+  REQUIRE(commands.size() == 2);
+  CHECK(commands[0].kind == Kind::layout);
+  CHECK(commands[1].kind == Kind::scroll);
+  CHECK(commands[1].words[0] == "parameters");
+  CHECK(commands[1].numbers[0] == -40.5);
+  CHECK_THROWS_WITH(parse_script("scroll sidebar 10\n", "s.txt"),
+                    Catch::Contains("s.txt:1:8: expected controls, parameters or log, found 'sidebar'"));
+  CHECK_THROWS_WITH(parse_script("layout now\n", "s.txt"), Catch::Contains("s.txt:1:8: expected 'layout'"));
+}

@@ -9,13 +9,15 @@
 
 namespace nome {
 
-// What a pick needs of the camera: the matrices the frame was drawn with and the viewport size in
-// window pixels. Pixel coordinates have their origin at the top-left corner, y down (as GLFW reports the
-// cursor); they are continuous (pixel (i, j) covers [i, i+1) x [j, j+1)).
+// What a pick needs of the camera: the matrices the frame was drawn with and the viewport (its top-left
+// corner and size) in window pixels, as a window with panels around its picture has it. Pixel
+// coordinates have their origin at the window's top-left corner, y down (as GLFW reports the cursor);
+// they are continuous (pixel (i, j) covers [i, i+1) x [j, j+1)).
 struct ScreenProjection {
   glm::dmat4 view{1.0};
   glm::dmat4 projection{1.0};
   glm::dvec2 viewport{1.0, 1.0};
+  glm::dvec2 origin{0.0, 0.0};
 };
 
 // The ray from the near plane to the far plane through a window pixel position: t = 0 at the near

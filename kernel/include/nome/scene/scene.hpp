@@ -130,6 +130,11 @@ class Scene {
   // naming the candidates when the name is unknown or ambiguous.
   std::string resolve_vertex_name(const std::string& name) const;
 
+  // The sliders a vertex's position reads (its placement's and its ancestors' transforms, its
+  // definition's numbers), sorted, by a unique suffix of its hierarchical name; none for an unknown or
+  // ambiguous name. The viewer lists the banks a selection depends on first.
+  std::vector<Index> parameters_of_vertex(const std::string& name) const;
+
   // How many placements have been evaluated since the scene was built (tests and status lines).
   std::size_t placement_evaluations() const { return placement_evaluations_; }
 
