@@ -50,7 +50,7 @@ struct Refined {
 // A full refine: the topology pass and the position pass, the last level without adjacency, its
 // positions in the refinement's own buffer.
 Refined refine(const Mesh& base, int levels, int threads) {
-  Refined r{Refinement(base, levels, threads), {}};
+  Refined r{Refinement(base, levels, BoundaryMode::edge_only, threads), {}};
   r.positions = r.refinement.refine_positions(base, SubdivisionRule::classic, threads);
   return r;
 }
