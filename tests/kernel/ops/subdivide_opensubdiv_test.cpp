@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "nome/error.hpp"
 #include "nome/io/obj.hpp"
 #include "nome/ops/subdivide.hpp"
@@ -102,7 +104,7 @@ struct FaceMatch {
   std::vector<int> turn;
 };
 
-// Compares one level's faces with their partners, each at its best turn, and returns the largest
+// Compares one level's faces with their partners, each at its turn, and returns the largest
 // coordinate difference (infinity when the face counts differ). `match` holds the level before's (empty
 // before level 1, whose faces are numbered alike) and becomes this level's: the children of our face q's
 // corner i are those of its partner's corner (i + turn) % 4.
@@ -116,18 +118,28 @@ double compare_level(std::span<const Index> ours, std::span<const Vec3> our_posi
   for (Index f = 0; f < faces; ++f) {
     const Index q = f / 4, i = f % 4;
     const Index partner = match.partner.empty() ? f : 4 * match.partner[q] + (i + Index(match.turn[q])) % 4;
-    double best = INFINITY;
-    for (int r = 0; r < 4; ++r) {
-      double turned = 0;
+    const auto distance_at = [&](Index r) {
+      double d = 0;
       for (Index k = 0; k < 4; ++k) {
-        const Vec3 d =
-            our_positions[ours[4 * f + k]] - their_positions[theirs[4 * partner + (k + Index(r)) % 4]].p;
-        turned = std::max({turned, std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+        const Vec3 v = our_positions[ours[4 * f + k]] - their_positions[theirs[4 * partner + (k + r) % 4]].p;
+        d = std::max({d, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
       }
-      if (turned < best) best = turned, next.turn[f] = r;
-    }
-    next.partner[f] = partner;
+      return d;
+    };
+    // The turn that puts their corner nearest our first corner; all four where corners coincide.
+    const Vec3& first = our_positions[ours[4 * f]];
+    const auto to_first = [&](Index k) {
+      return glm::length(their_positions[theirs[4 * partner + k]].p - first);
+    };
+    Index turn = 0;
+    for (Index k = 1; k < 4; ++k)
+      if (to_first(k) < to_first(turn)) turn = k;
+    double best = distance_at(turn);
+    for (Index r = 0; r < 4 && best > tolerance; ++r)
+      if (distance_at(r) < best) best = distance_at(r), turn = r;
     worst = std::max(worst, best);
+    next.turn[f] = int(turn);
+    next.partner[f] = partner;
   }
   match = std::move(next);
   return worst;
