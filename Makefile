@@ -2,7 +2,7 @@
 # The package list lives here and only here.
 PACKAGES := build-essential cmake pkg-config clang-format libglfw3-dev libimgui-dev libstb-dev libglm-dev \
             python3-glad libtinyobjloader-dev catch2 libegl-dev libgl1-mesa-dri libosmesa6-dev xvfb xauth \
-            libbenchmark-dev libopenmesh-dev clang-14 libclang-rt-14-dev clang-tidy
+            libbenchmark-dev libopenmesh-dev libosd-dev clang-14 libclang-rt-14-dev clang-tidy
 
 JOBS    ?= 2
 EXAMPLE ?= assets/funnel_cube.nome

@@ -14,6 +14,11 @@ std::vector<OptionSpec> pipeline_option_specs() {
       {"--subdiv", "", "N", "Catmull-Clark subdivision levels (default 0)"},
       {"--rule", "", "RULE",
        "smooth-vertex rule: classic (Catmull-Clark, default) or report (the 2016 report's)"},
+      {"--boundary", "", "MODE",
+       "what subdivision does at a border: edge-only (default: border edges are creases, a vertex of one "
+       "face follows them), edge-and-corner (a vertex of one face stays put), none (faces touching the "
+       "border "
+       "are holes: they shape their neighbours but are not output); OpenSubdiv's modes of the same names"},
       {"--offset", "", "D", "thicken into a closed solid, D on each side of the surface (D > 0)"},
       {"--subdiv-after", "", "M", "Catmull-Clark levels after --offset, to round the rims (default 0)"},
       {"--force", "", "",
@@ -51,6 +56,12 @@ PipelineSettings pipeline_settings(const Arguments& args, Stage stage) {
     else
       throw UsageError("--rule expects classic or report, found '" + *rule + "'");
   }
+  if (const auto boundary = args.value("--boundary")) {
+    const auto mode = parse_boundary_mode(*boundary);
+    if (!mode)
+      throw UsageError("--boundary expects none, edge-only or edge-and-corner, found '" + *boundary + "'");
+    s.boundary = *mode;
+  }
   if (args.has("--offset")) {
     s.offset_distance = args.double_value("--offset", 0.0);
     if (s.offset_distance <= 0.0)
@@ -68,6 +79,7 @@ void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments
     const scene::StageSettings stages = s.stage_settings();
     if (stages.subdivision_levels && !args.has("--subdiv"))
       settings.subdivision_levels = std::max(settings.subdivision_levels, *stages.subdivision_levels);
+    if (stages.boundary && !args.has("--boundary")) settings.boundary = *stages.boundary;
     if (stages.offset_distance && !args.has("--offset"))
       settings.offset_distance = std::max(settings.offset_distance, *stages.offset_distance);
   }

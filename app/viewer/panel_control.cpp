@@ -42,6 +42,16 @@ void draw_stage_section(const ActionRegistry& actions, PipelineSettings& setting
   ImGui::SetNextItemWidth(80);
   if (ImGui::Combo("##rule", &rule, rules, IM_ARRAYSIZE(rules))) settings.rule = SubdivisionRule(rule);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("smooth-vertex rule: Catmull-Clark's or the 2016 report's");
+  int boundary = int(settings.boundary);
+  const char* boundaries[] = {to_string(BoundaryMode::none), to_string(BoundaryMode::edge_only),
+                              to_string(BoundaryMode::edge_and_corner)};
+  ImGui::SetNextItemWidth(200);
+  if (ImGui::Combo("border", &boundary, boundaries, IM_ARRAYSIZE(boundaries)))
+    settings.boundary = BoundaryMode(boundary);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "edge-only: a vertex of one face follows the border; edge-and-corner: it stays put;\n"
+        "none: faces touching the border shape their neighbours but are not shown");
   float distance = float(settings.offset_distance);
   ImGui::SetNextItemWidth(120);
   if (ImGui::SliderFloat("offset", &distance, 0.001f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic))

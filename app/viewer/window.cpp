@@ -186,6 +186,7 @@ void Window::apply_file_defaults() {
     settings.subdivision_levels = *stages.subdivision_levels;
     if (settings.stage < Stage::subdivided) settings.stage = Stage::subdivided;
   }
+  if (stages.boundary) settings.boundary = *stages.boundary;
   if (stages.offset_distance) {
     settings.offset_distance = *stages.offset_distance;
     if (settings.stage < Stage::offset) settings.stage = Stage::offset;

@@ -42,11 +42,24 @@ TEST_CASE("nome info reports the pipeline's result", "[app]") {
              Catch::Contains("\"chi\": 0, \"orientable\": true, \"borders\": 0, \"components\": 1"));
 }
 
+TEST_CASE("nome info --boundary none leaves out the faces at the border, edge-and-corner keeps them",
+          "[app]") {
+  // The 4x4 grid: its inner 2x2 faces have no border vertex; one level makes each four.
+  const std::string grid = assets + "grid.obj --json --subdiv 1 --boundary ";
+  const auto none = run_nome("info " + grid + "none");
+  CHECK(none.status == 0);
+  CHECK_THAT(none.out, Catch::Contains("\"vertices\": 25, \"edges\": 40, \"faces\": 16, \"chi\": 1"));
+  const auto corners = run_nome("info " + grid + "edge-and-corner");
+  CHECK(corners.status == 0);
+  CHECK_THAT(corners.out, Catch::Contains("\"faces\": 64, \"chi\": 1"));
+}
+
 TEST_CASE("pipeline options out of range are usage errors, oversized results need --force", "[app]") {
   const std::string cube = assets + "cube.obj";
   CHECK(run_nome("info " + cube + " --subdiv -1").status == 2);
   CHECK(run_nome("info " + cube + " --subdiv many").status == 2);
   CHECK(run_nome("info " + cube + " --rule loop").status == 2);
+  CHECK(run_nome("info " + cube + " --boundary corners").status == 2);
   CHECK(run_nome("info " + cube + " --offset 0").status == 2);
   CHECK(run_nome("info " + cube + " --offset -0.5").status == 2);
   CHECK(run_nome("info " + cube + " --offset nan").status == 2);
@@ -58,7 +71,8 @@ TEST_CASE("pipeline options out of range are usage errors, oversized results nee
   CHECK_FALSE(std::filesystem::exists(dir + "/huge.obj"));
   for (const char* cmd : {"info", "export"}) {
     const auto help = run_nome(std::string(cmd) + " --help");
-    for (const char* option : {"--subdiv N", "--rule RULE", "--offset D", "--subdiv-after M", "--force"})
+    for (const char* option :
+         {"--subdiv N", "--rule RULE", "--boundary MODE", "--offset D", "--subdiv-after M", "--force"})
       CHECK_THAT(help.out, Catch::Contains(option));
   }
 }

@@ -50,6 +50,30 @@ TEST_CASE("stage blocks place their instances and set the pipeline's levels and 
       Catch::Contains("t.nom:3:22: offset_type 'NOME_OFFSET_GRID' is not supported yet"));
 }
 
+TEST_CASE("the boundary mode is a statement in either dialect and a setting of a subdivision block",
+          "[scene]") {
+  const Scene report = Scene::from_text(std::string(square) +
+                                            "boundary edge_and_corner endboundary\n"
+                                            "instance i m endinstance\n",
+                                        "t.nome");
+  CHECK(report.dialect().dialect == Dialect::report2016);
+  CHECK(report.stage_settings().boundary == BoundaryMode::edge_and_corner);
+  const Scene back = Scene::from_text(to_nome_text(report), "saved.nome");
+  CHECK(back.stage_settings().boundary == BoundaryMode::edge_and_corner);
+
+  const Scene successor = Scene::from_text(
+      std::string(square) +
+          "subdivision s sd_level 1 sd_boundary none instance i m endinstance endsubdivision\n",
+      "t.nom");
+  CHECK(successor.stage_settings().boundary == BoundaryMode::none);
+  CHECK_THAT(to_nome_text(successor), Catch::Contains("    sd_boundary none\n"));
+  CHECK_FALSE(Scene::from_text(std::string(square), "t.nom").stage_settings().boundary);
+
+  CHECK_THROWS_WITH(
+      Scene::from_text(std::string(square) + "boundary corners endboundary\n", "t.nom"),
+      Catch::Contains("t.nom:3:10: unknown boundary mode 'corners' (none, edge_only or edge_and_corner)"));
+}
+
 TEST_CASE("render statements are parsed with their locations and become the picture's defaults", "[scene]") {
   const Scene s = Scene::from_text(
       std::string(square) +

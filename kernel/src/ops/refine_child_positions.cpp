@@ -11,13 +11,13 @@ namespace nome {
 // order, and P itself needs no arrays at all. Each sum below adds the same terms in the same order as
 // refine_positions does over P's own fans (refine_positions.cpp), so both give the same bits.
 template <class Grandparent>
-void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, SubdivisionRule rule,
+void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, VertexRules rules,
                             std::span<Vec3> out, int threads) {
   const Index nf = g.num_faces(), ne = g.num_edges(), nc = g.num_corners();
   const Index ep = nf, vp = nf + ne;                    // where P's edge and vertex points start in `in`
   const Index out_ep = nc, out_interior = nc + 2 * ne;  // P's edge points in `out`, its interior edges'
   const Index out_vp = 2 * (nc + ne);                   // P's vertex points in `out`
-  const bool classic = rule == SubdivisionRule::classic;
+  const bool classic = rules.rule == SubdivisionRule::classic;
 
   // The classic rule's corner sums count each neighbour twice.
   auto smooth = [classic](const Vec3& here, const Vec3& edge_sum, const Vec3& face_sum, double n) {
@@ -115,7 +115,7 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
       const auto edges = g.vertex_edges(v);
       Index sharp_count = 0;
       for (Index e : edges) sharp_count += g.is_crease(e) ? 1 : 0;
-      if (sharp_count >= 3 || edges.empty()) {
+      if (rules.is_fixed(edges.size(), g.vertex_corners(v).size(), sharp_count)) {
         result = here;
       } else if (sharp_count == 2) {
         Vec3 sharp_sum(0.0);
@@ -136,9 +136,9 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Subd
   });
 }
 
-template void refine_child_positions(const MeshLevelView&, std::span<const Vec3>, SubdivisionRule,
+template void refine_child_positions(const MeshLevelView&, std::span<const Vec3>, VertexRules,
                                      std::span<Vec3>, int);
-template void refine_child_positions(const Refinement::Level&, std::span<const Vec3>, SubdivisionRule,
+template void refine_child_positions(const Refinement::Level&, std::span<const Vec3>, VertexRules,
                                      std::span<Vec3>, int);
 
 }  // namespace nome

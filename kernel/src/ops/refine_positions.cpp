@@ -7,8 +7,9 @@ namespace nome {
 // thread, from its parent's neighbourhood: face points, then edge points (which read face points),
 // then vertex points (which read both).
 template <class Parent>
-void refine_positions(const Parent& p, std::span<const Vec3> in, SubdivisionRule rule, std::span<Vec3> out,
+void refine_positions(const Parent& p, std::span<const Vec3> in, VertexRules rules, std::span<Vec3> out,
                       int threads) {
+  const SubdivisionRule rule = rules.rule;
   const Index nf = p.num_faces(), ne = p.num_edges();
   parallel_for(nf, threads, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f) {
@@ -37,7 +38,7 @@ void refine_positions(const Parent& p, std::span<const Vec3> in, SubdivisionRule
       const auto edges = p.vertex_edges(v);
       Index sharp_count = 0;
       for (Index e : edges) sharp_count += p.is_crease(e) ? 1 : 0;
-      if (sharp_count >= 3 || edges.empty()) {  // corner (or isolated vertex)
+      if (rules.is_fixed(edges.size(), p.vertex_corners(v).size(), sharp_count)) {
         result = here;
       } else if (sharp_count == 2) {  // crease: (6v + a + b) / 8
         Vec3 sharp_sum(0.0);
@@ -67,7 +68,7 @@ void refine_positions(const Parent& p, std::span<const Vec3> in, SubdivisionRule
   });
 }
 
-template void refine_positions(const MeshLevelView&, std::span<const Vec3>, SubdivisionRule, std::span<Vec3>,
+template void refine_positions(const MeshLevelView&, std::span<const Vec3>, VertexRules, std::span<Vec3>,
                                int);
 
 }  // namespace nome

@@ -103,6 +103,17 @@ inline Vec3 smooth_vertex_point(const Vec3& here, const Vec3& edge_sum, const Ve
   return ((n - 2.0) * here + (edge_sum + face_sum) * inverse) * inverse;
 }
 
+// The vertex rules a position pass applies beyond the crease count.
+struct VertexRules {
+  SubdivisionRule rule = SubdivisionRule::classic;
+  bool is_lone_corner_fixed = false;  // a vertex of one face and two border edges stays put (edge and corner)
+
+  // A vertex with this fan keeps its position: a corner (>= 3 creases), an isolated vertex, or a lone corner.
+  bool is_fixed(size_t edges, size_t corners, Index creases) const {
+    return creases >= 3 || edges == 0 || (is_lone_corner_fixed && edges == 2 && corners == 1);
+  }
+};
+
 // The topology pass from `parent` (a Level or a MeshLevelView) into `child`, with the arrays `detail`
 // asks for. Runs on `threads` threads.
 template <class Parent>
@@ -111,13 +122,13 @@ void refine_topology(const Parent& parent, Refinement::Level& child, LevelDetail
 // The position pass into the level after `parent`: its face points, edge points and vertex points from
 // the parent's positions. Used from the base mesh into level 1.
 template <class Parent>
-void refine_positions(const Parent& parent, std::span<const Vec3> in, SubdivisionRule rule,
-                      std::span<Vec3> out, int threads);
+void refine_positions(const Parent& parent, std::span<const Vec3> in, VertexRules rules, std::span<Vec3> out,
+                      int threads);
 
 // The same pass from a child level P (positions `in`) into the level after it, reading only the topology
 // of P's parent `grandparent`: the same results bit for bit, from arrays four times smaller.
 template <class Grandparent>
-void refine_child_positions(const Grandparent& grandparent, std::span<const Vec3> in, SubdivisionRule rule,
+void refine_child_positions(const Grandparent& grandparent, std::span<const Vec3> in, VertexRules rules,
                             std::span<Vec3> out, int threads);
 
 }  // namespace nome

@@ -90,8 +90,9 @@ StageWork SolidStages::work(Stage stage) const {
 
 Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int levels,
                                    const PipelineSettings& s) {
-  if (has_new_topology_ || !stage.refinement || stage.levels != levels) {
-    stage.refinement.emplace(in, levels, s.threads);
+  if (has_new_topology_ || !stage.refinement || stage.levels != levels ||
+      stage.refinement->boundary() != s.boundary) {
+    stage.refinement.emplace(in, levels, s.boundary, s.threads);
     stage.levels = levels;
     Buffer<Vec3> positions(stage.refinement->num_vertices());
     stage.refinement->refine_positions(in, s.rule, positions, s.threads);
@@ -99,7 +100,7 @@ Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int 
     stage.work = StageWork::rebuilt;
     has_new_topology_ = has_new_positions_ = true;
   } else if (has_new_positions_) {
-    stage.refinement->refine_positions(in, s.rule, stage.result.positions(), s.threads);
+    stage.refinement->refine_positions(in, s.rule, stage.result, s.threads);
     stage.work = StageWork::positions;
   } else {
     stage.work = StageWork::cached;

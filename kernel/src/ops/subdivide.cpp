@@ -1,6 +1,7 @@
 #include "nome/ops/subdivide.hpp"
 
 #include <string>
+#include <utility>
 
 #include "nome/error.hpp"
 #include "ops/refinement_level.hpp"
@@ -15,14 +16,50 @@ std::vector<Index> sharp_edges(const Mesh& mesh) {
   return sharp;
 }
 
+// Boundary mode none: as in OpenSubdiv, every face with a border vertex is a hole. Empty when none is.
+std::vector<bool> hole_faces(const Mesh& mesh, BoundaryMode boundary) {
+  std::vector<bool> is_hole;
+  if (boundary != BoundaryMode::none) return is_hole;
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    bool has_border_vertex = false;
+    for (Index v : mesh.face_vertices(f)) has_border_vertex = has_border_vertex || mesh.is_boundary_vertex(v);
+    if (has_border_vertex && is_hole.empty()) is_hole.resize(mesh.num_faces(), false);
+    if (has_border_vertex) is_hole[f] = true;
+  }
+  return is_hole;
+}
+
+// The last level's faces whose base ancestor is not a hole, and the vertices they use, as a soup.
+PolygonSoup without_holes(const Mesh& full, const std::vector<bool>& is_base_face_hole, unsigned shift,
+                          const Mesh& base, std::span<const Index> kept_vertices) {
+  std::vector<Index> new_index(full.num_vertices(), no_index);
+  PolygonSoup soup;
+  for (Index v : kept_vertices) new_index[v] = soup.add_vertex(full.position(v));
+  std::vector<Index> face;
+  for (Index f = 0; f < full.num_faces(); ++f) {
+    const Index ancestor = base.corner_face(f >> shift);
+    if (is_base_face_hole[ancestor]) continue;
+    face.clear();
+    for (Index v : full.face_vertices(f)) face.push_back(new_index[v]);
+    soup.add_face(face);
+    if (!full.face_colors().empty()) soup.face_colors.push_back(full.face_colors()[f]);
+  }
+  for (const Edge& e : full.edges())
+    if (e.is_sharp && new_index[e.vertices[0]] != no_index && new_index[e.vertices[1]] != no_index)
+      soup.sharp_edges.emplace_back(new_index[e.vertices[0]], new_index[e.vertices[1]]);
+  return soup;
+}
+
 }  // namespace
 
-Refinement::Refinement(const Mesh& base, int levels, int threads)
+Refinement::Refinement(const Mesh& base, int levels, BoundaryMode boundary, int threads)
     : base_vertices_(base.num_vertices()),
       base_faces_(base.num_faces()),
       base_corners_(base.num_corners()),
       base_edges_(base.num_edges()),
-      base_sharp_edges_(sharp_edges(base)) {
+      base_sharp_edges_(sharp_edges(base)),
+      boundary_(boundary),
+      is_hole_(hole_faces(base, boundary)) {
   if (levels < 1)
     throw InvalidInputError("Refinement: levels must be at least 1, got " + std::to_string(levels));
   levels_.resize(size_t(levels));
@@ -43,6 +80,19 @@ Refinement::Refinement(const Mesh& base, int levels, int threads)
     else
       refine_topology(levels_[k - 1], levels_[k], detail, threads);
   }
+  if (!is_hole_.empty()) find_kept_vertices(base);
+}
+
+void Refinement::find_kept_vertices(const Mesh& base) {
+  const unsigned shift = 2 * unsigned(levels_.size() - 1);
+  const auto quads = quad_vertices();
+  std::vector<bool> is_used(num_vertices(), false);
+  for (Index f = 0; f < num_faces(); ++f)
+    if (!is_hole_[base.corner_face(f >> shift)])
+      for (Index k = 0; k < 4; ++k) is_used[quads[4 * f + k]] = true;
+  kept_vertices_.clear();
+  for (Index v = 0; v < num_vertices(); ++v)
+    if (is_used[v]) kept_vertices_.push_back(v);
 }
 
 Refinement::Refinement(Refinement&&) noexcept = default;
@@ -75,6 +125,7 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
     throw InvalidInputError("Refinement::refine_positions: output holds " + std::to_string(out.size()) +
                             " positions, the last level has " + std::to_string(num_vertices()));
   std::span<const Vec3> in = base.positions();
+  const VertexRules rules{rule, boundary_ == BoundaryMode::edge_and_corner};
   for (size_t k = 0; k < levels_.size(); ++k) {
     std::span<Vec3> target = out;
     if (k + 1 < levels_.size()) {
@@ -82,11 +133,11 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
       target = levels_[k].positions;
     }
     if (k == 0)
-      nome::refine_positions(MeshLevelView(base), in, rule, target, threads);
+      nome::refine_positions(MeshLevelView(base), in, rules, target, threads);
     else if (k == 1)
-      refine_child_positions(MeshLevelView(base), in, rule, target, threads);
+      refine_child_positions(MeshLevelView(base), in, rules, target, threads);
     else
-      refine_child_positions(levels_[k - 2], in, rule, target, threads);
+      refine_child_positions(levels_[k - 2], in, rules, target, threads);
     in = target;
   }
 }
@@ -95,6 +146,14 @@ std::span<const Vec3> Refinement::refine_positions(const Mesh& base, Subdivision
   levels_.back().positions.resize(num_vertices());
   refine_positions(base, rule, levels_.back().positions, threads);
   return levels_.back().positions;
+}
+
+void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, Mesh& result, int threads) {
+  if (is_hole_.empty()) return refine_positions(base, rule, result.positions(), threads);
+  if (result.num_vertices() != kept_vertices_.size())
+    throw InvalidInputError("Refinement::refine_positions: the result was not made by this refinement");
+  const std::span<const Vec3> all = refine_positions(base, rule, threads);
+  for (size_t i = 0; i < kept_vertices_.size(); ++i) result.positions()[i] = all[kept_vertices_[i]];
 }
 
 Mesh Refinement::mesh(const Mesh& base, Buffer<Vec3> positions, int threads) const {
@@ -156,12 +215,13 @@ Mesh Refinement::mesh(const Mesh& base, Buffer<Vec3> positions, int threads) con
     a.face_colors.resize(nf);
     for (Index f = 0; f < nf; ++f) a.face_colors[f] = base.face_colors()[base.corner_face(f >> shift)];
   }
-  return assemble_mesh(std::move(a));
+  if (is_hole_.empty()) return assemble_mesh(std::move(a));
+  return build_mesh(without_holes(assemble_mesh(std::move(a)), is_hole_, shift, base, kept_vertices_));
 }
 
 Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options) {
   if (options.levels == 0) return mesh;
-  Refinement refinement(mesh, options.levels);
+  Refinement refinement(mesh, options.levels, options.boundary);
   Buffer<Vec3> positions(refinement.num_vertices());
   refinement.refine_positions(mesh, options.rule, positions);
   return refinement.mesh(mesh, std::move(positions));

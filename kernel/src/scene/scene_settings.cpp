@@ -28,7 +28,9 @@ StageSettings Scene::stage_settings() const {
       s.subdivision_levels = std::max(s.subdivision_levels.value_or(0), int(std::lround(amount)));
     else
       s.offset_distance = std::max(s.offset_distance.value_or(0.0), amount);
+    if (stage.boundary) s.boundary = parse_boundary_mode(stage.boundary->text);
   }
+  for (const Name& mode : ast_.boundary_modes) s.boundary = parse_boundary_mode(mode.text);
   for (const MeshDecl& m : ast_.meshes)
     for (const SharpDecl& sharp : m.sharps) s.has_sharp_weights = s.has_sharp_weights || sharp.weight;
   return s;
@@ -101,6 +103,14 @@ void Scene::check_settings(std::vector<Diagnostic>& errors) {
                     "offset_type '" + stage.type->text + "' is not supported yet (NOME_OFFSET_DEFAULT is)"));
     }
   }
+  std::vector<const Name*> modes;
+  for (const StageDecl& stage : ast_.stages)
+    if (stage.boundary) modes.push_back(&*stage.boundary);
+  for (const Name& mode : ast_.boundary_modes) modes.push_back(&mode);
+  for (const Name* mode : modes)
+    if (!parse_boundary_mode(mode->text))
+      errors.push_back(located(
+          mode->location, "unknown boundary mode '" + mode->text + "' (none, edge_only or edge_and_corner)"));
   // One warning per file, at its first weight.
   for (const MeshDecl& m : ast_.meshes)
     for (const SharpDecl& sharp : m.sharps)

@@ -40,6 +40,7 @@ StatementKind consolidate_statement();
 StatementKind include_statement();
 StatementKind subdivision_statement();
 StatementKind offset_statement();
+StatementKind boundary_statement();
 StatementKind camera_statement();
 StatementKind light_statement();
 StatementKind window_statement();
@@ -91,6 +92,7 @@ std::span<const StatementKind> statement_kinds() {
       include_statement(),       // successor: another file's statements
       subdivision_statement(),   // successor: root instances and the subdivision levels
       offset_statement(),        // successor: root instances and the offset distance
+      boundary_statement(),      // subdivision at the border (both dialects)
       camera_statement(),        // successor: render defaults
       light_statement(), window_statement(), viewport_statement(), frontcolor_statement(),
       backcolor_statement(), backgroundcolor_statement(), backface_statement(),

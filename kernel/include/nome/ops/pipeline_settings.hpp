@@ -15,6 +15,7 @@ struct PipelineSettings {
   double merge_tolerance = 0.0;            // 0: relative to the size of the scene (MergeOptions)
   int subdivision_levels = 0;              // Catmull-Clark levels before the offset
   SubdivisionRule rule = SubdivisionRule::classic;
+  BoundaryMode boundary = BoundaryMode::edge_only;
   double offset_distance = 0.0;  // 0: no offset; otherwise positive and finite
   int subdivision_after = 0;     // levels after the offset (needs an offset)
   bool force = false;            // compute even when the estimate exceeds the memory budget

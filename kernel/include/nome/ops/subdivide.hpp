@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/ops/boundary_mode.hpp"
 
 namespace nome {
 
@@ -17,11 +18,13 @@ enum class SubdivisionRule {
 struct SubdivisionOptions {
   int levels = 1;
   SubdivisionRule rule = SubdivisionRule::classic;
+  BoundaryMode boundary = BoundaryMode::edge_only;
 };
 
 // Catmull-Clark subdivision (report 004 section 4), `levels` times, on any mesh the kernel accepts:
 // polygons of any degree, borders, Möbius edges, several components. Border and sharp edges keep their
-// midpoints; a vertex with >= 3 sharp edges stays put, with 2 it follows the crease (6v + a + b) / 8.
+// midpoints; a vertex with >= 3 sharp edges stays put, with 2 it follows the crease (6v + a + b) / 8;
+// `boundary` decides the vertices of a single face and whether border faces are output.
 // Each n-gon becomes n quads with its orientation; children of Möbius and sharp edges keep the flag.
 // Positions never depend on face orientation or numbering.
 Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options);
@@ -32,16 +35,18 @@ Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options);
 // vertices of a level are its parent's face points, then edge points, then vertex points; the child
 // faces of parent corner c are face c (so a face's children are consecutive), the two children of
 // parent edge e are edges 2e and 2e+1. The last level keeps only its quads' corners unless mesh() is
-// asked for, which builds its edges and fans the same way.
+// asked for, which builds its edges and fans the same way. The boundary mode is part of the topology: it
+// decides which vertices are corners and which faces are holes.
 class Refinement {
  public:
   // The topology pass, on up to `threads` threads. Throws InvalidInputError unless levels >= 1.
-  Refinement(const Mesh& base, int levels, int threads = 1);
+  Refinement(const Mesh& base, int levels, BoundaryMode boundary = BoundaryMode::edge_only, int threads = 1);
   Refinement(Refinement&&) noexcept;
   Refinement& operator=(Refinement&&) noexcept;
   ~Refinement();
 
   int levels() const;
+  BoundaryMode boundary() const { return boundary_; }
   // True when `base` has the counts and sharp flags of the mesh this refinement was built from.
   bool fits(const Mesh& base) const;
 
@@ -58,15 +63,23 @@ class Refinement {
   std::span<const Vec3> refine_positions(const Mesh& base, SubdivisionRule rule, int threads = 1);
 
   // The last level as a full Mesh with the given positions (from refine_positions), built from the
-  // level before it without any search; faces keep the colours and components of their ancestors.
+  // level before it without any search; faces keep the colours and components of their ancestors. The
+  // descendants of hole faces are left out, with the vertices only they use.
   Mesh mesh(const Mesh& base, Buffer<Vec3> positions, int threads = 1) const;
+  // The position pass into `result`, a mesh made by mesh() from the same base topology (the fast path).
+  void refine_positions(const Mesh& base, SubdivisionRule rule, Mesh& result, int threads = 1);
 
   struct Level;
 
  private:
+  void find_kept_vertices(const Mesh& base);
+
   std::vector<Level> levels_;  // levels 1..k: only the last two lack edges and fans
   Index base_vertices_ = 0, base_faces_ = 0, base_corners_ = 0, base_edges_ = 0;
   std::vector<Index> base_sharp_edges_;
+  BoundaryMode boundary_ = BoundaryMode::edge_only;
+  std::vector<bool> is_hole_;         // per base face; empty when there is none
+  std::vector<Index> kept_vertices_;  // with holes: the last level's vertices mesh() keeps, in order
 };
 
 }  // namespace nome

@@ -178,6 +178,7 @@ struct StageDecl {
   std::optional<Name> type;  // NOME_SD_CC_sharp, NOME_OFFSET_DEFAULT, ...
   Value amount;              // sd_level, or the offset's height (half thickness)
   std::optional<Value> width;
+  std::optional<Name> boundary;  // a subdivision block's `sd_boundary MODE`
   SourceLocation location;
 };
 
@@ -231,6 +232,7 @@ struct SceneAst {
   std::vector<Name> deleted_faces;      // `delete face NAME endface ... enddelete`
   std::vector<NamedFace> consolidated_faces;
   std::vector<StageDecl> stages;
+  std::vector<Name> boundary_modes;  // `boundary MODE endboundary`: subdivision at the border
   std::vector<RenderDecl> render;
   std::vector<InstanceDecl> render_instances;  // top-level instances of a camera, light, window or viewport
   std::vector<std::string> included_files;     // every file read by `include`, in reading order

@@ -10,6 +10,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "nome/ops/boundary_mode.hpp"
 #include "nome/scene/ast.hpp"
 #include "nome/scene/piece.hpp"
 
@@ -39,6 +40,8 @@ inline constexpr const char* frame_parameter = "frame";
 struct StageSettings {
   std::optional<int> subdivision_levels;
   std::optional<double> offset_distance;
+  std::optional<BoundaryMode>
+      boundary;  // `sd_boundary MODE` in a subdivision block, or `boundary MODE endboundary`
   bool has_sharp_weights = false;  // `sharp W (...)`: read and kept, each crease infinitely sharp for now
 };
 

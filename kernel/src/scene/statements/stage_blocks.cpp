@@ -1,4 +1,5 @@
-// The successor's stage blocks: `subdivision NAME [sd_type T] sd_level N instance ... endsubdivision` and
+// The successor's stage blocks: `subdivision NAME [sd_type T] sd_level N [sd_boundary MODE] instance ...
+// endsubdivision` and
 // `offset NAME [offset_type T] [height H] [width W] instance ... endoffset`. Their instances are roots of
 // the scene; the block sets the pipeline's subdivision levels or offset distance (Scene::stage_settings).
 #include "nome/scene/statement_kinds.hpp"
@@ -30,6 +31,9 @@ void stage_settings(StatementParser& parser, StageDecl& stage) {
       parser.take();
       stage.amount = parser.value();
       has_amount = true;
+    } else if (stage.kind == StageKind::subdivision && t.is_word("sd_boundary")) {
+      parser.take();
+      stage.boundary = parser.take_name("a boundary mode (none, edge_only or edge_and_corner)");
     } else if (!w.width.empty() && t.is_word(w.width)) {
       parser.take();
       stage.width = parser.value();
@@ -42,7 +46,8 @@ void stage_settings(StatementParser& parser, StageDecl& stage) {
 
 void parse(StatementParser& parser, StageKind kind, std::string_view end) {
   const Token opener = parser.take();
-  StageDecl stage{kind, parser.take_name("a block name"), std::nullopt, {}, std::nullopt, opener.location};
+  StageDecl stage{
+      kind, parser.take_name("a block name"), std::nullopt, {}, std::nullopt, std::nullopt, opener.location};
   parser.set_statement_end(end);
   stage_settings(parser, stage);
   const Index index = Index(parser.ast().stages.size());
@@ -81,6 +86,7 @@ void save(SceneWriter& writer, StageKind kind, std::string_view keyword) {
     if (stage.type) writer.out() << "    " << w.type << " " << stage.type->text << "\n";
     writer.out() << "    " << w.amount << " " << writer.values(&stage.amount, 1) << "\n";
     if (stage.width) writer.out() << "    " << w.width << " " << writer.values(&*stage.width, 1) << "\n";
+    if (stage.boundary) writer.out() << "    sd_boundary " << stage.boundary->text << "\n";
     for (const InstanceDecl& i : ast.instances)
       if (i.stage == s) writer.instance(i, "    ");
     writer.out() << "end" << keyword << "\n";
