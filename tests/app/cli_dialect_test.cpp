@@ -46,7 +46,7 @@ TEST_CASE("the --dialect option overrides what the statements say, for every com
   CHECK_THAT(bad.err, Catch::Contains("--dialect expects 2016 or jipcad, found 'nome3'"));
 }
 
-TEST_CASE("at least 40 of JIPCAD's 42 example files open; the rest are refused with a location", "[app]") {
+TEST_CASE("at least 40 of JIPCAD's 42 example files open, the rest are refused with a location", "[app]") {
   NOME_NEEDS_SHARED_EXAMPLES("jipcad");
   std::vector<std::string> files;
   for (const auto& entry : std::filesystem::directory_iterator(nome::test::shared_examples_dir("jipcad")))

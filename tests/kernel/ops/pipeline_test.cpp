@@ -149,7 +149,7 @@ TEST_CASE("the pipeline's result is the stage asked for, also after a later stag
   CHECK(pipeline.take_result().num_faces() == merged_faces);
 }
 
-TEST_CASE("a part that may touch at vertices is split there with a warning; other faults stay refused",
+TEST_CASE("a part that may touch at vertices is split there with a warning, other faults stay refused",
           "[kernel]") {
   // Two triangles meeting only at vertex 0 (a bowtie), named so that the warning can say which.
   PolygonSoup bowtie;
