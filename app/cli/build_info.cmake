@@ -1,13 +1,15 @@
 # Writes OUTPUT: build_info.cpp with the project VERSION and the git commit of SOURCE_DIR (with "-dirty"
 # when tracked files differ from it), or no commit when GIT is missing or SOURCE_DIR is no checkout.
+# safe.directory: a checkout owned by another user (a CI container's) still names its commit; git only reads.
+set(git ${GIT} -c safe.directory=* -C ${SOURCE_DIR})
 set(commit "")
 if(GIT)
-  execute_process(COMMAND ${GIT} -C ${SOURCE_DIR} rev-parse --short=12 HEAD
+  execute_process(COMMAND ${git} rev-parse --short=12 HEAD
                   OUTPUT_VARIABLE commit OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE failed ERROR_QUIET)
   if(failed)
     set(commit "")
   else()
-    execute_process(COMMAND ${GIT} -C ${SOURCE_DIR} status --porcelain --untracked-files=no
+    execute_process(COMMAND ${git} status --porcelain --untracked-files=no
                     OUTPUT_VARIABLE changes ERROR_QUIET)
     if(changes)
       string(APPEND commit "-dirty")
