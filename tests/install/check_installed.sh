@@ -34,6 +34,7 @@ grep -q "orientable *no" "$work/info.txt" || { cat "$work/info.txt"; fail "nome 
 
 # Desktop integration: the entry validates, the MIME database accepts the type and its globs.
 desktop-file-validate "$share/applications/nome.desktop" || fail "invalid desktop entry"
+grep -qx "MimeType=text/x-nome;" "$share/applications/nome.desktop" || fail "the desktop entry does not open scenes"
 mkdir -p "$work/mime/packages" && cp "$share/mime/packages/nome.xml" "$work/mime/packages/"
 XDG_DATA_DIRS=$work update-mime-database "$work/mime" && grep -q "text/x-nome:\*\.nom$" "$work/mime/globs" || fail "MIME type not registered"
 grep -q "text/x-nome:\*\.nome$" "$work/mime/globs" || fail "no *.nome glob"
