@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <regex>
 
 #include "app/cli_support.hpp"
@@ -26,4 +27,8 @@ TEST_CASE("nome version --verbose names the GL backend and the shader folder in 
   const test::CommandResult elsewhere =
       test::run_nome_prefixed("env NOME_SHADERS=/nonexistent-nome-shaders", "--version --verbose");
   CHECK(elsewhere.out.find("shaders: " + std::string(NOME_SOURCE_DIR) + "/shaders\n") != std::string::npos);
+  const std::string own = test::scratch_dir("version_shaders");
+  std::filesystem::copy_file(std::string(NOME_SOURCE_DIR) + "/shaders/mesh.vert", own + "/mesh.vert");
+  const test::CommandResult chosen = test::run_nome_prefixed("env NOME_SHADERS=" + own, "version -v");
+  CHECK(chosen.out.find("shaders: " + own + "\n") != std::string::npos);
 }
