@@ -2,7 +2,8 @@
 # The package list lives here and only here.
 PACKAGES := build-essential cmake pkg-config clang-format libglfw3-dev libimgui-dev libstb-dev libglm-dev \
             python3-glad libtinyobjloader-dev catch2 libegl-dev libgl1-mesa-dri libosmesa6-dev xvfb xauth \
-            libbenchmark-dev libopenmesh-dev libosd-dev clang-14 libclang-rt-14-dev clang-tidy
+            libbenchmark-dev libopenmesh-dev libosd-dev clang-14 libclang-rt-14-dev clang-tidy \
+            file desktop-file-utils shared-mime-info
 
 JOBS    ?= 2
 EXAMPLE ?= assets/funnel_cube.nome
@@ -20,7 +21,11 @@ SOURCES  = $(shell git ls-files '*.cpp' '*.hpp' 2>/dev/null | grep -v '^third_pa
 
 GALLERY_SIZE ?= 640x480
 
-.PHONY: run test deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery
+PREFIX     ?= /usr/local
+PACKAGEDIR := build/package
+
+.PHONY: run test deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery \
+        install package package-test icon
 
 deps:
 	@missing=""; for p in $(PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -49,6 +54,27 @@ test-build: deps
 
 test: format-check test-build
 	cd $(TESTDIR) && $(SANITIZER_ENV) ctest --output-on-failure -j$(JOBS)
+
+# `make install PREFIX=/opt/nome` (DESTDIR=/stage as well, to stage it). Every installed path is listed in
+# build/release/install_manifest.txt: `xargs rm < build/release/install_manifest.txt` uninstalls.
+install: release
+	cmake --install $(RELEASE) --prefix $(PREFIX)
+
+# The Debian packages nome and nome-dev (CPack DEB, packaging/cpack.cmake) in build/package/.
+package: release
+	rm -rf $(PACKAGEDIR)
+	cd $(RELEASE) && cpack -B $(CURDIR)/$(PACKAGEDIR)
+	@for deb in $(PACKAGEDIR)/*.deb; do echo "$$deb: $$(du -k $$deb | cut -f1) KB"; done
+
+# Checks the packages' control data and file lists, extracts them (dpkg-deb -x, never dpkg -i) into a
+# temporary folder and runs nome and a find_package(Nome) program from there. Not part of `make test`.
+package-test: package
+	tests/install/package_test.sh $(PACKAGEDIR) $(CURDIR)
+
+# The desktop icon: a Möbius band drawn by nome render (look at it before committing).
+icon: release
+	$(RELEASE)/app/nome render assets/mobius_band.obj -o packaging/nome.png --size 256x256 --transparent \
+	  --view 25,-25 --subdiv 2
 
 # The long property runs (10,000 random manifolds each), hidden from `make test` by their [.] tag.
 soak: test-build

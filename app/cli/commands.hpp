@@ -10,6 +10,8 @@ namespace nome::cli {
 int info_command(const std::vector<std::string>& args);
 int export_command(const std::vector<std::string>& args);
 int render_command(const std::vector<std::string>& args);
+// `nome version [--verbose]` and `nome --version`: version, git commit, GL backend and shader folder.
+int version_command(const std::vector<std::string>& args);
 // `nome [FILE] [--script S.txt]`: the viewer window.
 int view_command(const std::vector<std::string>& args);
 

@@ -21,6 +21,7 @@ const Command commands[] = {
     {"info", info_command, "print the topology report of a file (V, E, F, chi, orientable, borders, genus)"},
     {"export", export_command, "write the result as .obj or .stl"},
     {"render", render_command, "draw the result headless into a PNG (EGL or OSMesa, no display needed)"},
+    {"version", version_command, "print the version and git commit (--verbose: GL backend, shader folder)"},
 };
 
 void print_help(std::ostream& out) {
@@ -70,7 +71,7 @@ int run(int argc, char** argv) {
     return args.empty() ? 2 : 0;
   }
   if (is_viewer_call(args)) return run_guarded("", view_command, args);
-  const std::string name = args[0];
+  const std::string name = args[0] == "--version" ? "version" : args[0];
   args.erase(args.begin());
   for (const Command& c : commands)
     if (name == c.name) return run_guarded(name, c.run, args);

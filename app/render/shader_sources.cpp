@@ -17,7 +17,7 @@ std::vector<std::filesystem::path> shader_search_path() {
   const auto executable = std::filesystem::read_symlink("/proc/self/exe", error);
   if (!error) {
     folders.push_back(executable.parent_path() / "shaders");
-    folders.push_back(executable.parent_path().parent_path() / "share" / "nome" / "shaders");
+    folders.push_back((executable.parent_path() / NOME_INSTALLED_SHADER_DIR).lexically_normal());
   }
   folders.emplace_back(NOME_SHADER_DIR);
   return folders;
@@ -35,6 +35,12 @@ ShaderSource find_shader_source(const std::string& name, const std::vector<std::
   for (const EmbeddedShader& shader : embedded_shaders())
     if (shader.name == name) return {std::string(shader.text), "embedded"};
   throw InvalidInputError("find_shader_source: no shader named '" + name + "'");
+}
+
+std::string shader_folder_in_use(const std::vector<std::filesystem::path>& folders) {
+  const ShaderSource source = find_shader_source("mesh.vert", folders);
+  return source.origin == "embedded" ? source.origin
+                                     : std::filesystem::path(source.origin).parent_path().string();
 }
 
 }  // namespace nome::render

@@ -32,6 +32,8 @@ TEST_CASE("shader files are looked for in order, the embedded copy last", "[rend
   std::ofstream(first + "/mesh.vert") << "// first";
   CHECK(render::find_shader_source("mesh.vert", {first, second}).origin == first + "/mesh.vert");
   CHECK_THROWS_AS(render::find_shader_source("missing.frag", {first}), InvalidInputError);
+  CHECK(render::shader_folder_in_use({second, first}) == second);
+  CHECK(render::shader_folder_in_use({}) == "embedded");
   const auto path = render::shader_search_path();
   REQUIRE(!path.empty());
   CHECK(path.back() == std::filesystem::path(std::string(NOME_SOURCE_DIR) + "/shaders"));
