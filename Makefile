@@ -24,7 +24,7 @@ GALLERY_SIZE ?= 640x480
 PREFIX     ?= /usr/local
 PACKAGEDIR := build/package
 
-.PHONY: run test deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery \
+.PHONY: run test sanitize-full deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery \
         install package package-test icon
 
 deps:
@@ -48,12 +48,22 @@ run: release
 	  $(RELEASE)/app/nome render $(EXAMPLE) -o $$out --verbose && echo "Picture: $$PWD/$$out"; \
 	fi
 
+# The sanitized test build compiles as unity builds (eight files a unit: about 45 % less compile time), so
+# names in anonymous namespaces must differ across a target's files. UBSan's null and alignment checks are
+# left out here (CMakeLists.txt says why); `make sanitize-full` builds and runs the suite with all of them.
 test-build: deps
-	cmake -S . -B $(TESTDIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNOME_SANITIZE=ON >/dev/null
+	cmake -S . -B $(TESTDIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNOME_SANITIZE=ON -DCMAKE_UNITY_BUILD=ON \
+	  "-DNOME_SANITIZE_SKIP=alignment;null" >/dev/null
 	cmake --build $(TESTDIR) -j$(JOBS)
 
 test: format-check test-build
 	cd $(TESTDIR) && $(SANITIZER_ENV) ctest --output-on-failure -j$(JOBS)
+
+# Every UBSan check, files compiled one by one: slower to build than `make test`, not part of it.
+sanitize-full: deps
+	cmake -S . -B build/sanitize-full -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNOME_SANITIZE=ON -DNOME_SANITIZE_SKIP= >/dev/null
+	cmake --build build/sanitize-full -j$(JOBS)
+	cd build/sanitize-full && $(SANITIZER_ENV) ctest --output-on-failure -j$(JOBS)
 
 # `make install PREFIX=/opt/nome` (DESTDIR=/stage as well, to stage it). Every installed path is listed in
 # build/release/install_manifest.txt: `xargs rm < build/release/install_manifest.txt` uninstalls.

@@ -8,7 +8,7 @@
 using nome::test::run_nome;
 
 namespace {
-const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+using nome::test::assets;
 }
 
 TEST_CASE("nome info --json reports every example surface", "[app]") {

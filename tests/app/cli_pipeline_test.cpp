@@ -8,7 +8,7 @@
 using nome::test::run_nome;
 
 namespace {
-const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+using nome::test::assets;
 }
 
 TEST_CASE("nome export --subdiv --offset turns a Möbius band into a closed torus-shaped STL", "[app]") {
@@ -56,21 +56,21 @@ TEST_CASE("nome info --boundary none leaves out the faces at the border, edge-an
 
 TEST_CASE("pipeline options out of range are usage errors, oversized results need --force", "[app]") {
   const std::string cube = assets + "cube.obj";
-  CHECK(run_nome("info " + cube + " --subdiv -1").status == 2);
-  CHECK(run_nome("info " + cube + " --subdiv many").status == 2);
-  CHECK(run_nome("info " + cube + " --rule loop").status == 2);
-  CHECK(run_nome("info " + cube + " --boundary corners").status == 2);
-  CHECK(run_nome("info " + cube + " --offset 0").status == 2);
-  CHECK(run_nome("info " + cube + " --offset -0.5").status == 2);
-  CHECK(run_nome("info " + cube + " --offset nan").status == 2);
-  CHECK(run_nome("info " + cube + " --subdiv-after 1").status == 2);
+  CHECK(nome::test::run_nome_in_process("info " + cube + " --subdiv -1").status == 2);
+  CHECK(nome::test::run_nome_in_process("info " + cube + " --subdiv many").status == 2);
+  CHECK(nome::test::run_nome_in_process("info " + cube + " --rule loop").status == 2);
+  CHECK(nome::test::run_nome_in_process("info " + cube + " --boundary corners").status == 2);
+  CHECK(nome::test::run_nome_in_process("info " + cube + " --offset 0").status == 2);
+  CHECK(nome::test::run_nome_in_process("info " + cube + " --offset -0.5").status == 2);
+  CHECK(nome::test::run_nome_in_process("info " + cube + " --offset nan").status == 2);
+  CHECK(nome::test::run_nome_in_process("info " + cube + " --subdiv-after 1").status == 2);
   const std::string dir = nome::test::scratch_dir("budget");
-  const auto r = run_nome("export " + cube + " --subdiv 12 -o " + dir + "/huge.obj");
+  const auto r = nome::test::run_nome_in_process("export " + cube + " --subdiv 12 -o " + dir + "/huge.obj");
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("100663296 faces") && Catch::Contains("--force"));
   CHECK_FALSE(std::filesystem::exists(dir + "/huge.obj"));
   for (const char* cmd : {"info", "export"}) {
-    const auto help = run_nome(std::string(cmd) + " --help");
+    const auto help = nome::test::run_nome_in_process(std::string(cmd) + " --help");
     for (const char* option :
          {"--subdiv N", "--rule RULE", "--boundary MODE", "--offset D", "--subdiv-after M", "--force"})
       CHECK_THAT(help.out, Catch::Contains(option));

@@ -101,7 +101,7 @@ TEST_CASE("nome render refuses bad requests and writes nothing", "[app]") {
   };
   for (const Bad& bad : cases) {
     INFO(bad.arguments);
-    const test::CommandResult r = test::run_nome(bad.arguments);
+    const test::CommandResult r = test::run_nome_in_process(bad.arguments);
     CHECK(r.status == bad.status);
     CHECK(r.err.find(bad.message) != std::string::npos);
     CHECK(std::filesystem::is_empty(dir));

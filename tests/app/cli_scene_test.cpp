@@ -8,7 +8,7 @@
 using nome::test::run_nome;
 
 namespace {
-const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+using nome::test::assets;
 const std::string originals = nome::test::shared_examples_dir("original");
 }  // namespace
 

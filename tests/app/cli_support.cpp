@@ -44,6 +44,13 @@ CommandResult run_nome_in_process(const std::vector<std::string>& arguments) {
   return r;
 }
 
+CommandResult run_nome_in_process(const std::string& arguments) {
+  std::istringstream words(arguments);
+  std::vector<std::string> split;
+  for (std::string word; words >> word;) split.push_back(word);
+  return run_nome_in_process(split);
+}
+
 CommandResult run_nome(const std::string& arguments) {
   return run_nome_prefixed("", arguments);
 }

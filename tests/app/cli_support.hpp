@@ -5,6 +5,9 @@
 
 namespace nome::test {
 
+// The project's example scenes, with the trailing slash.
+inline const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+
 struct CommandResult {
   int status = -1;
   std::string out;  // stdout
@@ -19,6 +22,8 @@ CommandResult run_nome_prefixed(const std::string& prefix, const std::string& ar
 // The same command run inside the test process (nome::cli::run with std::cout and std::cerr captured): no
 // process start, for tests that run many files; a crash takes the test binary down with it.
 CommandResult run_nome_in_process(const std::vector<std::string>& arguments);
+// The same with the arguments as one string split at spaces (no quoting: paths without spaces).
+CommandResult run_nome_in_process(const std::string& arguments);
 
 // A fresh scratch folder for one test's files.
 std::string scratch_dir(const std::string& name);

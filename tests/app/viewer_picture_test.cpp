@@ -16,7 +16,7 @@ using nome::test::write_script;
 // draws the scene as the real window does, without the panels.
 namespace {
 
-const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+using nome::test::assets;
 
 nome::test::CommandResult run_gl_window(const std::string& arguments) {
   return nome::test::run_window(arguments, nome::test::TestViewer::private_stores(),

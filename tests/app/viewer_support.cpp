@@ -177,6 +177,10 @@ std::optional<glm::dvec2> click_position(const Mesh& mesh, const ScreenProjectio
   return std::nullopt;
 }
 
+std::string click_line(glm::dvec2 p) {
+  return "click " + std::to_string(int(p.x)) + " " + std::to_string(int(p.y)) + "\n";
+}
+
 std::string write_script(const std::string& dir, const std::string& text) {
   const std::string path = dir + "/script.txt";
   std::ofstream(path) << text;

@@ -34,6 +34,9 @@ constexpr int viewer_height = 800;
 // Runs `nome ARGUMENTS` on a fresh virtual display (xvfb-run), as a user's session would run.
 CommandResult run_viewer(const std::string& arguments);
 
+// A script line that clicks the window at p.
+std::string click_line(glm::dvec2 p);
+
 // Writes a viewer script into `dir` and returns its path.
 std::string write_script(const std::string& dir, const std::string& text);
 // A scene of twelve funnels in a ring, each with a bank of its own (b0 .. b11, four sliders each): a

@@ -21,9 +21,7 @@ namespace {
 
 const std::string examples = std::string(NOME_SOURCE_DIR) + "/assets/";
 
-std::string click_line(glm::dvec2 p) {
-  return "click " + std::to_string(int(p.x)) + " " + std::to_string(int(p.y)) + "\n";
-}
+using nome::test::click_line;
 
 // What the scene stage shows of a scene file (before any edit).
 Mesh scene_mesh(const std::string& file) {

@@ -17,16 +17,14 @@ using nome::test::write_script;
 // The real window, end to end: the `nome` binary under Xvfb (GLFW, ImGui's GL backend, the swap).
 namespace {
 
-const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+using nome::test::assets;
 
 // The viewer names the vertices of a flat file as its lines do: v1, v2, ...
 std::string obj_vertex(Index v) {
   return "v" + std::to_string(v + 1);
 }
 
-std::string click_line(glm::dvec2 p) {
-  return "click " + std::to_string(int(p.x)) + " " + std::to_string(int(p.y)) + "\n";
-}
+using nome::test::click_line;
 
 }  // namespace
 

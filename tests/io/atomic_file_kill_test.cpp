@@ -50,7 +50,7 @@ TEST_CASE("a writer killed at random moments leaves the old or the new file, nev
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path target = dir / "scene.nome";
-  constexpr size_t size = 2 << 20;
+  constexpr size_t size = 1 << 19;
   std::string current = version_content(0, size);
   write_version(target, current);
 

@@ -20,7 +20,7 @@ PipelineSettings solid_settings() {
   return s;
 }
 
-SceneDocument funnel_cube() {
+SceneDocument funnel_cube_document() {
   return SceneDocument::from_scene(
       test::load_scene_file(test::assets_dir() + "funnel_cube_consolidated.nome"));
 }
@@ -35,7 +35,7 @@ const Mesh& tick(SceneDocument& doc, Pipeline& pipeline, const std::string& slid
 }  // namespace
 
 TEST_CASE("a slider tick that moves vertices builds no mesh, from the scene to the solid", "[scene]") {
-  SceneDocument doc = funnel_cube();
+  SceneDocument doc = funnel_cube_document();
   Pipeline pipeline;
   pipeline.set_input(doc.pipeline_input());
   pipeline.run(solid_settings());
@@ -56,7 +56,7 @@ TEST_CASE("a slider tick that moves vertices builds no mesh, from the scene to t
 
 TEST_CASE("a slider tick that changes the topology builds the scene mesh and the merged mesh once",
           "[scene]") {
-  SceneDocument doc = funnel_cube();
+  SceneDocument doc = funnel_cube_document();
   Pipeline pipeline;
   pipeline.set_input(doc.pipeline_input());
   const Index faces_at_8 = pipeline.run(solid_settings()).num_faces();

@@ -38,14 +38,14 @@ struct LineScan {
   std::vector<Vec3> positions;
 };
 
-struct Token {
+struct ObjToken {
   int column;  // 1-based
   std::string_view text;
 };
 
 // Whitespace-separated tokens after the statement keyword, up to a comment.
-std::vector<Token> tokens_after(const std::string& text, size_t i) {
-  std::vector<Token> out;
+std::vector<ObjToken> tokens_after(const std::string& text, size_t i) {
+  std::vector<ObjToken> out;
   for (;;) {
     i = text.find_first_not_of(" \t\r", i);
     if (i == std::string::npos || text[i] == '#') return out;
@@ -98,7 +98,7 @@ LineScan scan_lines(const std::filesystem::path& path) {
     if (i == std::string::npos || (i + 1 < text.size() && text.find_first_of(" \t\r#", i + 1) != i + 1))
       continue;
     if (text[i] == 'v') {
-      const std::vector<Token> tokens = tokens_after(text, i + 1);
+      const std::vector<ObjToken> tokens = tokens_after(text, i + 1);
       // x y z, x y z w, or x y z r g b (a common extension for vertex colours).
       if (tokens.size() != 3 && tokens.size() != 4 && tokens.size() != 6)
         fail(line, int(i) + 1,
@@ -117,8 +117,8 @@ LineScan scan_lines(const std::filesystem::path& path) {
       scan.positions.push_back(v);
     } else if (text[i] == 'f') {
       FaceLine face{line, {}};
-      const std::vector<Token> tokens = tokens_after(text, i + 1);
-      for (const Token& t : tokens) {
+      const std::vector<ObjToken> tokens = tokens_after(text, i + 1);
+      for (const ObjToken& t : tokens) {
         const auto index = corner_vertex_index(t.text);
         if (!index)
           fail(line, t.column,

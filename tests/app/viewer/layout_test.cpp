@@ -17,7 +17,7 @@ using viewer::ScreenRect;
 
 namespace {
 
-const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+using nome::test::assets;
 
 // The log's `NAME X Y W H` lines as rectangles (bank headers keyed `bank NAME`).
 std::vector<std::pair<std::string, ScreenRect>> layout_lines(const std::string& log) {

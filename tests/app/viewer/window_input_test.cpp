@@ -16,7 +16,7 @@ using nome::viewer::KeyModifier;
 // The window fed input as GLFW would feed it, in this process on the null renderer.
 namespace {
 
-const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
+using nome::test::assets;
 
 InputFrame at(glm::dvec2 cursor) {
   InputFrame input;

@@ -17,7 +17,7 @@ CurvePoint at(std::vector<CurvePoint> p, double t) {
   return {p[0].position, p[0].scale, p[0].rotate};
 }
 
-SampledCurve sample(DefinitionContext& context, Index decl) {
+SampledCurve sample_bezier_curve(DefinitionContext& context, Index decl) {
   const CurveDecl& c = context.ast().curves[decl];
   const int segs = curve_segments(context, c);
   const std::vector<CurvePoint> cps = control_points(context, c);
@@ -35,7 +35,8 @@ SampledCurve sample(DefinitionContext& context, Index decl) {
   return curve;
 }
 
-void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+void vertex_lists_bezier_curve(const DefinitionScope& scope, Index decl,
+                               std::vector<const std::vector<Name>*>& out) {
   out.push_back(&scope.ast().curves[decl].points);
 }
 
@@ -44,8 +45,8 @@ void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const st
 StatementKind bezier_curve_statement() {
   return with_curve_syntax({.keyword = "beziercurve",
                             .end_keyword = "endbeziercurve",
-                            .vertex_lists = vertex_lists,
-                            .sample = sample,
+                            .vertex_lists = vertex_lists_bezier_curve,
+                            .sample = sample_bezier_curve,
                             .example = "(p0 p1 p2) segs 4"});
 }
 

@@ -28,7 +28,7 @@ void basis(double t, int r, int order, std::vector<double>& n) {
 
 // JIPCAD's curve: uniform knots, sampled over the parameters where a full set of K basis functions
 // lives, so it starts and ends near (not at) the end points. Closed: the first K-1 points again at the end.
-SampledCurve sample(DefinitionContext& context, Index decl) {
+SampledCurve sample_bspline(DefinitionContext& context, Index decl) {
   const CurveDecl& c = context.ast().curves[decl];
   const int order = c.order ? context.whole(*c.order, 2, "order") : 3;
   const int segs = curve_segments(context, c);
@@ -73,7 +73,8 @@ SampledCurve sample(DefinitionContext& context, Index decl) {
   return curve;
 }
 
-void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+void vertex_lists_bspline(const DefinitionScope& scope, Index decl,
+                          std::vector<const std::vector<Name>*>& out) {
   out.push_back(&scope.ast().curves[decl].points);
 }
 
@@ -82,8 +83,8 @@ void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const st
 StatementKind bspline_statement() {
   return with_curve_syntax({.keyword = "bspline",
                             .end_keyword = "endbspline",
-                            .vertex_lists = vertex_lists,
-                            .sample = sample,
+                            .vertex_lists = vertex_lists_bspline,
+                            .sample = sample_bspline,
                             .example = "order 3 (p0 p1 p2 p3) segs 6"});
 }
 

@@ -20,7 +20,7 @@ void parse_option(StatementParser& parser, CurveDecl& c) {
   }
 }
 
-void parse(StatementParser& parser, Index kind) {
+void parse_curve_syntax(StatementParser& parser, Index kind) {
   const StatementKind& row = statement_kinds()[kind];
   parser.set_statement_end(row.end_keyword);
   parser.take();
@@ -40,7 +40,7 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().curves.push_back(std::move(c));
 }
 
-void save(SceneWriter& writer, Index kind) {
+void save_curve_syntax(SceneWriter& writer, Index kind) {
   const StatementKind& row = statement_kinds()[kind];
   for (const CurveDecl& c : writer.ast().curves) {
     if (c.kind != kind) continue;
@@ -52,12 +52,12 @@ void save(SceneWriter& writer, Index kind) {
   }
 }
 
-void declare(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) {
+void declare_curve_syntax(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.curves.size(); ++i)
     if (ast.curves[i].kind == kind) out.push_back({&ast.curves[i].name, i});
 }
 
-Piece evaluate(DefinitionContext& context, Index decl) {
+Piece evaluate_curve_syntax(DefinitionContext& context, Index decl) {
   const SampledCurve curve = statement_kinds()[context.ast().curves[decl].kind].sample(context, decl);
   add_curve_rim(context.piece(), curve, "v");
   return std::move(context.piece());
@@ -66,10 +66,10 @@ Piece evaluate(DefinitionContext& context, Index decl) {
 }  // namespace
 
 StatementKind with_curve_syntax(StatementKind kind) {
-  kind.parse = parse;
-  kind.save = save;
-  kind.declare = declare;
-  kind.evaluate = evaluate;
+  kind.parse = parse_curve_syntax;
+  kind.save = save_curve_syntax;
+  kind.declare = declare_curve_syntax;
+  kind.evaluate = evaluate_curve_syntax;
   return kind;
 }
 

@@ -7,25 +7,25 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index) {
+void parse_face(StatementParser& parser, Index) {
   parser.ast().faces.push_back(parser.face_statement());
 }
 
-void save(SceneWriter& writer, Index) {
+void save_face(SceneWriter& writer, Index) {
   for (const FaceDecl& f : writer.ast().faces) writer.face(f, "");
 }
 
-void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+void declare_face(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.faces.size(); ++i) out.push_back({&ast.faces[i].name, i});
 }
 
-Piece evaluate(DefinitionContext& context, Index decl) {
+Piece evaluate_face(DefinitionContext& context, Index decl) {
   const FaceDecl& f = context.ast().faces[decl];
   context.add_face(f.vertices, f.name.text, f.surface);
   return std::move(context.piece());
 }
 
-void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+void vertex_lists_face(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
   out.push_back(&scope.ast().faces[decl].vertices);
 }
 
@@ -35,11 +35,11 @@ StatementKind face_statement() {
   return {.keyword = "face",
           .end_keyword = "endface",
           .is_slf = true,
-          .parse = parse,
-          .save = save,
-          .declare = declare,
-          .evaluate = evaluate,
-          .vertex_lists = vertex_lists,
+          .parse = parse_face,
+          .save = save_face,
+          .declare = declare_face,
+          .evaluate = evaluate_face,
+          .vertex_lists = vertex_lists_face,
           .example = "(p0 p1 p2)"};
 }
 

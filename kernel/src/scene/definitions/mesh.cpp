@@ -29,7 +29,7 @@ void sharp(StatementParser& parser, std::vector<SharpDecl>& out) {
   parser.expect_word("endsharp");
 }
 
-void parse(StatementParser& parser, Index kind) {
+void parse_mesh(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
   MeshDecl m;
@@ -56,7 +56,7 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().meshes.push_back(std::move(m));
 }
 
-void save(SceneWriter& writer, Index) {
+void save_mesh(SceneWriter& writer, Index) {
   for (const MeshDecl& m : writer.ast().meshes) {
     writer.out() << "mesh " << m.name.text << "\n";
     for (const FaceDecl& f : m.faces) writer.face(f, "    ");
@@ -67,11 +67,11 @@ void save(SceneWriter& writer, Index) {
   }
 }
 
-void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+void declare_mesh(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.meshes.size(); ++i) out.push_back({&ast.meshes[i].name, i});
 }
 
-Piece evaluate(DefinitionContext& context, Index decl) {
+Piece evaluate_mesh(DefinitionContext& context, Index decl) {
   const MeshDecl& m = context.ast().meshes[decl];
   for (const FaceDecl& f : m.faces) context.add_face(f.vertices, f.name.text, f.surface);
   // A sharp chain v1-v2, v2-v3, ... marks the edges between consecutive vertices; a weight is read (its
@@ -86,7 +86,7 @@ Piece evaluate(DefinitionContext& context, Index decl) {
   return std::move(context.piece());
 }
 
-void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+void vertex_lists_mesh(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
   for (const FaceDecl& f : scope.ast().meshes[decl].faces) out.push_back(&f.vertices);
 }
 
@@ -95,11 +95,11 @@ void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const st
 StatementKind mesh_statement() {
   return {.keyword = "mesh",
           .end_keyword = "endmesh",
-          .parse = parse,
-          .save = save,
-          .declare = declare,
-          .evaluate = evaluate,
-          .vertex_lists = vertex_lists,
+          .parse = parse_mesh,
+          .save = save_mesh,
+          .declare = declare_mesh,
+          .evaluate = evaluate_mesh,
+          .vertex_lists = vertex_lists_mesh,
           .example = "face f (p0 p1 p2) endface face g (p0 p2 p3) endface sharp (p0 p2) endsharp"};
 }
 

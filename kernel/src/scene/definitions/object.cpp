@@ -7,7 +7,7 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index kind) {
+void parse_object(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   parser.take();
@@ -18,16 +18,16 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().objects.push_back(std::move(o));
 }
 
-void save(SceneWriter& writer, Index) {
+void save_object(SceneWriter& writer, Index) {
   for (const ObjectDecl& o : writer.ast().objects)
     writer.out() << "object " << o.name.text << " (" << writer.names(o.faces) << ") endobject\n";
 }
 
-void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+void declare_object(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.objects.size(); ++i) out.push_back({&ast.objects[i].name, i});
 }
 
-Piece evaluate(DefinitionContext& context, Index decl) {
+Piece evaluate_object(DefinitionContext& context, Index decl) {
   const SceneAst& ast = context.ast();
   for (const Name& face : ast.objects[decl].faces) {
     const Index f = context.top_level_face(face.text);
@@ -42,7 +42,8 @@ Piece evaluate(DefinitionContext& context, Index decl) {
   return std::move(context.piece());
 }
 
-void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+void vertex_lists_object(const DefinitionScope& scope, Index decl,
+                         std::vector<const std::vector<Name>*>& out) {
   for (const Name& face : scope.ast().objects[decl].faces)
     if (const Index f = scope.top_level_face(face.text); f != no_index)
       out.push_back(&scope.ast().faces[f].vertices);
@@ -54,11 +55,11 @@ StatementKind object_statement() {
   return {.keyword = "object",
           .end_keyword = "endobject",
           .is_slf = true,
-          .parse = parse,
-          .save = save,
-          .declare = declare,
-          .evaluate = evaluate,
-          .vertex_lists = vertex_lists,
+          .parse = parse_object,
+          .save = save_object,
+          .declare = declare_object,
+          .evaluate = evaluate_object,
+          .vertex_lists = vertex_lists_object,
           .example = "(pf)"};
 }
 

@@ -8,7 +8,7 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index kind) {
+void parse_polyline(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   parser.take();
@@ -31,18 +31,18 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().polylines.push_back(std::move(p));
 }
 
-void save(SceneWriter& writer, Index) {
+void save_polyline(SceneWriter& writer, Index) {
   const char* loop = writer.ast().dialect.dialect == Dialect::jipcad ? " closed" : " isloop";
   for (const PolylineDecl& p : writer.ast().polylines)
     writer.out() << "polyline " << p.name.text << " (" << writer.names(p.vertices) << ")"
                  << (p.is_loop ? loop : "") << " endpolyline\n";
 }
 
-void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+void declare_polyline(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.polylines.size(); ++i) out.push_back({&ast.polylines[i].name, i});
 }
 
-Piece evaluate(DefinitionContext& context, Index decl) {
+Piece evaluate_polyline(DefinitionContext& context, Index decl) {
   const PolylineDecl& line = context.ast().polylines[decl];
   context.add_rim(line.name, line.vertices, line.is_loop);
   return std::move(context.piece());
@@ -50,7 +50,7 @@ Piece evaluate(DefinitionContext& context, Index decl) {
 
 // As a sweep's path or cross-section: its points (control points with their values), closed by
 // `isloop` or by ending on its first point.
-SampledCurve sample(DefinitionContext& context, Index decl) {
+SampledCurve sample_polyline(DefinitionContext& context, Index decl) {
   const PolylineDecl& line = context.ast().polylines[decl];
   SampledCurve curve;
   for (const Name& n : line.vertices) curve.points.push_back(curve_point(context, n));
@@ -59,7 +59,8 @@ SampledCurve sample(DefinitionContext& context, Index decl) {
   return curve;
 }
 
-void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+void vertex_lists_polyline(const DefinitionScope& scope, Index decl,
+                           std::vector<const std::vector<Name>*>& out) {
   out.push_back(&scope.ast().polylines[decl].vertices);
 }
 
@@ -68,12 +69,12 @@ void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const st
 StatementKind polyline_statement() {
   return {.keyword = "polyline",
           .end_keyword = "endpolyline",
-          .parse = parse,
-          .save = save,
-          .declare = declare,
-          .evaluate = evaluate,
-          .vertex_lists = vertex_lists,
-          .sample = sample,
+          .parse = parse_polyline,
+          .save = save_polyline,
+          .declare = declare_polyline,
+          .evaluate = evaluate_polyline,
+          .vertex_lists = vertex_lists_polyline,
+          .sample = sample_polyline,
           .example = "(p0 p1 p2) isloop"};
 }
 

@@ -26,15 +26,15 @@ bool is_count(double x) {
 
 // The two orders meet in one statement: the argument that is a whole number of at least 3 is the
 // count (JIPCAD's `(0.7 20)`, NOME 2.x's `(20 1)`); when both are, the first is (NOME 2.x's order).
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_circle(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   const bool is_count_first = is_count(c.number(a[0])) || !is_count(c.number(a[1]));
   const Value& count = a[is_count_first ? 0 : 1];
   return circle(c.whole(count, 3, "n"), c.positive(a[is_count_first ? 1 : 0], "r"));
 }
 
-SampledCurve sample(DefinitionContext& c, Index decl) {
-  const Piece ring = evaluate(c, decl);
+SampledCurve sample_circle(DefinitionContext& c, Index decl) {
+  const Piece ring = evaluate_circle(c, decl);
   SampledCurve curve{{}, true};
   for (const Vec3& p : ring.soup.positions) curve.points.push_back({p});
   return curve;
@@ -47,8 +47,8 @@ StatementKind circle_statement() {
                                 .end_keyword = "endcircle",
                                 .signature = "(n r)",
                                 .argument_count = 2,
-                                .evaluate = evaluate,
-                                .sample = sample,
+                                .evaluate = evaluate_circle,
+                                .sample = sample_circle,
                                 .example = "(6 1.5)"});
 }
 

@@ -8,7 +8,7 @@
 namespace nome::scene {
 namespace {
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_cone(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   CylinderParams p;
   p.radius = c.positive(a[0], "radius");
@@ -34,7 +34,7 @@ StatementKind cone_statement() {
                                 .end_keyword = "endcone",
                                 .signature = "(radius height hgt_max theta_max theta_segs [botcap] [topcap])",
                                 .argument_count = 5,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_cone,
                                 .example = "(1 2 1 360 6 botcap)"});
 }
 

@@ -49,7 +49,7 @@ Piece cylinder(const CylinderParams& p) {
 
 namespace {
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_cylinder(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   CylinderParams p;
   p.radius = p.top_radius = c.positive(a[0], "radius");
@@ -69,7 +69,7 @@ StatementKind cylinder_statement() {
                                 .end_keyword = "endcylinder",
                                 .signature = "(radius height theta_max theta_segs [botcap] [topcap])",
                                 .argument_count = 4,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_cylinder,
                                 .example = "(1 2 360 6 botcap topcap)"});
 }
 

@@ -28,7 +28,7 @@ Piece disk(const DiskParams& p) {
 
 namespace {
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_disk(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   DiskParams p;
   p.radius = c.positive(a[0], "radius");
@@ -44,7 +44,7 @@ StatementKind disk_statement() {
                                 .end_keyword = "enddisk",
                                 .signature = "(radius theta_max theta_segs)",
                                 .argument_count = 3,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_disk,
                                 .example = "(1 270 6)"});
 }
 

@@ -37,7 +37,7 @@ Piece dupin(const DupinParams& p) {
 
 namespace {
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_dupin(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   DupinParams p;
   p.a = c.positive(a[0], "a");
@@ -61,7 +61,7 @@ StatementKind dupin_statement() {
                                 .end_keyword = "enddupin",
                                 .signature = "(a b c d u v segs)",
                                 .argument_count = 7,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_dupin,
                                 .example = "(1 0.98 0.2 0.5 2 2 6)"});
 }
 

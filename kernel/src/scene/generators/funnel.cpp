@@ -16,7 +16,7 @@ Piece funnel(const FunnelParams& p) {
 namespace {
 
 // The 2016 report writes (n ro ratio h), the successor (radius ratio height segs): the same funnel.
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_funnel(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   if (c.ast().dialect.dialect == Dialect::jipcad)
     return funnel(
@@ -31,7 +31,7 @@ StatementKind funnel_statement() {
                                 .end_keyword = "endfunnel",
                                 .signature = "(n ro ratio h)",
                                 .argument_count = 4,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_funnel,
                                 .example = "(4 1 0.5 1)"});
 }
 

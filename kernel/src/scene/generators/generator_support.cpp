@@ -37,7 +37,7 @@ bool is_in_signature(const StatementKind& row, const std::string& word) {
   return row.signature.find(word) != std::string_view::npos;
 }
 
-void parse(StatementParser& parser, Index kind) {
+void parse_generator_support(StatementParser& parser, Index kind) {
   const StatementKind& row = statement_kinds()[kind];
   parser.set_statement_end(row.end_keyword);
   const Token keyword = parser.take();
@@ -71,7 +71,7 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().generators.push_back(std::move(g));
 }
 
-void save(SceneWriter& writer, Index kind) {
+void save_generator_support(SceneWriter& writer, Index kind) {
   const StatementKind& row = statement_kinds()[kind];
   for (const GeneratorDecl& g : writer.ast().generators)
     if (g.kind == kind) {
@@ -84,7 +84,7 @@ void save(SceneWriter& writer, Index kind) {
     }
 }
 
-void declare(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) {
+void declare_generator_support(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.generators.size(); ++i)
     if (ast.generators[i].kind == kind) out.push_back({&ast.generators[i].name, i});
 }
@@ -92,9 +92,9 @@ void declare(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) {
 }  // namespace
 
 StatementKind with_generator_syntax(StatementKind kind) {
-  kind.parse = parse;
-  kind.save = save;
-  kind.declare = declare;
+  kind.parse = parse_generator_support;
+  kind.save = save_generator_support;
+  kind.declare = declare_generator_support;
   return kind;
 }
 

@@ -23,7 +23,7 @@ Piece helix(double radius, double rise, double theta_max, int segs) {
 
 namespace {
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_helix(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   const double theta_max = number_in(c, a[2], -360000, 360000, "theta_max");
   if (theta_max == 0) throw EvaluationError(a[2].location, "theta_max must not be 0");
@@ -37,7 +37,7 @@ StatementKind helix_statement() {
                                 .end_keyword = "endhelix",
                                 .signature = "(radius rise theta_max segs)",
                                 .argument_count = 4,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_helix,
                                 .example = "(1 0.2 720 24)"});
 }
 

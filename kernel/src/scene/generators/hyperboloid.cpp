@@ -50,7 +50,7 @@ Piece hyperboloid(const HyperboloidParams& p) {
 
 namespace {
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_hyperboloid(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   HyperboloidParams p;
   p.a = c.positive(a[0], "a");
@@ -72,7 +72,7 @@ StatementKind hyperboloid_statement() {
                                 .end_keyword = "endhyperboloid",
                                 .signature = "(a c u_max u_segs v_segs sheet)",
                                 .argument_count = 6,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_hyperboloid,
                                 .example = "(1 1 1 4 8 0)"});
 }
 

@@ -108,7 +108,7 @@ class Contour {
   std::unordered_map<std::uint64_t, Index> crossings_;
 };
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_implicit_surface(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   constexpr std::array<std::string_view, 3> variables{"x", "y", "z"};
   const std::vector<FunctionString> f = read_functions(c, decl, {"func"}, variables);
@@ -140,7 +140,7 @@ StatementKind implicit_statement() {
        .end_keyword = "endgenimplicitsurf",
        .signature = "func [f(x,y,z)] (x_min x_max y_min y_max z_min z_max x_segs y_segs z_segs)",
        .argument_count = 9,
-       .evaluate = evaluate,
+       .evaluate = evaluate_implicit_surface,
        .example = "func [x^2+y^2+z^2-1] (-1.5 1.5 -1.5 1.5 -1.5 1.5 3 3 3)"});
 }
 

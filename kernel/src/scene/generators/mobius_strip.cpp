@@ -45,7 +45,7 @@ namespace {
 
 // The 2016 meaning needs a cut (its cuts count the quads across); JIPCAD's files write 0 cuts for the
 // uncut band. Until the file's dialect decides, 0 cuts reads the arguments in JIPCAD's meaning.
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_mobius_strip(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   const MobiusStripParams p{c.positive(a[0], "radius"), c.whole(a[1], 0, "twists"), c.whole(a[2], 0, "cuts"),
                             c.whole(a[3], 3, "segs")};
@@ -59,7 +59,7 @@ StatementKind mobius_strip_statement() {
                                 .end_keyword = "endmobiusstrip",
                                 .signature = "(radius twists cuts segs)",
                                 .argument_count = 4,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_mobius_strip,
                                 .example = "(1 1 2 12)"});
 }
 

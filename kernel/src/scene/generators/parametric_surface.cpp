@@ -9,7 +9,7 @@ namespace {
 
 // The grid stays open: whether two sides of an arbitrary parametrisation meet, and how (a cylinder, a
 // Möbius band, a pole), is left to the merge stage, which joins coincident borders by position.
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_parametric_surface(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   constexpr std::array<std::string_view, 2> variables{"u", "v"};
   const std::vector<FunctionString> f = read_functions(c, decl, {"funcX", "funcY", "funcZ"}, variables);
@@ -36,7 +36,7 @@ StatementKind parametric_statement() {
        .end_keyword = "endgenparametricsurf",
        .signature = "funcX [x(u,v)] funcY [y(u,v)] funcZ [z(u,v)] (u_min u_max v_min v_max u_segs v_segs)",
        .argument_count = 6,
-       .evaluate = evaluate,
+       .evaluate = evaluate_parametric_surface,
        .example = "funcX [u] funcY [v] funcZ [sin(u)*cos(v)] (0 3 0 2 4 3)"});
 }
 

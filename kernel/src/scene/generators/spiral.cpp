@@ -24,7 +24,7 @@ Piece spiral(double rate, double angle, int segs) {
 
 namespace {
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_spiral(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   const double angle = number_in(c, a[1], -360000, 360000, "angle");
   if (angle == 0) throw EvaluationError(a[1].location, "angle must not be 0");
@@ -38,7 +38,7 @@ StatementKind spiral_statement() {
                                 .end_keyword = "endspiral",
                                 .signature = "(rate angle segs)",
                                 .argument_count = 3,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_spiral,
                                 .example = "(1 1080 36)"});
 }
 

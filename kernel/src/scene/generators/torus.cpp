@@ -53,7 +53,7 @@ TorusParams arguments(DefinitionContext& c, const std::vector<Value>& a) {
   return p;
 }
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_torus(DefinitionContext& c, Index decl) {
   TorusParams p = arguments(c, generator_arguments(c, decl));
   // A closed ring of fewer than three segments would have two faces on one pair of vertices.
   const Value& where = generator_arguments(c, decl).back();
@@ -72,7 +72,7 @@ StatementKind torus_statement() {
        .signature = "(rad_maj rad_min theta_max phi_min phi_max segs_theta segs_phi)",
        .argument_count = 7,
        .alternative_argument_count = 6,
-       .evaluate = evaluate,
+       .evaluate = evaluate_torus,
        .example = "(2 0.5 360 0 360 8 6)"});
 }
 

@@ -68,7 +68,7 @@ int signed_whole(DefinitionContext& c, const Value& v, const char* what) {
   return int(std::lround(x));
 }
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_torus_knot(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   TorusKnotParams p;
   p.symmetry = signed_whole(c, a[0], "symm");
@@ -95,7 +95,7 @@ StatementKind torus_knot_statement() {
                                 .end_keyword = "endtorusknot",
                                 .signature = "(symm turns rad_maj rad_min rad_tube segs_circ segs_sweep)",
                                 .argument_count = 7,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_torus_knot,
                                 .example = "(3 2 2 1 0.2 6 48)"});
 }
 

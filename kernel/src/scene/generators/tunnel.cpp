@@ -20,7 +20,7 @@ namespace {
 
 // Without the last two arguments the tunnel is symmetric.
 // The successor's dialect writes (radius ratio height segs) and has no lower-half arguments.
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_tunnel(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   if (c.ast().dialect.dialect == Dialect::jipcad) {
     if (a.size() != 4)
@@ -45,7 +45,7 @@ StatementKind tunnel_statement() {
                                 .signature = "(n ro ratio h [ratio_low h_low])",
                                 .argument_count = 4,
                                 .alternative_argument_count = 6,
-                                .evaluate = evaluate,
+                                .evaluate = evaluate_tunnel,
                                 .example = "(5 1 0.5 2 0.25 1)"});
 }
 

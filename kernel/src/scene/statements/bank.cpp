@@ -52,7 +52,7 @@ void shown_list(StatementParser& parser, BankDecl& b) {
   b.shown = std::move(shown);
 }
 
-void parse(StatementParser& parser, Index kind) {
+void parse_bank(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
   BankDecl b;
@@ -73,7 +73,7 @@ void parse(StatementParser& parser, Index kind) {
 }
 
 // The sliders' current values, not those of the text that was read.
-void save(SceneWriter& writer, Index) {
+void save_bank(SceneWriter& writer, Index) {
   const Scene& scene = writer.scene();
   for (const Bank& bank : scene.banks()) {
     writer.out() << "bank " << bank.name << "\n";
@@ -96,7 +96,7 @@ void save(SceneWriter& writer, Index) {
 }  // namespace
 
 StatementKind bank_statement() {
-  return {.keyword = "bank", .end_keyword = "endbank", .parse = parse, .save = save};
+  return {.keyword = "bank", .end_keyword = "endbank", .parse = parse_bank, .save = save_bank};
 }
 
 }  // namespace nome::scene

@@ -7,7 +7,7 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index kind) {
+void parse_control_point(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   parser.take();
@@ -36,7 +36,7 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().control_points.push_back(std::move(c));
 }
 
-void save(SceneWriter& writer, Index) {
+void save_control_point(SceneWriter& writer, Index) {
   for (const ControlPointDecl& c : writer.ast().control_points) {
     std::ostream& out = writer.out();
     out << "controlpoint " << c.name.text << " point " << c.point.text;
@@ -50,7 +50,10 @@ void save(SceneWriter& writer, Index) {
 }  // namespace
 
 StatementKind control_point_statement() {
-  return {.keyword = "controlpoint", .end_keyword = "endcontrolpoint", .parse = parse, .save = save};
+  return {.keyword = "controlpoint",
+          .end_keyword = "endcontrolpoint",
+          .parse = parse_control_point,
+          .save = save_control_point};
 }
 
 }  // namespace nome::scene

@@ -6,7 +6,7 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index kind) {
+void parse_group(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
   GroupDecl g;
@@ -24,7 +24,7 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().groups.push_back(std::move(g));
 }
 
-void save(SceneWriter& writer, Index) {
+void save_group(SceneWriter& writer, Index) {
   for (const GroupDecl& g : writer.ast().groups) {
     writer.out() << "group " << g.name.text << "\n";
     for (const InstanceDecl& i : g.instances) writer.instance(i, "    ");
@@ -32,7 +32,7 @@ void save(SceneWriter& writer, Index) {
   }
 }
 
-void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+void declare_group(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.groups.size(); ++i) out.push_back({&ast.groups[i].name, i});
 }
 
@@ -42,9 +42,9 @@ StatementKind group_statement() {
   return {.keyword = "group",
           .end_keyword = "endgroup",
           .is_slf = true,
-          .parse = parse,
-          .save = save,
-          .declare = declare};
+          .parse = parse_group,
+          .save = save_group,
+          .declare = declare_group};
 }
 
 }  // namespace nome::scene

@@ -61,7 +61,7 @@ void read_included(StatementParser& parser, const Token& at, const std::string& 
   parser.ast().included_files.push_back(path.string());
 }
 
-void parse(StatementParser& parser, Index kind) {
+void parse_include(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   const Token opener = parser.take();
@@ -71,12 +71,12 @@ void parse(StatementParser& parser, Index kind) {
 }
 
 // The included statements are saved with the scene's own (the writer writes one self-contained file).
-void save(SceneWriter&, Index) {}
+void save_include(SceneWriter&, Index) {}
 
 }  // namespace
 
 StatementKind include_statement() {
-  return {.keyword = "include", .end_keyword = "endinclude", .parse = parse, .save = save};
+  return {.keyword = "include", .end_keyword = "endinclude", .parse = parse_include, .save = save_include};
 }
 
 }  // namespace nome::scene

@@ -6,11 +6,11 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index) {
+void parse_instance(StatementParser& parser, Index) {
   parser.ast().instances.push_back(parser.instance_statement());
 }
 
-void save(SceneWriter& writer, Index) {
+void save_instance(SceneWriter& writer, Index) {
   for (const InstanceDecl& i : writer.ast().instances)
     if (i.stage == no_index) writer.instance(i, "");  // a stage block writes its own
   for (const InstanceDecl& i : writer.ast().render_instances) writer.instance(i, "");
@@ -19,7 +19,11 @@ void save(SceneWriter& writer, Index) {
 }  // namespace
 
 StatementKind instance_statement() {
-  return {.keyword = "instance", .end_keyword = "endinstance", .is_slf = true, .parse = parse, .save = save};
+  return {.keyword = "instance",
+          .end_keyword = "endinstance",
+          .is_slf = true,
+          .parse = parse_instance,
+          .save = save_instance};
 }
 
 }  // namespace nome::scene

@@ -6,7 +6,7 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index kind) {
+void parse_point(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   parser.take();
@@ -17,7 +17,7 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().points.push_back(std::move(p));
 }
 
-void save(SceneWriter& writer, Index) {
+void save_point(SceneWriter& writer, Index) {
   for (const PointDecl& p : writer.ast().points)
     writer.out() << "point " << p.name.text << " (" << writer.values(p.xyz, 3) << ") endpoint\n";
 }
@@ -25,7 +25,11 @@ void save(SceneWriter& writer, Index) {
 }  // namespace
 
 StatementKind point_statement() {
-  return {.keyword = "point", .end_keyword = "endpoint", .is_slf = true, .parse = parse, .save = save};
+  return {.keyword = "point",
+          .end_keyword = "endpoint",
+          .is_slf = true,
+          .parse = parse_point,
+          .save = save_point};
 }
 
 }  // namespace nome::scene

@@ -69,7 +69,7 @@ void parse_color(StatementParser& parser, Index kind) {
   parser.ast().render.push_back(std::move(r));
 }
 
-void save(SceneWriter& writer, Index kind) {
+void save_render_statements(SceneWriter& writer, Index kind) {
   const StatementKind& row = statement_kinds()[kind];
   for (const RenderDecl& r : writer.ast().render) {
     if (r.keyword != row.keyword) continue;
@@ -92,7 +92,8 @@ void save(SceneWriter& writer, Index kind) {
 }
 
 StatementKind block(std::string_view keyword, std::string_view end_keyword) {
-  return {.keyword = keyword, .end_keyword = end_keyword, .parse = parse_block, .save = save};
+  return {
+      .keyword = keyword, .end_keyword = end_keyword, .parse = parse_block, .save = save_render_statements};
 }
 
 StatementKind color(std::string_view keyword, std::string_view end_keyword,
@@ -101,7 +102,7 @@ StatementKind color(std::string_view keyword, std::string_view end_keyword,
           .end_keyword = end_keyword,
           .alternative_end_keyword = alternative_end_keyword,
           .parse = parse_color,
-          .save = save};
+          .save = save_render_statements};
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ void stage_settings(StatementParser& parser, StageDecl& stage) {
   if (!has_amount) parser.fail(parser.peek(), "'" + std::string(w.amount) + "' and its value");
 }
 
-void parse(StatementParser& parser, StageKind kind, std::string_view end) {
+void parse_stage_blocks(StatementParser& parser, StageKind kind, std::string_view end) {
   const Token opener = parser.take();
   StageDecl stage{
       kind, parser.take_name("a block name"), std::nullopt, {}, std::nullopt, std::nullopt, opener.location};
@@ -68,15 +68,15 @@ void parse(StatementParser& parser, StageKind kind, std::string_view end) {
 }
 
 void parse_subdivision(StatementParser& parser, Index kind) {
-  parse(parser, StageKind::subdivision, statement_kinds()[kind].end_keyword);
+  parse_stage_blocks(parser, StageKind::subdivision, statement_kinds()[kind].end_keyword);
 }
 
 void parse_offset(StatementParser& parser, Index kind) {
-  parse(parser, StageKind::offset, statement_kinds()[kind].end_keyword);
+  parse_stage_blocks(parser, StageKind::offset, statement_kinds()[kind].end_keyword);
 }
 
 // Each block with its settings and the root instances written in it.
-void save(SceneWriter& writer, StageKind kind, std::string_view keyword) {
+void save_stage_blocks(SceneWriter& writer, StageKind kind, std::string_view keyword) {
   const SceneAst& ast = writer.ast();
   const StageWords w = words(kind);
   for (Index s = 0; s < ast.stages.size(); ++s) {
@@ -94,11 +94,11 @@ void save(SceneWriter& writer, StageKind kind, std::string_view keyword) {
 }
 
 void save_subdivision(SceneWriter& writer, Index) {
-  save(writer, StageKind::subdivision, "subdivision");
+  save_stage_blocks(writer, StageKind::subdivision, "subdivision");
 }
 
 void save_offset(SceneWriter& writer, Index) {
-  save(writer, StageKind::offset, "offset");
+  save_stage_blocks(writer, StageKind::offset, "offset");
 }
 
 }  // namespace

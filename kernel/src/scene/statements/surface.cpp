@@ -6,7 +6,7 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index kind) {
+void parse_surface(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   const Token t = parser.take();
@@ -22,7 +22,7 @@ void parse(StatementParser& parser, Index kind) {
     parser.ast().surfaces.push_back(std::move(s));
 }
 
-void save(SceneWriter& writer, Index) {
+void save_surface(SceneWriter& writer, Index) {
   for (const SurfaceDecl& s : writer.ast().surfaces)
     writer.out() << "surface " << s.name.text << " color (" << writer.values(s.rgb, 3) << ") endsurface\n";
 }
@@ -30,7 +30,11 @@ void save(SceneWriter& writer, Index) {
 }  // namespace
 
 StatementKind surface_statement() {
-  return {.keyword = "surface", .end_keyword = "endsurface", .is_slf = true, .parse = parse, .save = save};
+  return {.keyword = "surface",
+          .end_keyword = "endsurface",
+          .is_slf = true,
+          .parse = parse_surface,
+          .save = save_surface};
 }
 
 }  // namespace nome::scene

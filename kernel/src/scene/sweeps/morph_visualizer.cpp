@@ -9,7 +9,7 @@
 namespace nome::scene {
 namespace {
 
-void parse(StatementParser& parser, Index kind) {
+void parse_morph_visualizer(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   parser.take();
@@ -23,17 +23,17 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().morph_visualizers.push_back(std::move(m));
 }
 
-void save(SceneWriter& writer, Index) {
+void save_morph_visualizer(SceneWriter& writer, Index) {
   for (const MorphVisualizerDecl& m : writer.ast().morph_visualizers)
     writer.out() << "morphvisualizer " << m.name.text << " sweep " << m.sweep.text << " index "
                  << writer.values(&m.index, 1) << " endmorphvisualizer\n";
 }
 
-void declare(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
+void declare_morph_visualizer(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.morph_visualizers.size(); ++i) out.push_back({&ast.morph_visualizers[i].name, i});
 }
 
-Piece evaluate(DefinitionContext& context, Index decl) {
+Piece evaluate_morph_visualizer(DefinitionContext& context, Index decl) {
   const MorphVisualizerDecl& m = context.ast().morph_visualizers[decl];
   const auto d = context.definition(m.sweep.text);
   if (!d || statement_kinds()[d->first].declare != statement_kinds()[*find_statement_kind("sweep")].declare)
@@ -61,10 +61,10 @@ Piece evaluate(DefinitionContext& context, Index decl) {
 StatementKind morph_visualizer_statement() {
   return {.keyword = "morphvisualizer",
           .end_keyword = "endmorphvisualizer",
-          .parse = parse,
-          .save = save,
-          .declare = declare,
-          .evaluate = evaluate,
+          .parse = parse_morph_visualizer,
+          .save = save_morph_visualizer,
+          .declare = declare_morph_visualizer,
+          .evaluate = evaluate_morph_visualizer,
           .example =
               "sweep m index (1) endmorphvisualizer\ncircle c (4 0.2) endcircle\n"
               "controlpoint q point p1 crosssection c endcontrolpoint\npolyline pl (p0 q p2) endpolyline\n"

@@ -47,7 +47,7 @@ void path_block(StatementParser& parser, SweepDecl& s) {
   parser.take();
 }
 
-void parse(StatementParser& parser, Index kind) {
+void parse_sweep_syntax(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   parser.take();
@@ -77,7 +77,7 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().sweeps.push_back(std::move(s));
 }
 
-void save(SceneWriter& writer, Index kind) {
+void save_sweep_syntax(SceneWriter& writer, Index kind) {
   for (const SweepDecl& s : writer.ast().sweeps) {
     if (s.kind != kind) continue;
     std::ostream& out = writer.out();
@@ -97,13 +97,14 @@ void save(SceneWriter& writer, Index kind) {
   }
 }
 
-void declare(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) {
+void declare_sweep_syntax(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.sweeps.size(); ++i)
     if (ast.sweeps[i].kind == kind) out.push_back({&ast.sweeps[i].name, i});
 }
 
 // The vertices the sweep's curves name (a path through other placements' vertices waits for them).
-void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+void vertex_lists_sweep_syntax(const DefinitionScope& scope, Index decl,
+                               std::vector<const std::vector<Name>*>& out) {
   const SweepDecl& s = scope.ast().sweeps[decl];
   for (const Name* curve : {&s.path, s.cross_section ? &*s.cross_section : nullptr}) {
     if (!curve) continue;
@@ -113,7 +114,7 @@ void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const st
   }
 }
 
-Piece evaluate(DefinitionContext& context, Index decl) {
+Piece evaluate_sweep_syntax(DefinitionContext& context, Index decl) {
   const SweepDecl& s = context.ast().sweeps[decl];
   const SweepInput in = sweep_input(context, s);
   const std::string what = std::string(statement_kinds()[s.kind].keyword) + " '" + s.name.text + "': ";
@@ -130,11 +131,11 @@ Piece evaluate(DefinitionContext& context, Index decl) {
 }  // namespace
 
 StatementKind with_sweep_syntax(StatementKind kind) {
-  kind.parse = parse;
-  kind.save = save;
-  kind.declare = declare;
-  kind.vertex_lists = vertex_lists;
-  kind.evaluate = evaluate;
+  kind.parse = parse_sweep_syntax;
+  kind.save = save_sweep_syntax;
+  kind.declare = declare_sweep_syntax;
+  kind.vertex_lists = vertex_lists_sweep_syntax;
+  kind.evaluate = evaluate_sweep_syntax;
   return kind;
 }
 
