@@ -234,6 +234,40 @@ TEST_CASE("a sweep follows its points' sliders, control points scale and turn it
   CHECK(test::vertex_position(s, "i_v1_0").z == Approx(2.5));
 }
 
+TEST_CASE("a slider that moves a sweep's path moves its vertices only; one that changes its join remakes it",
+          "[scene]") {
+  const auto text = [](double lift, double twist) {
+    return "bank b set lift " + std::to_string(lift) + " -1 1 0.1 set tw " + std::to_string(twist) +
+           " 0 360 1 endbank\n" + std::string(square_points) +
+           "point k0 (3 0 {expr $b_lift}) endpoint\npoint k1 (0 3 0) endpoint\npoint k2 (-3 0 0) endpoint\n"
+           "point k3 (0 -3 0) endpoint\nbspline pa order 3 (k0 k1 k2 k3 k0 k1) segs 40 endbspline\n"
+           "sweep s crosssection sq endcrosssection path pa mintorsion twist ({expr $b_tw}) endpath "
+           "endsweep\n"
+           "instance i s translate (1 2 3) endinstance\n";
+  };
+  Scene s = Scene::from_text(text(0, 90), "t.nome");
+  const auto topology_before = s.instances()[0].topology_version;
+  const size_t evaluations = s.placement_evaluations();
+  s.set_parameter(*s.find_parameter("b_lift"), 0.5);
+  CHECK(s.vertex_moves() == 1);
+  CHECK(s.placement_evaluations() == evaluations);
+  CHECK(s.instances()[0].topology_version == topology_before);
+  const PolygonSoup moved = s.combined_soup();
+  const PolygonSoup fresh = Scene::from_text(text(0.5, 90), "t.nome").combined_soup();
+  CHECK(moved.positions == fresh.positions);
+  CHECK(moved.face_vertices == fresh.face_vertices);
+  CHECK(moved.vertex_names == fresh.vertex_names);
+  CHECK(s.combined_positions() == fresh.positions);
+
+  // 90 degrees more of twist joins the square's points one place further round: new faces.
+  s.set_parameter(*s.find_parameter("b_tw"), 180);
+  CHECK(s.placement_evaluations() == evaluations + 1);
+  CHECK(s.instances()[0].topology_version != topology_before);
+  const PolygonSoup remade = Scene::from_text(text(0.5, 180), "t.nome").combined_soup();
+  CHECK(s.combined_soup().face_vertices == remade.face_vertices);
+  CHECK(s.combined_soup().positions == remade.positions);
+}
+
 TEST_CASE("sweepmorph blends the control points' cross-sections, morphvisualizer shows one", "[scene]") {
   const std::string text = std::string(square_points) +
                            "point t1 (1 0 0) endpoint\npoint t2 (0 1 0) endpoint\npoint t3 (-1 0 0) "
@@ -304,7 +338,7 @@ TEST_CASE("sweep_positions() gives exactly the positions of sweep()", "[scene]")
   path[3].scale = {2, 0.5};
   path[5].rotate = {5, 10, 30};
   const PolygonSoup soup = sweep(path, {&square, 1}, o).piece.soup;
-  CHECK(sweep_positions(path, {&square, 1}, o) == soup.positions);
+  CHECK(sweep_positions(path, {&square, 1}, o).positions == soup.positions);
 }
 
 TEST_CASE("a sweep with every option is saved and read back to the same surface", "[scene]") {

@@ -74,6 +74,10 @@ void Pipeline::set_input(PipelineInput input) {
   input_changed(int(scene_->update(std::move(input))));
 }
 
+void Pipeline::move_input_vertices(Buffer<Vec3> positions) {
+  input_changed(int(scene_->move_vertices(std::move(positions))));
+}
+
 void Pipeline::set_input(const Mesh& scene_mesh) {
   input_changed(int(scene_->update(scene_mesh)));
 }

@@ -103,12 +103,7 @@ InputChange SceneStage::update(PipelineInput input) {
                  input.joining,
                  !soup.face_colors.empty()};
   if (has_mesh_ && next == structure_) {
-    Buffer<Vec3>& positions = mesh_.positions();
-    if (vertex_sources_.empty()) {
-      positions = std::move(soup.positions);
-    } else {
-      for (Index v = 0; v < positions.size(); ++v) positions[v] = soup.positions[vertex_sources_[v]];
-    }
+    take_positions(soup.positions);
     mesh_.face_colors() = std::move(soup.face_colors);
     work_ = StageWork::positions;
     return InputChange::positions;
@@ -126,6 +121,25 @@ InputChange SceneStage::update(PipelineInput input) {
     throw;
   }
   return InputChange::topology;
+}
+
+void SceneStage::take_positions(Buffer<Vec3>& input) {
+  Buffer<Vec3>& positions = mesh_.positions();
+  if (vertex_sources_.empty()) {
+    positions = std::move(input);
+  } else {
+    for (Index v = 0; v < positions.size(); ++v) positions[v] = input[vertex_sources_[v]];
+  }
+}
+
+InputChange SceneStage::move_vertices(Buffer<Vec3> positions) {
+  if (!has_mesh_ || structure_.face_offsets.empty() || positions.size() != structure_.num_vertices)
+    throw InvalidInputError("Pipeline::move_input_vertices: " + std::to_string(positions.size()) +
+                            " positions for an input of " + std::to_string(structure_.num_vertices) +
+                            " vertices (set_input first)");
+  take_positions(positions);
+  work_ = StageWork::positions;
+  return InputChange::positions;
 }
 
 void SceneStage::rebuild(PipelineInput input) {

@@ -19,6 +19,9 @@ class SceneStage {
   InputChange update(PipelineInput input);
   // Takes a mesh built by the caller as the stage's result (compared with the last one).
   InputChange update(const Mesh& mesh);
+  // New positions for the last input's vertices, its polygons unchanged. Throws InvalidInputError when
+  // there is no such input or the count differs.
+  InputChange move_vertices(Buffer<Vec3> positions);
 
   const Mesh& mesh() const { return mesh_; }
   Mesh& mesh() { return mesh_; }
@@ -40,6 +43,7 @@ class SceneStage {
   };
 
   void rebuild(PipelineInput input);
+  void take_positions(Buffer<Vec3>& positions);
 
   Structure structure_;
   bool has_mesh_ = false;

@@ -1,7 +1,9 @@
 // The placements of each top-level instance joined into its geometry (deleted faces left out), and all
 // top-level instances as one soup.
+#include <algorithm>
 #include <unordered_set>
 
+#include "nome/assert.hpp"
 #include "nome/scene/scene.hpp"
 
 namespace nome::scene {
@@ -72,8 +74,31 @@ void Scene::assemble(Index top) {
   inst.geometry = std::move(out);
 }
 
+void Scene::assemble_positions(Index top) {
+  SceneInstance& inst = instances_[top];
+  Index at = 0;
+  for (const Placement& p : placements_)
+    if (p.top == top && is_leaf(p)) {
+      const Buffer<Vec3>& moved = p.world.soup.positions;
+      std::copy(moved.begin(), moved.end(), inst.geometry.soup.positions.begin() + at);
+      at += Index(moved.size());
+    }
+  NOME_ASSERT(at == inst.geometry.soup.positions.size());
+  ++inst.geometry_version;
+}
+
 void Scene::assemble_all() {
   for (Index t = 0; t < instances_.size(); ++t) assemble(t);
+}
+
+Buffer<Vec3> Scene::combined_positions() const {
+  Buffer<Vec3> out;
+  std::size_t count = 0;
+  for (const SceneInstance& i : instances_) count += i.geometry.soup.positions.size();
+  out.reserve(count);
+  for (const SceneInstance& i : instances_)
+    out.insert(out.end(), i.geometry.soup.positions.begin(), i.geometry.soup.positions.end());
+  return out;
 }
 
 PolygonSoup Scene::combined_soup() const {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <numbers>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -109,13 +110,15 @@ Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads,
 Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors) {
   ++placement_evaluations_;
   reads.clear();
-  const Placement& p = placements_[placement];
+  Placement& p = placements_[placement];
   try {
     const glm::dmat4 m = world_matrix(placement, reads);
     const std::optional<Color> color = placement_color(placement, reads);
     Piece piece = definition_piece(p, reads, errors);
     for (Vec3& x : piece.soup.positions) x = Vec3(m * glm::dvec4(x, 1.0));
-    if (glm::determinant(m) < 0) reverse_faces(piece.soup);
+    p.color = color;
+    p.is_mirrored = glm::determinant(m) < 0;
+    if (p.is_mirrored) reverse_faces(piece.soup);
     for (std::string& n : piece.soup.vertex_names) n = p.path + "_" + n;
     for (std::string& n : piece.soup.face_names) n = p.path + "_" + n;
     for (RimLine& r : piece.rims) r.name = r.name.empty() ? p.path : p.path + "_" + r.name;
@@ -132,6 +135,33 @@ Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std:
   }
   sort_unique(reads);
   return {};
+}
+
+bool Scene::move_vertices(Index placement, Buffer<Vec3>& previous) {
+  Placement& p = placements_[placement];
+  if (p.target.kind == consolidated_kind || p.references || p.world.topology_key == 0) return false;
+  const StatementKind& kind = statement_kinds()[p.target.kind];
+  if (!kind.evaluate_positions) return false;
+  std::vector<Index> reads;
+  std::vector<Diagnostic> errors;  // any error: the whole evaluation runs and reports it
+  try {
+    const glm::dmat4 m = world_matrix(placement, reads);
+    if (placement_color(placement, reads) != p.color || (glm::determinant(m) < 0) != p.is_mirrored)
+      return false;
+    DefinitionContext context(*this, reads, errors);
+    PiecePositions moved = kind.evaluate_positions(context, p.target.index);
+    if (!errors.empty() || moved.topology_key != p.world.topology_key ||
+        moved.positions.size() != p.world.soup.positions.size())
+      return false;
+    for (Vec3& x : moved.positions) x = Vec3(m * glm::dvec4(x, 1.0));
+    previous = std::exchange(p.world.soup.positions, std::move(moved.positions));
+  } catch (const EvaluationError&) {
+    return false;
+  }
+  sort_unique(reads);
+  p.reads = std::move(reads);
+  ++vertex_moves_;
+  return true;
 }
 
 // A placement references other placements when its definition names a vertex that is not a point.

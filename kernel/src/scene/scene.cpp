@@ -203,37 +203,54 @@ std::vector<Index> Scene::set_clock(const std::string& name, double value) {
   return change_value(parameter_ids_.at(name), value);
 }
 
-// Sets value `parameter` (a slider's, or a clock's past the sliders) and re-evaluates what reads it.
+// Sets value `parameter` (a slider's, or a clock's past the sliders) and re-evaluates what reads it: the
+// placements whose topology stays only move their vertices, the others are made again.
 std::vector<Index> Scene::change_value(Index parameter, double value) {
   const bool is_slider = parameter < parameters_.size();
   const double old_value = values_[parameter];
   values_[parameter] = value;
   if (is_slider) parameters_[parameter].value = value;
-  std::vector<Index> affected;
-  for (Index i = 0; i < placements_.size(); ++i)
-    if (is_leaf(placements_[i]) &&
-        std::binary_search(placements_[i].reads.begin(), placements_[i].reads.end(), parameter))
-      affected.push_back(i);
+  std::vector<Index> remade;
+  std::vector<std::pair<Index, Buffer<Vec3>>> moved;
+  for (Index i = 0; i < placements_.size(); ++i) {
+    if (!is_leaf(placements_[i]) ||
+        !std::binary_search(placements_[i].reads.begin(), placements_[i].reads.end(), parameter))
+      continue;
+    Buffer<Vec3> previous;
+    if (move_vertices(i, previous))
+      moved.emplace_back(i, std::move(previous));
+    else
+      remade.push_back(i);
+  }
   std::vector<std::pair<Piece, std::vector<Index>>> backup;
-  for (Index i : affected) backup.emplace_back(placements_[i].world, placements_[i].reads);
+  for (Index i : remade) backup.emplace_back(placements_[i].world, placements_[i].reads);
   std::vector<Diagnostic> errors;
-  const auto over_budget = evaluate_all(affected, errors);
+  const auto over_budget = evaluate_all(remade, errors);
   if (!errors.empty() || over_budget) {
     // The scene keeps the previous value and geometry.
     values_[parameter] = old_value;
     if (is_slider) parameters_[parameter].value = old_value;
-    for (size_t k = 0; k < affected.size(); ++k) {
-      placements_[affected[k]].world = std::move(backup[k].first);
-      placements_[affected[k]].reads = std::move(backup[k].second);
+    for (auto& [i, previous] : moved) placements_[i].world.soup.positions = std::move(previous);
+    for (size_t k = 0; k < remade.size(); ++k) {
+      placements_[remade[k]].world = std::move(backup[k].first);
+      placements_[remade[k]].reads = std::move(backup[k].second);
     }
     is_vertex_index_current_ = false;
     if (over_budget) throw BudgetError(*over_budget);
     throw SceneError(std::move(errors));
   }
-  std::vector<Index> tops;
-  for (Index i : affected) tops.push_back(placements_[i].top);
+  std::vector<Index> tops, remade_tops;
+  for (Index i : remade) remade_tops.push_back(placements_[i].top);
+  sort_unique(remade_tops);
+  tops = remade_tops;
+  for (const auto& [i, previous] : moved) tops.push_back(placements_[i].top);
   sort_unique(tops);
-  for (Index t : tops) assemble(t);
+  for (Index t : tops) {
+    if (deleted_.empty() && !std::binary_search(remade_tops.begin(), remade_tops.end(), t))
+      assemble_positions(t);
+    else
+      assemble(t);
+  }
   return tops;
 }
 

@@ -156,13 +156,17 @@ class Sweeper {
     around_ = sections[0].is_closed ? m_ : m_ - 1;
   }
 
-  Buffer<Vec3> positions() const {
-    Buffer<Vec3> out;
-    out.reserve((last_ - first_ + 1) * m_);
+  SweepPositions positions() {
+    SweepPositions out;
+    out.positions.reserve((last_ - first_ + 1) * m_);
     for (std::size_t i = first_; i <= last_; ++i) {
       const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
-      for (std::size_t j = 0; j < m_; ++j) out.push_back(placed(i, j, c, s));
+      for (std::size_t j = 0; j < m_; ++j) out.positions.push_back(placed(i, j, c, s));
     }
+    std::vector<Index> to;
+    if (o_.is_path_closed && m_ > 1) join_correspondence(out.positions, to);
+    out.topology_key = topology_key(to);
+    out.warnings = std::move(result_.warnings);
     return out;
   }
 
@@ -177,6 +181,7 @@ class Sweeper {
       RimLine rim{"", {}, o_.is_path_closed};
       for (std::size_t i = first_; i <= last_; ++i) rim.vertices.push_back(vertex(i, 0));
       result_.piece.rims.push_back(std::move(rim));
+      result_.piece.topology_key = topology_key({});
       return std::move(result_);
     }
     for (std::size_t i = first_; i < last_; ++i)
@@ -185,10 +190,12 @@ class Sweeper {
         add_band_face(result_.piece, {vertex(i, j), vertex(i, k), vertex(i + 1, k), vertex(i + 1, j)}, i, j,
                       o_.faces);
       }
+    std::vector<Index> to;
     if (o_.is_path_closed)
-      join_ends();
+      join_ends(to);
     else
       add_caps();
+    result_.piece.topology_key = topology_key(to);
     return std::move(result_);
   }
 
@@ -215,14 +222,14 @@ class Sweeper {
     result_.piece.face_has_color.reserve(faces);
   }
 
-  // The last band of a closed path, to the first section by position.
-  void join_ends() {
+  // Which first-section point each point of a closed path's last section joins (warned about when no
+  // symmetry of the cross-section makes the join exact).
+  void join_correspondence(const Buffer<Vec3>& positions, std::vector<Index>& to) {
     std::vector<Vec3> end(m_), start(m_);
     for (std::size_t j = 0; j < m_; ++j) {
       end[j] = placed(n_, j, std::cos(turns_.angle[n_]), std::sin(turns_.angle[n_]));
-      start[j] = result_.piece.soup.positions[vertex(0, j)];
+      start[j] = positions[vertex(0, j)];
     }
-    std::vector<Index> to;
     const double gap = nearest_correspondence(end, start, sections_[0].is_closed, to);
     double size = 0;
     for (const Vec3& p : start) size = std::max(size, glm::length(p - path_[0].position));
@@ -231,6 +238,22 @@ class Sweeper {
                                  " degrees is no symmetry of the cross-section: the path's end is joined to "
                                  "its start by the nearest match, points up to " +
                                  format_number(std::round(gap * 1e6) / 1e6) + " apart");
+  }
+
+  // Everything the faces and names depend on, hashed (FNV-1a): equal keys, equal faces and names.
+  std::uint64_t topology_key(const std::vector<Index>& to) const {
+    std::uint64_t h = 14695981039346656037ull;
+    const auto mix = [&](std::uint64_t x) { h = (h ^ x) * 1099511628211ull; };
+    for (std::size_t x : {n_, m_, first_, last_, around_}) mix(x);
+    for (bool b : {o_.is_path_closed, o_.has_begin_cap, o_.has_end_cap, o_.faces == FaceShape::triangles})
+      mix(b);
+    for (Index t : to) mix(t);
+    return h | 1;  // never 0, which means "no key"
+  }
+
+  // The last band of a closed path, to the first section by position.
+  void join_ends(std::vector<Index>& to) {
+    join_correspondence(result_.piece.soup.positions, to);
     for (std::size_t j = 0; j < around_; ++j) {
       const std::size_t k = (j + 1) % m_;
       add_band_face(result_.piece, {vertex(n_ - 1, j), vertex(n_ - 1, k), to[k], to[j]}, n_ - 1, j, o_.faces);
@@ -269,8 +292,8 @@ SweepResult sweep(std::span<const PathSample> path, std::span<const CrossSection
   return Sweeper(path, sections, o).run();
 }
 
-Buffer<Vec3> sweep_positions(std::span<const PathSample> path, std::span<const CrossSection> sections,
-                             const SweepOptions& o) {
+SweepPositions sweep_positions(std::span<const PathSample> path, std::span<const CrossSection> sections,
+                               const SweepOptions& o) {
   check_input(path, sections, o);
   return Sweeper(path, sections, o).positions();
 }

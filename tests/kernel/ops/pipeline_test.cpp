@@ -90,6 +90,27 @@ TEST_CASE("the pipeline redoes only what an input or option change invalidates",
   CHECK(pipeline.work(Stage::offset) == StageWork::skipped);
 }
 
+TEST_CASE("moving the input's vertices flows positions only and equals a whole new input", "[kernel]") {
+  const PolygonSoup band = test::mobius_band(12, 2);
+  Pipeline pipeline;
+  PipelineSettings o = full_options();
+  CHECK_THROWS_AS(pipeline.move_input_vertices(band.positions), InvalidInputError);  // no input yet
+  pipeline.set_input(PipelineInput{band, {}, {}});
+  pipeline.run(o);
+  PolygonSoup dragged = band;
+  for (Vec3& p : dragged.positions) p += Vec3(0.2 * p.y, 0.0, 0.1 * p.x * p.x);
+  pipeline.move_input_vertices(dragged.positions);
+  const Buffer<Vec3> fast = pipeline.run(o).positions();
+  CHECK(pipeline.work(Stage::scene) == StageWork::positions);
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::positions);
+  Pipeline fresh;
+  fresh.set_input(PipelineInput{dragged, {}, {}});
+  CHECK(fast == fresh.run(o).positions());
+  Buffer<Vec3> short_by_one = dragged.positions;
+  short_by_one.pop_back();
+  CHECK_THROWS_AS(pipeline.move_input_vertices(short_by_one), InvalidInputError);
+}
+
 TEST_CASE("the pipeline refuses a result over the memory budget unless forced", "[kernel]") {
   const Mesh cube = build_mesh(test::cube());
   PipelineSettings o;

@@ -52,6 +52,10 @@ class Pipeline {
   void set_input(PipelineInput input);
   // The scene stage as a mesh the caller built (compared with the last one).
   void set_input(const Mesh& scene_mesh);
+  // New positions for the vertices of the last set_input(PipelineInput), its polygons unchanged (a slider
+  // that moved vertices: Scene::combined_positions): no comparison, no copy of its polygons. Throws
+  // InvalidInputError when the count differs or there was no such input.
+  void move_input_vertices(Buffer<Vec3> positions);
 
   // Makes settings.stage from the input and returns it (valid until the next run or input). Throws
   // InvalidInputError for settings out of range and BudgetError, with the estimate, when the result

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct Piece {
   PolygonSoup soup;  // vertex_names and face_names always filled; face_colors one per face
   std::vector<unsigned char> face_has_color;
   std::vector<RimLine> rims;
+  // Nonzero when the generator can tell its topology without making it: two pieces of one definition with
+  // the same key have the same faces and names (a slider that only moves vertices keeps it).
+  std::uint64_t topology_key = 0;
 
   Index add_vertex(const Vec3& p, std::string name) {
     soup.vertex_names.push_back(std::move(name));
@@ -32,6 +36,13 @@ struct Piece {
     soup.face_colors.push_back(Color(0));
     face_has_color.push_back(0);
   }
+};
+
+// What a generator that knows its topology without making it gives on a slider move: the positions its
+// piece would have, and that piece's topology key.
+struct PiecePositions {
+  Buffer<Vec3> positions;
+  std::uint64_t topology_key = 0;
 };
 
 }  // namespace nome::scene

@@ -120,6 +120,9 @@ class Scene {
   const std::vector<SceneInstance>& instances() const { return instances_; }
   // Every top-level instance as parts of one soup (a disjoint union; merging is a later stage).
   PolygonSoup combined_soup() const;
+  // The positions of combined_soup() alone (for Pipeline::move_input_vertices when no instance's
+  // topology_version changed).
+  Buffer<Vec3> combined_positions() const;
 
   // The editing model's data (report 7.3.3): faces added by the user, given by the hierarchical names of
   // their vertices (the consolidated mesh, instantiable as `consolidatemesh`), and deleted faces by name.
@@ -140,6 +143,8 @@ class Scene {
 
   // How many placements have been evaluated since the scene was built (tests and status lines).
   std::size_t placement_evaluations() const { return placement_evaluations_; }
+  // How many times a slider moved a placement's vertices without evaluating it whole.
+  std::size_t vertex_moves() const { return vertex_moves_; }
 
  private:
   friend class DefinitionScope;
@@ -162,6 +167,8 @@ class Scene {
     bool references = false;  // its vertices are copied from other placements
     Piece world;
     std::vector<Index> reads;
+    std::optional<Color> color;  // the instance colour its faces took
+    bool is_mirrored = false;    // its world matrix reverses its faces
   };
   struct VertexRef {
     Index placement;
@@ -208,6 +215,9 @@ class Scene {
   // Returns the BudgetError message when the pieces' faces passed the face budget (evaluation stopped).
   std::optional<std::string> evaluate_all(const std::vector<Index>& placements,
                                           std::vector<Diagnostic>& errors);
+  // Moves a placement's vertices alone when its generator tells its positions and its topology is unchanged;
+  // hands back the previous positions. False: the placement must be evaluated whole.
+  bool move_vertices(Index placement, Buffer<Vec3>& previous);
 
   // vertex_names.cpp: names by unique suffix, indexed on the first lookup after they changed (a scene
   // that looks no vertex up by name, a sweep's, never pays for indexing its hundred thousand names).
@@ -218,6 +228,8 @@ class Scene {
   // assembly.cpp: the placements of one top-level instance joined into its geometry.
   void assemble(Index top);
   void assemble_all();
+  // Only vertices moved in the placements of `top` and no face is deleted: their positions alone.
+  void assemble_positions(Index top);
 
   SceneAst ast_;
   SceneOptions options_;
@@ -238,6 +250,7 @@ class Scene {
   std::string consolidated_file_;  // where the consolidated faces' names are located, if not in file()
   std::vector<std::string> deleted_;
   std::size_t placement_evaluations_ = 0;
+  std::size_t vertex_moves_ = 0;
 };
 
 }  // namespace nome::scene

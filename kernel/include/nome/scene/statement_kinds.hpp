@@ -44,6 +44,10 @@ struct StatementKind {
   // Definitions only: the names this kind defines, and the geometry of one of them.
   void (*declare)(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) = nullptr;
   Piece (*evaluate)(DefinitionContext& context, Index decl) = nullptr;
+  // Optional, for a generator that tells its topology cheaply (a sweep): evaluate()'s positions alone, with
+  // the topology key its piece would carry. When the key is the last piece's, the scene keeps that piece's
+  // faces and names and moves its vertices (a slider tick makes no names).
+  PiecePositions (*evaluate_positions)(DefinitionContext& context, Index decl) = nullptr;
   // The vertex-name lists a definition reads: a name that is not a point copies another placement's vertex,
   // which must then be evaluated first. Null: the definition makes its own vertices.
   void (*vertex_lists)(const DefinitionScope& scope, Index decl,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -61,10 +62,16 @@ struct SweepResult {
 SweepResult sweep(std::span<const PathSample> path, std::span<const CrossSection> sections,
                   const SweepOptions& options);
 
-// The positions sweep() gives its vertices, alone: what a slider that moves the path or reshapes the
-// cross-section changes (the faces and names stay), for a caller that updates positions in place.
-Buffer<Vec3> sweep_positions(std::span<const PathSample> path, std::span<const CrossSection> sections,
-                             const SweepOptions& options);
+// The positions sweep() gives its vertices, alone, with the topology key its piece would carry: what a
+// slider that moves the path or reshapes the cross-section changes (when the key is the last piece's, the
+// faces and names stay), for a caller that updates positions in place.
+struct SweepPositions {
+  Buffer<Vec3> positions;
+  std::uint64_t topology_key = 0;
+  std::vector<std::string> warnings;
+};
+SweepPositions sweep_positions(std::span<const PathSample> path, std::span<const CrossSection> sections,
+                               const SweepOptions& options);
 
 // The frames alone (rows N, B, T per sample, then for a closed path one more: the first sample's frame
 // carried once around), for the sweep and for a ribbon along a rim line.

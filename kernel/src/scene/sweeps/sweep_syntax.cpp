@@ -128,6 +128,20 @@ Piece evaluate_sweep_syntax(DefinitionContext& context, Index decl) {
   return std::move(result.piece);
 }
 
+PiecePositions evaluate_positions_sweep_syntax(DefinitionContext& context, Index decl) {
+  const SweepDecl& s = context.ast().sweeps[decl];
+  const SweepInput in = sweep_input(context, s);
+  const std::string what = std::string(statement_kinds()[s.kind].keyword) + " '" + s.name.text + "': ";
+  SweepPositions result;
+  try {
+    result = sweep_positions(in.path, in.sections, in.options);
+  } catch (const InvalidInputError& e) {
+    throw EvaluationError(s.name.location, what + e.what());
+  }
+  for (std::string& w : result.warnings) context.warning(s.name.location, what + w);
+  return {std::move(result.positions), result.topology_key};
+}
+
 }  // namespace
 
 StatementKind with_sweep_syntax(StatementKind kind) {
@@ -136,6 +150,7 @@ StatementKind with_sweep_syntax(StatementKind kind) {
   kind.declare = declare_sweep_syntax;
   kind.vertex_lists = vertex_lists_sweep_syntax;
   kind.evaluate = evaluate_sweep_syntax;
+  kind.evaluate_positions = evaluate_positions_sweep_syntax;
   return kind;
 }
 
