@@ -67,3 +67,28 @@ TEST_CASE("a slider tick that changes the topology builds the scene mesh and the
   CHECK(pipeline.work(Stage::subdivided_offset) == StageWork::rebuilt);
   CHECK(faces_at_7 != faces_at_8);
 }
+
+TEST_CASE("a slider that moves a sweep's path moves the document's vertices and builds no mesh", "[scene]") {
+  const auto text = [](double lift) {
+    return "bank b set lift " + std::to_string(lift) +
+           " -1 1 0.1 endbank\n"
+           "point s1 (0.5 0.5 0) endpoint\npoint s2 (-0.5 0.5 0) endpoint\npoint s3 (-0.5 -0.5 0) endpoint\n"
+           "point s4 (0.5 -0.5 0) endpoint\npolyline sq (s1 s2 s3 s4) isloop endpolyline\n"
+           "point k0 (3 0 {expr $b_lift}) endpoint\npoint k1 (0 3 0) endpoint\npoint k2 (-3 0 0) endpoint\n"
+           "point k3 (0 -3 0) endpoint\nbspline pa order 3 (k0 k1 k2 k3 k0 k1) segs 30 endbspline\n"
+           "sweep s crosssection sq endcrosssection path pa endpath endsweep\ninstance i s endinstance\n";
+  };
+  SceneDocument doc = SceneDocument::from_scene(scene::Scene::from_text(text(0), "t.nome"));
+  Pipeline pipeline;
+  pipeline.set_input(doc.pipeline_input());
+  pipeline.run(solid_settings());
+  const std::uint64_t before = build_mesh_count();
+  const Mesh& solid = tick(doc, pipeline, "b_lift", 0.4);
+  CHECK(doc.scene()->last_change_moved_vertices_only());
+  CHECK(build_mesh_count() == before);
+  CHECK(pipeline.work(Stage::scene) == StageWork::positions);
+  const SceneDocument fresh_doc = SceneDocument::from_scene(scene::Scene::from_text(text(0.4), "t.nome"));
+  Pipeline fresh;
+  fresh.set_input(fresh_doc.pipeline_input());
+  CHECK(solid.positions() == fresh.run(solid_settings()).positions());
+}

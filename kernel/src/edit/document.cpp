@@ -34,6 +34,13 @@ void Document::set_scene_geometry(PolygonSoup geometry) {
   index_scene();
 }
 
+void Document::move_scene_vertices(Buffer<Vec3> positions) {
+  if (positions.size() != scene_.positions.size())
+    throw InvalidInputError("Document::move_scene_vertices: " + std::to_string(positions.size()) +
+                            " positions for " + std::to_string(scene_.positions.size()) + " vertices");
+  scene_.positions = std::move(positions);
+}
+
 void Document::index_scene() {
   vertex_ids_.clear();
   face_ids_.clear();

@@ -1,7 +1,5 @@
 #include "nome/edit/scene_document.hpp"
 
-#include <algorithm>
-
 #include "nome/error.hpp"
 #include "nome/scene/save_nome.hpp"
 
@@ -39,7 +37,10 @@ void SceneDocument::set_scene(scene::Scene scene) {
 std::vector<Index> SceneDocument::set_parameter(Index parameter, double value) {
   if (!scene_) throw InvalidInputError("set: flat geometry has no sliders");
   std::vector<Index> changed = scene_->set_parameter(parameter, value);
-  document_.set_scene_geometry(scene_->combined_soup());
+  if (scene_->last_change_moved_vertices_only())
+    document_.move_scene_vertices(scene_->combined_positions());
+  else
+    document_.set_scene_geometry(scene_->combined_soup());
   return changed;
 }
 

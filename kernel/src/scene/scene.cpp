@@ -239,6 +239,7 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
     if (over_budget) throw BudgetError(*over_budget);
     throw SceneError(std::move(errors));
   }
+  has_only_moved_vertices_ = remade.empty();
   std::vector<Index> tops, remade_tops;
   for (Index i : remade) remade_tops.push_back(placements_[i].top);
   sort_unique(remade_tops);

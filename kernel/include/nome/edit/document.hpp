@@ -43,6 +43,9 @@ class Document {
 
   // Replaces the geometry after a slider change. Edits refer to names and are resolved again.
   void set_scene_geometry(PolygonSoup geometry);
+  // New positions for the scene's vertices, its faces and names unchanged (a slider that only moved
+  // vertices): the name indexes stay. Throws InvalidInputError when the count differs.
+  void move_scene_vertices(Buffer<Vec3> positions);
   const PolygonSoup& scene_geometry() const { return scene_; }
   // The consolidated faces (vertex names) and deleted face names read from a saved file; clears the
   // temporary mesh and the undo history.

@@ -145,6 +145,9 @@ class Scene {
   std::size_t placement_evaluations() const { return placement_evaluations_; }
   // How many times a slider moved a placement's vertices without evaluating it whole.
   std::size_t vertex_moves() const { return vertex_moves_; }
+  // Whether the last slider or clock change only moved vertices (names, faces and colours the same), so
+  // that combined_positions() tells all of it.
+  bool last_change_moved_vertices_only() const { return has_only_moved_vertices_; }
 
  private:
   friend class DefinitionScope;
@@ -251,6 +254,7 @@ class Scene {
   std::vector<std::string> deleted_;
   std::size_t placement_evaluations_ = 0;
   std::size_t vertex_moves_ = 0;
+  bool has_only_moved_vertices_ = false;
 };
 
 }  // namespace nome::scene
