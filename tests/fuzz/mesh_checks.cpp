@@ -1,5 +1,7 @@
 #include "fuzz/mesh_checks.hpp"
 
+#include "fuzz/fuzz_target.hpp"
+
 #include <cmath>
 #include <cstdlib>
 
@@ -58,13 +60,18 @@ void check_downstream(const Mesh& mesh) {
   require(shell.borders == 0 && shell.orientable && shell.mobius_edges == 0 && shell.chi == 2 * after.chi);
 }
 
+void require_located_refusal(const Error& error, std::string_view file) {
+  const std::string_view message = error.what();
+  require(dynamic_cast<const InvalidInputError*>(&error) == nullptr);
+  require(message.substr(0, file.size()) == file && message.size() > file.size() &&
+          message[file.size()] == ':');
+}
+
 void build_and_check(PolygonSoup soup) {
   Mesh mesh;
   try {
     mesh = build_mesh(std::move(soup));
   } catch (const TopologyError&) {
-    return;
-  } catch (const InvalidInputError&) {
     return;
   }
   // Outside the try: an error thrown downstream of an accepted mesh is a bug.

@@ -11,8 +11,9 @@ namespace nome::fuzz {
 // (libFuzzer records the input).
 void check_downstream(const Mesh& mesh);
 
-// build_mesh on a soup from untrusted input: refusal by TopologyError or InvalidInputError is fine;
-// anything accepted goes through check_downstream.
+// build_mesh on a soup a reader accepted: refusal by TopologyError is fine (a reader does not check
+// manifoldness); InvalidInputError means the reader handed on an inconsistent soup, a bug (the exception
+// escapes: libFuzzer reports it); anything accepted goes through check_downstream.
 void build_and_check(PolygonSoup soup);
 
 }  // namespace nome::fuzz

@@ -1,5 +1,6 @@
 #include <cstdlib>
 
+#include "fuzz/fuzz_target.hpp"
 #include "fuzz/mesh_checks.hpp"
 #include "fuzz/polygon_soup_bytes.hpp"
 #include "nome/error.hpp"
@@ -8,7 +9,7 @@
 
 namespace {
 
-bool same(const nome::TopologyReport& a, const nome::TopologyReport& b) {
+bool is_same_report(const nome::TopologyReport& a, const nome::TopologyReport& b) {
   if (a.vertices != b.vertices || a.edges != b.edges || a.faces != b.faces || a.orientable != b.orientable ||
       a.borders != b.borders || a.mobius_edges != b.mobius_edges ||
       a.isolated_vertices != b.isolated_vertices || a.components.size() != b.components.size())
@@ -27,7 +28,7 @@ bool same(const nome::TopologyReport& a, const nome::TopologyReport& b) {
 
 // Differential: build_mesh accepts exactly the soups the brute-force routine finds manifold, with the
 // same topology report; then everything downstream runs on what it accepted.
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+NOME_FUZZ_TARGET(polygon_soup) {
   const nome::PolygonSoup soup = nome::fuzz::polygon_soup_from_bytes(data, size);
   const nome::test::BruteForceTopology brute = nome::test::brute_force_topology(soup);
   nome::Mesh mesh;
@@ -37,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (brute.is_manifold) std::abort();
     return 0;
   }
-  if (!brute.is_manifold || !same(nome::topology_report(mesh), brute.report)) std::abort();
+  if (!brute.is_manifold || !is_same_report(nome::topology_report(mesh), brute.report)) std::abort();
   nome::fuzz::check_downstream(mesh);
   return 0;
 }

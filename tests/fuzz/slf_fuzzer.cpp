@@ -1,12 +1,13 @@
 #include <string_view>
 
+#include "fuzz/fuzz_target.hpp"
 #include "fuzz/mesh_checks.hpp"
 #include "nome/error.hpp"
 #include "nome/scene/parser.hpp"
 #include "nome/scene/scene.hpp"
 
 // Arbitrary bytes as a .slf file (the SLIDE subset), the way read_scene reads one.
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+NOME_FUZZ_TARGET(slf) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   nome::PolygonSoup soup;
   try {
@@ -14,7 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     nome::scene::SceneAst ast = nome::scene::parse_slf(text, diagnostics);
     diagnostics.throw_if_errors();
     soup = nome::scene::Scene::from_ast(std::move(ast), diagnostics.all()).combined_soup();
-  } catch (const nome::Error&) {
+  } catch (const nome::Error& e) {
+    nome::fuzz::require_located_refusal(e, "fuzz.slf");
     return 0;
   }
   nome::fuzz::build_and_check(std::move(soup));
