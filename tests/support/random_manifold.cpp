@@ -1,5 +1,7 @@
 #include "support/random_manifold.hpp"
 
+#include <cstdlib>
+
 #include <algorithm>
 #include <map>
 #include <numeric>
@@ -272,6 +274,11 @@ RandomManifold random_manifold(std::mt19937& rng, const RandomManifoldOptions& o
   soup = rotate_corners(renumber_vertices(std::move(soup), rng), rng);
   out.soup = std::move(soup);
   return out;
+}
+
+unsigned seed_base() {
+  const char* text = std::getenv("NOME_SEED");
+  return text ? unsigned(std::strtoul(text, nullptr, 10)) : 0u;
 }
 
 }  // namespace nome::test

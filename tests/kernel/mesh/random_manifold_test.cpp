@@ -37,10 +37,11 @@ void check_same_report(const TopologyReport& kernel, const TopologyReport& brute
 
 // One random manifold: the brute-force routine agrees with how it was glued, the kernel agrees with
 // the brute-force routine.
-void check_random_manifold(unsigned seed) {
-  INFO("seed " << seed);
+void check_random_manifold(unsigned i, const test::RandomManifoldOptions& options = {}) {
+  const unsigned seed = test::seed_base() + i;
+  INFO("seed " << seed << " (NOME_SEED=" << test::seed_base() << ")");
   std::mt19937 rng{seed};
-  const test::RandomManifold m = test::random_manifold(rng);
+  const test::RandomManifold m = test::random_manifold(rng, options);
   const test::BruteForceTopology brute = test::brute_force_topology(m.soup);
   INFO(brute.problem);
   REQUIRE(brute.is_manifold);
@@ -62,10 +63,11 @@ void check_random_manifold(unsigned seed) {
 // One random corruption of a random manifold (two vertices pinched into one, a face added on random
 // vertices, a face duplicated or dropped): the kernel refuses exactly what the brute-force routine
 // finds non-manifold, and reports the same topology for the rest.
-void check_corrupted_manifold(unsigned seed) {
-  INFO("seed " << seed);
+void check_corrupted_manifold(unsigned i, const test::RandomManifoldOptions& options = {}) {
+  const unsigned seed = test::seed_base() + i;
+  INFO("seed " << seed << " (NOME_SEED=" << test::seed_base() << ")");
   std::mt19937 rng{seed};
-  PolygonSoup soup = test::random_manifold(rng).soup;
+  PolygonSoup soup = test::random_manifold(rng, options).soup;
   std::uniform_int_distribution<Index> any_vertex(0, soup.num_vertices() - 1);
   std::uniform_int_distribution<Index> any_face(0, soup.num_faces() - 1);
   const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
@@ -110,6 +112,15 @@ TEST_CASE("random 2-manifolds: the kernel's report equals a brute-force count", 
 
 TEST_CASE("random corrupted 2-manifolds: the kernel refuses exactly the non-manifold ones", "[kernel]") {
   for (unsigned seed = 1; seed <= 300; ++seed) check_corrupted_manifold(seed);
+}
+
+TEST_CASE("random 2-manifolds of up to 300 polygons: report and refusals equal a brute-force count",
+          "[kernel]") {
+  const test::RandomManifoldOptions large{.max_polygons = 300};
+  for (unsigned seed = 1; seed <= 12; ++seed) {
+    check_random_manifold(seed, large);
+    check_corrupted_manifold(seed, large);
+  }
 }
 
 TEST_CASE("soak: 10,000 random 2-manifolds", "[.][soak]") {
