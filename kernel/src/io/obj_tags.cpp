@@ -13,13 +13,13 @@
 namespace nome {
 namespace {
 
-struct Tokens {
+struct TagTokens {
   std::vector<std::string> words;
   std::vector<int> columns;  // 1-based
 };
 
-Tokens split(const std::string& text) {
-  Tokens t;
+TagTokens split_tag_line(const std::string& text) {
+  TagTokens t;
   size_t i = 0;
   for (;;) {
     i = text.find_first_not_of(" \t\r", i);
@@ -31,42 +31,42 @@ Tokens split(const std::string& text) {
   }
 }
 
-[[noreturn]] void fail(const std::string& file, int line, int column, const std::string& what) {
+[[noreturn]] void fail_tag(const std::string& file, int line, int column, const std::string& what) {
   throw IoError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what);
 }
 
 }  // namespace
 
 ObjTag parse_obj_tag(const std::string& file, int line, const std::string& text) {
-  const Tokens t = split(text);
+  const TagTokens t = split_tag_line(text);
   ObjTag tag;
   tag.line = line;
-  if (t.words.size() < 3) fail(file, line, 1, "expected 't NAME ints/floats/strings ...'");
+  if (t.words.size() < 3) fail_tag(file, line, 1, "expected 't NAME ints/floats/strings ...'");
   tag.name = t.words[1];
   int counts[3] = {0, 0, 0};
   if (std::sscanf(t.words[2].c_str(), "%d/%d/%d", &counts[0], &counts[1], &counts[2]) != 3 || counts[0] < 0 ||
       counts[1] < 0 || counts[2] < 0)
-    fail(file, line, t.columns[2],
-         "expected the counts of ints, floats and strings as I/F/S, found '" + t.words[2] + "'");
+    fail_tag(file, line, t.columns[2],
+             "expected the counts of ints, floats and strings as I/F/S, found '" + t.words[2] + "'");
   const size_t expected = 3 + size_t(counts[0]) + size_t(counts[1]) + size_t(counts[2]);
   if (t.words.size() < expected)
-    fail(file, line, 1,
-         "'t " + tag.name + "' announces " + std::to_string(expected - 3) + " values, found " +
-             std::to_string(t.words.size() - 3));
+    fail_tag(file, line, 1,
+             "'t " + tag.name + "' announces " + std::to_string(expected - 3) + " values, found " +
+                 std::to_string(t.words.size() - 3));
   size_t k = 3;
   for (int i = 0; i < counts[0]; ++i, ++k) {
     long long value = 0;
     const std::string& w = t.words[k];
     const auto [ptr, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
     if (ec != std::errc() || ptr != w.data() + w.size())
-      fail(file, line, t.columns[k], "expected a whole number, found '" + w + "'");
+      fail_tag(file, line, t.columns[k], "expected a whole number, found '" + w + "'");
     tag.ints.push_back(value);
   }
   for (int i = 0; i < counts[1]; ++i, ++k) {
     char* end = nullptr;
     const float value = std::strtof(t.words[k].c_str(), &end);
     if (end != t.words[k].c_str() + t.words[k].size())
-      fail(file, line, t.columns[k], "expected a number, found '" + t.words[k] + "'");
+      fail_tag(file, line, t.columns[k], "expected a number, found '" + t.words[k] + "'");
     tag.floats.push_back(value);
   }
   for (int i = 0; i < counts[2]; ++i, ++k) tag.strings.push_back(t.words[k]);

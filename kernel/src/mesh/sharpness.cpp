@@ -10,14 +10,14 @@ namespace nome {
 namespace {
 
 // OpenSubdiv clamps negative weights to 0; a NaN weighs nothing either.
-float clamped(float weight) {
+float clamped_sharpness(float weight) {
   return std::isnan(weight) ? 0.0f : std::max(weight, 0.0f);
 }
 
 }  // namespace
 
 void Mesh::set_edge_sharpness(Index e, float weight) {
-  weight = clamped(weight);
+  weight = clamped_sharpness(weight);
   arrays_.edges[e].is_sharp = weight >= infinite_sharpness;
   const float semi = weight >= infinite_sharpness ? 0.0f : weight;
   if (arrays_.edge_sharpness.empty() && semi == 0.0f) return;
@@ -26,7 +26,7 @@ void Mesh::set_edge_sharpness(Index e, float weight) {
 }
 
 void Mesh::set_vertex_sharpness(Index v, float weight) {
-  weight = std::min(clamped(weight), infinite_sharpness);
+  weight = std::min(clamped_sharpness(weight), infinite_sharpness);
   if (arrays_.vertex_sharpness.empty() && weight == 0.0f) return;
   arrays_.vertex_sharpness.resize(num_vertices(), 0.0f);
   arrays_.vertex_sharpness[v] = weight;

@@ -12,8 +12,8 @@ namespace {
 constexpr double smooth_triangle_weight = 0.470;
 
 template <class Parent>
-Vec3 edge_point(const Parent& p, const SharpLevel& s, const SharpRules& rules, Index e,
-                std::span<const Vec3> in, std::span<const Vec3> out) {
+Vec3 sharp_edge_point(const Parent& p, const SharpLevel& s, const SharpRules& rules, Index e,
+                      std::span<const Vec3> in, std::span<const Vec3> out) {
   const auto ends = p.edge_ends(e);
   const Vec3 sum = in[ends[0]] + in[ends[1]];
   const float w = s.edge_weight(e);
@@ -54,8 +54,8 @@ Vec3 edge_point(const Parent& p, const SharpLevel& s, const SharpRules& rules, I
 
 // A vertex point by one rule, the crease between the sharp edges first and last in the fan.
 template <class Parent>
-Vec3 vertex_point(const Parent& p, VertexRule rule, const SharpRules& rules, Index v,
-                  std::span<const float> sharp, std::span<const Vec3> in, std::span<const Vec3> out) {
+Vec3 vertex_point_by_rule(const Parent& p, VertexRule rule, const SharpRules& rules, Index v,
+                          std::span<const float> sharp, std::span<const Vec3> in, std::span<const Vec3> out) {
   const Vec3& here = in[v];
   const auto edges = p.vertex_edges(v);
   const auto other = [&](Index e) {
@@ -90,7 +90,7 @@ Vec3 sharp_vertex_point(const Parent& p, const SharpLevel& s, const SharpRules& 
     sharp += parent[i] > 0.0f ? 1 : 0;
   }
   const VertexRule parent_rule = vertex_rule(vertex_w, sharp);
-  const Vec3 parent_point = vertex_point(p, parent_rule, rules, v, parent, in, out);
+  const Vec3 parent_point = vertex_point_by_rule(p, parent_rule, rules, v, parent, in, out);
   if (parent_rule == VertexRule::smooth || parent_rule == VertexRule::dart) return parent_point;
   child_weights_around(rules.method, parent, child);
   const float child_vertex_w = decayed(vertex_w);
@@ -99,7 +99,7 @@ Vec3 sharp_vertex_point(const Parent& p, const SharpLevel& s, const SharpRules& 
   const VertexRule child_rule = child_vertex_w > 0.0f ? VertexRule::corner : vertex_rule(0.0f, child_sharp);
   if (child_rule == parent_rule) return parent_point;
   const double blend = fractional_weight(rules.method, vertex_w, child_vertex_w, parent, child);
-  return blend * parent_point + (1.0 - blend) * vertex_point(p, child_rule, rules, v, child, in, out);
+  return blend * parent_point + (1.0 - blend) * vertex_point_by_rule(p, child_rule, rules, v, child, in, out);
 }
 
 }  // namespace
@@ -110,7 +110,7 @@ void refine_sharp_positions(const Parent& p, const SharpLevel& s, const SharpRul
   const Index ep = s.num_faces, vp = s.num_faces + s.num_edges;
   parallel_for(Index(s.patch_edges.size()), threads, [&](Index begin, Index end) {
     for (Index i = begin; i < end; ++i)
-      out[ep + s.patch_edges[i]] = edge_point(p, s, rules, s.patch_edges[i], in, out);
+      out[ep + s.patch_edges[i]] = sharp_edge_point(p, s, rules, s.patch_edges[i], in, out);
   });
   parallel_for(Index(s.patch_vertices.size()), threads, [&](Index begin, Index end) {
     for (Index i = begin; i < end; ++i) {

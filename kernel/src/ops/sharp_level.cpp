@@ -7,14 +7,14 @@
 namespace nome {
 namespace {
 
-float weight_of(const std::vector<std::pair<Index, float>>& list, Index i) {
+float sharp_weight_of(const std::vector<std::pair<Index, float>>& list, Index i) {
   const auto found =
       std::lower_bound(list.begin(), list.end(), i,
                        [](const std::pair<Index, float>& entry, Index key) { return entry.first < key; });
   return found != list.end() && found->first == i ? found->second : 0.0f;
 }
 
-void sort_unique(std::vector<Index>& v) {
+void sort_unique_indices(std::vector<Index>& v) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
@@ -23,26 +23,26 @@ void sort_unique(std::vector<Index>& v) {
 // corners, and both ends of every listed edge (whose vertex rule, or with the report rule whose new
 // edge points, change).
 template <class EdgeEnds>
-void finish(SharpLevel& s, const EdgeEnds& edge_ends) {
+void finish_patch_lists(SharpLevel& s, const EdgeEnds& edge_ends) {
   for (const auto& [e, w] : s.edges) s.patch_edges.push_back(e);
-  sort_unique(s.patch_edges);
+  sort_unique_indices(s.patch_edges);
   for (const auto& [v, w] : s.vertices) {
     s.patch_vertices.push_back(v);
     s.needs_topology = s.needs_topology || w < infinite_sharpness;
   }
   for (Index e : s.patch_edges)
     for (Index v : edge_ends(e)) s.patch_vertices.push_back(v);
-  sort_unique(s.patch_vertices);
+  sort_unique_indices(s.patch_vertices);
   s.needs_topology = s.needs_topology || !s.patch_edges.empty();
 }
 
 }  // namespace
 
 float SharpLevel::edge_weight(Index e) const {
-  return weight_of(edges, e);
+  return sharp_weight_of(edges, e);
 }
 float SharpLevel::vertex_weight(Index v) const {
-  return weight_of(vertices, v);
+  return sharp_weight_of(vertices, v);
 }
 
 SharpLevel base_sharp_level(const Mesh& base, const CreaseOptions& options) {
@@ -66,7 +66,7 @@ SharpLevel base_sharp_level(const Mesh& base, const CreaseOptions& options) {
       }
     }
   }
-  finish(s, [&](Index e) { return base.edge(e).vertices; });
+  finish_patch_lists(s, [&](Index e) { return base.edge(e).vertices; });
   return s;
 }
 
@@ -94,7 +94,7 @@ SharpLevel child_sharp_level(const Parent& p, const SharpLevel& s, CreaseMethod 
   for (const auto& [v, w] : s.vertices)
     if (decayed(w) > 0.0f) c.vertices.emplace_back(vp + v, decayed(w));
   // Child edge 2e + side runs between the edge point of e and the vertex point of e's end `side`.
-  finish(c, [&](Index child_edge) {
+  finish_patch_lists(c, [&](Index child_edge) {
     const Index e = child_edge / 2;
     return std::array<Index, 2>{ep + e, vp + p.edge_ends(e)[child_edge % 2]};
   });
