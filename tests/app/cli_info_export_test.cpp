@@ -110,6 +110,6 @@ TEST_CASE("nome export keeps an OBJ's OpenSubdiv tags without subdivision and ap
       {"export", dir + "/grid.obj", "--subdiv", "2", "-o", dir + "/fine.obj"});
   REQUIRE(refined.status == 0);
   CHECK_THAT(refined.err, Catch::Contains("128 faces"));
-  CHECK_THAT(nome::test::run_nome_in_process({"export", "--help"}).out,
+  CHECK_THAT(nome::test::run_nome_in_process(std::string("export --help")).out,
              Catch::Contains("--boundary none|edge-only|edge-and-corner") && Catch::Contains("t crease"));
 }
