@@ -273,7 +273,7 @@ TEST_CASE("Catmull-Clark matches OpenSubdiv on its regression shapes with their 
     }
   }
   CHECK(manifold == 78);
-  CHECK(tagged == 59);  // of the 78 manifold shapes
+  CHECK(tagged == 59);    // of the 78 manifold shapes
   CHECK(weighted == 35);  // with semi-sharp creases or corners
 }
 #else
