@@ -171,11 +171,19 @@ void creases() {
       ++sharp;
     }
   }
+  // The same rings semi-sharp (weight 2.5: creases for two levels, blended at the third) and their
+  // crossing a corner of weight 3.
+  Mesh weighted = torus;
+  for (Index e = 0; e < weighted.num_edges(); ++e)
+    if (creased.edge(e).is_sharp) weighted.set_edge_sharpness(e, 2.5f);
+  weighted.set_vertex_sharpness(0, 3.0f);
   const double plain = best_ms(3, [&] { refine(torus, 6, 1); });
   const double with_creases = best_ms(3, [&] { refine(creased, 6, 1); });
+  const double with_weights = best_ms(3, [&] { refine(weighted, 6, 1); });
   std::printf(
-      "\nlevel-6 torus, full refine on 1 thread: %.1f ms without creases, %.1f ms with %u sharp edges\n",
-      plain, with_creases, sharp);
+      "\nlevel-6 torus, full refine on 1 thread: %.1f ms without creases, %.1f ms with %u sharp edges,"
+      " %.1f ms with them semi-sharp (2.5) and a corner (3)\n",
+      plain, with_creases, sharp, with_weights);
 }
 
 void offset_case() {

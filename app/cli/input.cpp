@@ -42,11 +42,19 @@ Stage stage_argument(const std::string& name) {
                    "'");
 }
 
-Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes) {
+Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes,
+                ObjSubdivisionTags* kept_tags) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
   InputFiles input = read_input_files(args);
   PipelineSettings settings = pipeline_settings(args, last);
   apply_scene_stages(input.scenes, args, settings);
+  apply_obj_tags(input.obj_tags, args, settings);
+  if (kept_tags && settings.levels_before() == 0 && settings.levels_after() == 0) {
+    // Nothing refined: the options stay the mesh's, for an OBJ written from it.
+    if (settings.boundary != BoundaryMode::edge_only) kept_tags->boundary = settings.boundary;
+    if (settings.creases.method != CreaseMethod::uniform) kept_tags->crease_method = settings.creases.method;
+    if (settings.creases.smooth_triangles) kept_tags->smooth_triangles = true;
+  }
   Pipeline pipeline;
   pipeline.set_input(std::move(input.geometry));
   try {

@@ -73,6 +73,12 @@ PipelineSettings pipeline_settings(const Arguments& args, Stage stage) {
   return s;
 }
 
+void apply_obj_tags(const ObjSubdivisionTags& tags, const Arguments& args, PipelineSettings& settings) {
+  if (tags.boundary && !args.has("--boundary")) settings.boundary = *tags.boundary;
+  if (tags.crease_method) settings.creases.method = *tags.crease_method;
+  if (tags.smooth_triangles) settings.creases.smooth_triangles = *tags.smooth_triangles;
+}
+
 void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments& args,
                         PipelineSettings& settings) {
   for (const scene::Scene& s : scenes) {

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "cli/arguments.hpp"
+#include "nome/io/obj_tags.hpp"
 #include "nome/ops/pipeline_settings.hpp"
 #include "nome/scene/scene.hpp"
 
@@ -16,6 +17,9 @@ PipelineSettings pipeline_settings(const Arguments& args, Stage stage);
 
 // The scenes' stage blocks (`subdivision ... sd_level N`, `offset ... height H`) where the command line
 // gives no --subdiv or --offset of its own: the highest level and the largest distance of all scenes.
+// An OBJ file's OpenSubdiv options (`t interpolateboundary` unless --boundary is given, `t creasemethod`,
+// `t smoothtriangles`).
+void apply_obj_tags(const ObjSubdivisionTags& tags, const Arguments& args, PipelineSettings& settings);
 void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments& args,
                         PipelineSettings& settings);
 

@@ -60,6 +60,13 @@ void apply_time(std::vector<scene::Scene>& scenes, const Arguments& args) {
   for (scene::Scene& s : scenes) s.set_clock(scene::time_parameter, time);
 }
 
+void merge_obj_tags(ObjSubdivisionTags& into, const ObjSubdivisionTags& file) {
+  if (file.boundary) into.boundary = file.boundary;
+  if (file.crease_method) into.crease_method = file.crease_method;
+  if (file.smooth_triangles) into.smooth_triangles = file.smooth_triangles;
+  for (const std::string& note : file.notes) std::cerr << "nome: note: " << note << "\n";
+}
+
 }  // namespace
 
 InputFiles read_input_files(const Arguments& args) {
@@ -84,6 +91,7 @@ InputFiles read_input_files(const Arguments& args) {
       flat.emplace_back(file, read_sif(file, {args.has("--quads"), SifOptions{}.max_fold_degrees}));
     } else {
       flat.emplace_back(file, read_polygons(file));
+      if (ext == ".obj") merge_obj_tags(input.obj_tags, read_obj_subdivision_tags(file));
     }
   }
   for (const scene::Scene& s : input.scenes)

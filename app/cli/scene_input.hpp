@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "cli/arguments.hpp"
+#include "nome/io/obj_tags.hpp"
 #include "nome/ops/pipeline_input.hpp"
 #include "nome/scene/scene.hpp"
 
@@ -14,6 +15,7 @@ namespace nome::cli {
 struct InputFiles {
   std::vector<scene::Scene> scenes;
   PipelineInput geometry;
+  ObjSubdivisionTags obj_tags;  // the .obj files' OpenSubdiv options (a later file's win)
 };
 
 InputFiles read_input_files(const Arguments& args);

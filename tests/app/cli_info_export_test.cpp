@@ -78,3 +78,38 @@ TEST_CASE("every command explains its options", "[app]") {
     CHECK_THAT(r.out, Catch::Contains("usage: nome"));
   }
 }
+
+TEST_CASE("nome export keeps an OBJ's OpenSubdiv tags without subdivision and applies them with it",
+          "[app]") {
+  const std::string dir = nome::test::scratch_dir("export_tags");
+  // A 3x3 grid of quads with a semi-sharp crease across it, a corner, a hole and edge-and-corner borders.
+  std::ofstream obj(dir + "/grid.obj");
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) obj << "v " << i << ' ' << j << " 0\n";
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      obj << "f " << 4 * j + i + 1 << ' ' << 4 * j + i + 2 << ' ' << 4 * j + i + 6 << ' ' << 4 * j + i + 5
+          << '\n';
+  obj << "t crease 2/1/0 4 5 1.5\nt crease 2/1/0 5 6 1.5\nt corner 1/1/0 5 0.5\nt hole 1/0/0 8\n"
+         "t interpolateboundary 1/0/0 1\nt vertexedit 1/0/1 0 add\n";
+  obj.close();
+  const auto kept = nome::test::run_nome_in_process({"export", dir + "/grid.obj", "-o", dir + "/base.obj"});
+  REQUIRE(kept.status == 0);
+  CHECK_THAT(kept.err, Catch::Contains("grid.obj:31: 't vertexedit' ignored"));
+  std::ifstream in(dir + "/base.obj");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t creases = 0;
+  for (size_t at = text.find("t crease 2/1/0 "); at != std::string::npos;
+       at = text.find("t crease 2/1/0 ", at + 1))
+    creases += text.compare(text.find('\n', at) - 4, 4, " 1.5") == 0 ? 1 : 0;
+  CHECK(creases == 2);
+  CHECK_THAT(text, Catch::Contains("t corner 1/1/0 5 0.5\n") && Catch::Contains("t hole 1/0/0 8\n") &&
+                       Catch::Contains("t interpolateboundary 1/0/0 1\n"));
+  // Subdivided: the hole's 16 quads are not output and the tags are used up.
+  const auto refined = nome::test::run_nome_in_process(
+      {"export", dir + "/grid.obj", "--subdiv", "2", "-o", dir + "/fine.obj"});
+  REQUIRE(refined.status == 0);
+  CHECK_THAT(refined.err, Catch::Contains("128 faces"));
+  CHECK_THAT(nome::test::run_nome_in_process(std::string("export --help")).out,
+             Catch::Contains("--boundary none|edge-only|edge-and-corner") && Catch::Contains("t crease"));
+}

@@ -4,6 +4,7 @@
 
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/topology_report.hpp"
+#include "nome/scene/save_nome.hpp"
 #include "nome/scene/scene.hpp"
 #include "scene/scene_support.hpp"
 #include "support/shared_examples.hpp"
@@ -177,6 +178,26 @@ TEST_CASE("surfaces colour faces: a face's own surface wins over its instance's"
   CHECK(soup.face_colors[1] == Color(0, 0.5f, 1));  // c2: surface U
   CHECK(soup.face_colors[2] == Color(0, 0, 1));     // c3: the instance's surface B
   CHECK(soup.face_names[0] == "cube1_c1");
+}
+
+TEST_CASE("sharp weighs edges and single vertices with OpenSubdiv's sharpness", "[scene]") {
+  const Scene s = Scene::from_text(
+      "point a (0 0 0) endpoint point b (1 0 0) endpoint point c (1 1 0) endpoint point d (0 1 0) endpoint\n"
+      "point e (2 0 0) endpoint point f (2 1 0) endpoint\n"
+      "mesh m face q1 (a b c d) endface face q2 (b e f c) endface\n"
+      "  sharp 1.5 (b c) endsharp sharp 0.5 (a) endsharp sharp (f) endsharp endmesh\n"
+      "instance i m endinstance\n",
+      "t.nome");
+  CHECK(s.warnings().empty());
+  const Mesh m = build_mesh(s.combined_soup());
+  Index shared = no_index;
+  for (Index e = 0; e < m.num_edges(); ++e)
+    if (!m.edge(e).is_boundary()) shared = e;
+  REQUIRE(shared != no_index);
+  CHECK(m.edge_sharpness(shared) == 1.5f);
+  CHECK(m.vertex_sharpness(0) == 0.5f);
+  CHECK(m.vertex_sharpness(5) == infinite_sharpness);
+  CHECK_THAT(to_nome_text(s), Catch::Contains("sharp 0.5 (a) endsharp"));
 }
 
 TEST_CASE("sharp marks a chain of edges, delete removes faces by name", "[scene]") {

@@ -13,8 +13,10 @@
 #include <string>
 #include <string_view>
 
+#include "io/obj_tag_lines.hpp"
 #include "nome/atomic_file.hpp"
 #include "nome/error.hpp"
+#include "nome/io/obj_tags.hpp"
 
 namespace nome {
 namespace {
@@ -36,6 +38,7 @@ struct FaceLine {
 struct LineScan {
   std::vector<FaceLine> faces;
   std::vector<Vec3> positions;
+  std::vector<ObjTag> tags;  // OpenSubdiv's `t` lines
 };
 
 struct ObjToken {
@@ -97,7 +100,9 @@ LineScan scan_lines(const std::filesystem::path& path) {
     // Only the one-letter statements `v` and `f` (not vt, vn, fo...).
     if (i == std::string::npos || (i + 1 < text.size() && text.find_first_of(" \t\r#", i + 1) != i + 1))
       continue;
-    if (text[i] == 'v') {
+    if (text[i] == 't') {
+      scan.tags.push_back(parse_obj_tag(file, line, text));
+    } else if (text[i] == 'v') {
       const std::vector<ObjToken> tokens = tokens_after(text, i + 1);
       // x y z, x y z w, or x y z r g b (a common extension for vertex colours).
       if (tokens.size() != 3 && tokens.size() != 4 && tokens.size() != 6)
@@ -201,10 +206,11 @@ PolygonSoup read_obj(const std::filesystem::path& path) {
       ++face_number;
     }
   }
+  apply_obj_tags(file, scan.tags, soup);
   return soup;
 }
 
-void write_obj(const std::filesystem::path& path, const Mesh& mesh) {
+void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSubdivisionTags& tags) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "# written by nome: " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces\n";
     char buf[96];
@@ -218,6 +224,7 @@ void write_obj(const std::filesystem::path& path, const Mesh& mesh) {
       for (Index v : mesh.face_vertices(f)) out << ' ' << (v + 1);
       out << '\n';
     }
+    write_obj_tags(out, mesh, tags);
   });
 }
 

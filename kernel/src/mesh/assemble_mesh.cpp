@@ -25,6 +25,9 @@ MeshArrays take_arrays(Mesh&& mesh) {
   a.edges.clear();
   a.num_components = 0;
   a.face_colors.clear();
+  a.edge_sharpness.clear();
+  a.vertex_sharpness.clear();
+  a.face_holes.clear();
   return a;
 }
 

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <string>
 
+#include "mesh/sharpness.hpp"
 #include "nome/error.hpp"
 #include "nome/mesh/mesh.hpp"
 
@@ -270,17 +271,7 @@ Mesh build_mesh(PolygonSoup soup) {
   find_fans(m.arrays_, nv, labels, problems);
   problems.throw_if_any();
 
-  // Sharp marks name vertex pairs; the fan of the first vertex finds the edge.
-  for (const auto& [a, b] : soup.sharp_edges) {
-    Index found = no_index;
-    if (a < nv && b < nv)
-      for (Index e : m.vertex_edges(a))
-        if (m.arrays_.edges[e].other_vertex(a) == b) found = e;
-    if (found == no_index)
-      throw TopologyError("build_mesh: sharp edge (" + labels.vertex(a) + ", " + labels.vertex(b) +
-                          ") is not an edge of any face");
-    m.arrays_.edges[found].is_sharp = true;
-  }
+  apply_soup_features(m, soup);
 
   m.find_boundary_loops();
   m.find_components();
@@ -372,8 +363,7 @@ PolygonSoup to_soup(const Mesh& mesh) {
   soup.vertex_names = mesh.vertex_names();
   soup.face_names = mesh.face_names();
   soup.face_colors = mesh.face_colors();
-  for (const Edge& e : mesh.edges())
-    if (e.is_sharp) soup.sharp_edges.emplace_back(e.vertices[0], e.vertices[1]);
+  add_features_to_soup(mesh, soup);
   return soup;
 }
 

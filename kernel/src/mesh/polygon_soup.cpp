@@ -27,7 +27,17 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
     into.face_colors.insert(into.face_colors.end(), part.face_colors.begin(), part.face_colors.end());
     into.face_colors.resize(into.num_faces(), default_face_color);
   }
+  // Weights: where only one side has them, the other's sharp edges are infinitely sharp.
+  if (!into.sharp_edge_weights.empty() || !part.sharp_edge_weights.empty()) {
+    into.sharp_edge_weights.resize(into.sharp_edges.size(), infinite_sharpness);
+    into.sharp_edge_weights.insert(into.sharp_edge_weights.end(), part.sharp_edge_weights.begin(),
+                                   part.sharp_edge_weights.end());
+    into.sharp_edge_weights.resize(into.sharp_edges.size() + part.sharp_edges.size(), infinite_sharpness);
+  }
   for (auto [a, b] : part.sharp_edges) into.sharp_edges.emplace_back(a + base, b + base);
+  for (auto [v, w] : part.sharp_vertices) into.sharp_vertices.emplace_back(v + base, w);
+  const Index face_base = into.num_faces() - part.num_faces();
+  for (Index f : part.hole_faces) into.hole_faces.push_back(f + face_base);
 }
 
 }  // namespace nome

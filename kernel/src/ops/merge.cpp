@@ -7,6 +7,7 @@
 #include <numeric>
 #include <optional>
 
+#include "mesh/sharpness.hpp"
 #include "nome/mesh/concatenate.hpp"
 
 namespace nome {
@@ -404,9 +405,9 @@ MergeResult merge_by_plan(const Mesh& mesh, MergePlan plan) {
   for (Index v : mesh.corner_vertices()) soup.face_vertices.push_back(plan.vertex_map[v]);
   soup.face_names = mesh.face_names();
   soup.face_colors = mesh.face_colors();
-  for (const Edge& e : mesh.edges())
-    if (e.is_sharp)
-      soup.sharp_edges.emplace_back(plan.vertex_map[e.vertices[0]], plan.vertex_map[e.vertices[1]]);
+  add_features_to_soup(mesh, soup);
+  for (auto& [a, b] : soup.sharp_edges) a = plan.vertex_map[a], b = plan.vertex_map[b];
+  for (auto& [v, w] : soup.sharp_vertices) v = plan.vertex_map[v];
 
   MergeResult result;
   result.mesh = build_mesh(std::move(soup));

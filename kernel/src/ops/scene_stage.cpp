@@ -97,6 +97,9 @@ InputChange SceneStage::update(PipelineInput input) {
   Structure next{std::move(soup.face_offsets),
                  std::move(soup.face_vertices),
                  std::move(soup.sharp_edges),
+                 std::move(soup.sharp_edge_weights),
+                 std::move(soup.sharp_vertices),
+                 std::move(soup.hole_faces),
                  std::move(soup.vertex_names),
                  std::move(soup.face_names),
                  soup.num_vertices(),
@@ -112,6 +115,9 @@ InputChange SceneStage::update(PipelineInput input) {
   soup.face_offsets = structure_.face_offsets;
   soup.face_vertices = structure_.face_vertices;
   soup.sharp_edges = structure_.sharp_edges;
+  soup.sharp_edge_weights = structure_.sharp_edge_weights;
+  soup.sharp_vertices = structure_.sharp_vertices;
+  soup.hole_faces = structure_.hole_faces;
   soup.vertex_names = structure_.vertex_names;
   soup.face_names = structure_.face_names;
   try {
@@ -170,7 +176,10 @@ InputChange SceneStage::update(const Mesh& mesh) {
       has_mesh_ && mesh.face_offsets() == mesh_.face_offsets() &&
       mesh.corner_vertices() == mesh_.corner_vertices() && mesh.num_vertices() == mesh_.num_vertices() &&
       std::equal(mesh.edges().begin(), mesh.edges().end(), mesh_.edges().begin(),
-                 [](const Edge& a, const Edge& b) { return a.is_sharp == b.is_sharp; });
+                 [](const Edge& a, const Edge& b) { return a.is_sharp == b.is_sharp; }) &&
+      mesh.edge_sharpness_weights() == mesh_.edge_sharpness_weights() &&
+      mesh.vertex_sharpness_weights() == mesh_.vertex_sharpness_weights() &&
+      mesh.face_holes() == mesh_.face_holes();
   if (is_same_topology && mesh.positions() == mesh_.positions()) {
     work_ = StageWork::cached;
     return InputChange::none;

@@ -35,6 +35,9 @@ class SceneStage {
   struct Structure {
     Buffer<Index> face_offsets, face_vertices;
     std::vector<std::pair<Index, Index>> sharp_edges;
+    std::vector<float> sharp_edge_weights;
+    std::vector<std::pair<Index, float>> sharp_vertices;
+    std::vector<Index> hole_faces;
     std::vector<std::string> vertex_names, face_names;
     Index num_vertices = 0;
     Joining joining = Joining::manifold;

@@ -91,8 +91,9 @@ StageWork SolidStages::work(Stage stage) const {
 Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int levels,
                                    const PipelineSettings& s) {
   if (has_new_topology_ || !stage.refinement || stage.levels != levels ||
-      stage.refinement->boundary() != s.boundary) {
-    stage.refinement.emplace(in, levels, s.boundary, s.threads);
+      stage.refinement->boundary() != s.boundary || stage.refinement->creases() != s.creases ||
+      !stage.refinement->fits(in)) {
+    stage.refinement.emplace(in, levels, s.boundary, s.threads, s.creases);
     stage.levels = levels;
     Buffer<Vec3> positions(stage.refinement->num_vertices());
     stage.refinement->refine_positions(in, s.rule, positions, s.threads);

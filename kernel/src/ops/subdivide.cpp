@@ -4,7 +4,9 @@
 #include <utility>
 
 #include "nome/error.hpp"
+#include "nome/mesh/glue_faces.hpp"
 #include "ops/refinement_level.hpp"
+#include "ops/sharp_level.hpp"
 
 namespace nome {
 namespace {
@@ -16,15 +18,27 @@ std::vector<Index> sharp_edges(const Mesh& mesh) {
   return sharp;
 }
 
-// Boundary mode none: as in OpenSubdiv, every face with a border vertex is a hole. Empty when none is.
+// The faces marked as holes; empty when none is.
+std::vector<bool> holes_of(const Mesh& mesh) {
+  std::vector<bool> holes;
+  if (!mesh.has_holes()) return holes;
+  holes.resize(mesh.num_faces());
+  for (Index f = 0; f < mesh.num_faces(); ++f) holes[f] = mesh.is_hole(f);
+  return holes;
+}
+
+// Boundary mode none: as in OpenSubdiv, every face at a border vertex is a hole unless all the vertex's
+// border edges are marked infinitely sharp. Empty when none is.
 std::vector<bool> hole_faces(const Mesh& mesh, BoundaryMode boundary) {
   std::vector<bool> is_hole;
   if (boundary != BoundaryMode::none) return is_hole;
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
-    bool has_border_vertex = false;
-    for (Index v : mesh.face_vertices(f)) has_border_vertex = has_border_vertex || mesh.is_boundary_vertex(v);
-    if (has_border_vertex && is_hole.empty()) is_hole.resize(mesh.num_faces(), false);
-    if (has_border_vertex) is_hole[f] = true;
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    bool is_excluded = false;
+    for (Index e : mesh.vertex_edges(v))
+      is_excluded = is_excluded || (mesh.edge(e).is_boundary() && !mesh.edge(e).is_sharp);
+    if (!is_excluded) continue;
+    if (is_hole.empty()) is_hole.resize(mesh.num_faces(), false);
+    for (Index c : mesh.vertex_corners(v)) is_hole[mesh.corner_face(c)] = true;
   }
   return is_hole;
 }
@@ -52,19 +66,47 @@ PolygonSoup without_holes(const Mesh& full, const std::vector<bool>& is_base_fac
 
 }  // namespace
 
-Refinement::Refinement(const Mesh& base, int levels, BoundaryMode boundary, int threads)
+Refinement::Refinement(const Mesh& base, int levels, BoundaryMode boundary, int threads,
+                       const CreaseOptions& creases)
     : base_vertices_(base.num_vertices()),
       base_faces_(base.num_faces()),
       base_corners_(base.num_corners()),
       base_edges_(base.num_edges()),
       base_sharp_edges_(sharp_edges(base)),
+      base_edge_weights_(base.edge_sharpness_weights()),
+      base_vertex_weights_(base.vertex_sharpness_weights()),
       boundary_(boundary),
+      creases_(creases),
       is_hole_(hole_faces(base, boundary)) {
   if (levels < 1)
     throw InvalidInputError("Refinement: levels must be at least 1, got " + std::to_string(levels));
   levels_.resize(size_t(levels));
+  base_holes_ = holes_of(base);
+  if (!base_holes_.empty()) {
+    is_hole_.resize(base.num_faces(), false);
+    for (Index f = 0; f < base.num_faces(); ++f) is_hole_[f] = is_hole_[f] || base_holes_[f];
+  }
+  SharpLevel features = base_sharp_level(base, creases);
+  if (!features.empty()) sharp_.push_back(std::move(features));
+  build_levels(base, threads);
+  if (!is_hole_.empty()) find_kept_vertices(base);
+}
+
+// The topology pass, level by level. The features of each level come from its parent's before the level
+// is built, so that a level whose semi-sharp features need its edges and fans gets them in full.
+void Refinement::build_levels(const Mesh& base, int threads) {
   const MeshLevelView view(base);
+  Index corners = base.num_corners();  // of level k
   for (size_t k = 0; k < levels_.size(); ++k) {
+    const Index child_faces = corners,
+                child_edges = 2 * (k == 0 ? base.num_edges() : levels_[k - 1].edge_count) + corners;
+    if (sharp_.size() == k + 1 && k + 1 < levels_.size()) {
+      SharpLevel child =
+          k == 0 ? child_sharp_level(view, sharp_[k], creases_.method, child_faces, child_edges)
+                 : child_sharp_level(levels_[k - 1], sharp_[k], creases_.method, child_faces, child_edges);
+      if (!child.empty()) sharp_.push_back(std::move(child));
+    }
+    corners = 4 * child_faces;
     if (k >= 1 && k + 1 == levels_.size()) {
       if (k == 1)
         refine_grandchild_quads(view, levels_[k], threads);
@@ -72,7 +114,9 @@ Refinement::Refinement(const Mesh& base, int levels, BoundaryMode boundary, int 
         refine_grandchild_quads(levels_[k - 2], levels_[k], threads);
       continue;
     }
-    const LevelDetail detail = k + 1 == levels_.size()   ? LevelDetail::quads
+    const bool needs_full = sharp_.size() > k + 1 && sharp_[k + 1].needs_topology;
+    const LevelDetail detail = needs_full                ? LevelDetail::full
+                               : k + 1 == levels_.size() ? LevelDetail::quads
                                : k + 2 == levels_.size() ? LevelDetail::counts
                                                          : LevelDetail::full;
     if (k == 0)
@@ -80,7 +124,6 @@ Refinement::Refinement(const Mesh& base, int levels, BoundaryMode boundary, int 
     else
       refine_topology(levels_[k - 1], levels_[k], detail, threads);
   }
-  if (!is_hole_.empty()) find_kept_vertices(base);
 }
 
 void Refinement::find_kept_vertices(const Mesh& base) {
@@ -93,6 +136,7 @@ void Refinement::find_kept_vertices(const Mesh& base) {
   kept_vertices_.clear();
   for (Index v = 0; v < num_vertices(); ++v)
     if (is_used[v]) kept_vertices_.push_back(v);
+  output_vertices_ = kept_vertices_;
 }
 
 Refinement::Refinement(Refinement&&) noexcept = default;
@@ -106,7 +150,8 @@ int Refinement::levels() const {
 bool Refinement::fits(const Mesh& base) const {
   return base.num_vertices() == base_vertices_ && base.num_faces() == base_faces_ &&
          base.num_corners() == base_corners_ && base.num_edges() == base_edges_ &&
-         sharp_edges(base) == base_sharp_edges_;
+         sharp_edges(base) == base_sharp_edges_ && base.edge_sharpness_weights() == base_edge_weights_ &&
+         base.vertex_sharpness_weights() == base_vertex_weights_ && holes_of(base) == base_holes_;
 }
 
 Index Refinement::num_vertices() const {
@@ -126,6 +171,7 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
                             " positions, the last level has " + std::to_string(num_vertices()));
   std::span<const Vec3> in = base.positions();
   const VertexRules rules{rule, boundary_ == BoundaryMode::edge_and_corner};
+  const SharpRules sharp_rules{creases_.method, rules};
   for (size_t k = 0; k < levels_.size(); ++k) {
     std::span<Vec3> target = out;
     if (k + 1 < levels_.size()) {
@@ -138,6 +184,12 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
       refine_child_positions(MeshLevelView(base), in, rules, target, threads);
     else
       refine_child_positions(levels_[k - 2], in, rules, target, threads);
+    if (k < sharp_.size()) {
+      if (k == 0)
+        refine_sharp_positions(MeshLevelView(base), sharp_[k], sharp_rules, in, target, threads);
+      else
+        refine_sharp_positions(levels_[k - 1], sharp_[k], sharp_rules, in, target, threads);
+    }
     in = target;
   }
 }
@@ -150,10 +202,10 @@ std::span<const Vec3> Refinement::refine_positions(const Mesh& base, Subdivision
 
 void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, Mesh& result, int threads) {
   if (is_hole_.empty()) return refine_positions(base, rule, result.positions(), threads);
-  if (result.num_vertices() != kept_vertices_.size())
+  if (result.num_vertices() != output_vertices_.size())
     throw InvalidInputError("Refinement::refine_positions: the result was not made by this refinement");
   const std::span<const Vec3> all = refine_positions(base, rule, threads);
-  for (size_t i = 0; i < kept_vertices_.size(); ++i) result.positions()[i] = all[kept_vertices_[i]];
+  for (size_t i = 0; i < output_vertices_.size(); ++i) result.positions()[i] = all[output_vertices_[i]];
 }
 
 Mesh Refinement::mesh(const Mesh& base, Buffer<Vec3> positions, int threads) const {
@@ -216,12 +268,23 @@ Mesh Refinement::mesh(const Mesh& base, Buffer<Vec3> positions, int threads) con
     for (Index f = 0; f < nf; ++f) a.face_colors[f] = base.face_colors()[base.corner_face(f >> shift)];
   }
   if (is_hole_.empty()) return assemble_mesh(std::move(a));
-  return build_mesh(without_holes(assemble_mesh(std::move(a)), is_hole_, shift, base, kept_vertices_));
+  PolygonSoup soup = without_holes(assemble_mesh(std::move(a)), is_hole_, shift, base, kept_vertices_);
+  output_vertices_ = kept_vertices_;
+  try {
+    return build_mesh(soup);
+  } catch (const TopologyError&) {
+    // Holes may leave faces that touch at a vertex only (a hole at a border): one vertex per fan there.
+    GluedFaces glued = glue_faces(soup);
+    output_vertices_.resize(glued.vertex_sources.size());
+    for (size_t i = 0; i < glued.vertex_sources.size(); ++i)
+      output_vertices_[i] = kept_vertices_[glued.vertex_sources[i]];
+    return std::move(glued.mesh);
+  }
 }
 
 Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options) {
   if (options.levels == 0) return mesh;
-  Refinement refinement(mesh, options.levels, options.boundary);
+  Refinement refinement(mesh, options.levels, options.boundary, 1, options.creases);
   Buffer<Vec3> positions(refinement.num_vertices());
   refinement.refine_positions(mesh, options.rule, positions);
   return refinement.mesh(mesh, std::move(positions));

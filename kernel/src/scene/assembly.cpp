@@ -43,9 +43,19 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
     out.face_has_color.back() = piece.face_has_color[f];
     has_color = has_color || piece.face_has_color[f];
   }
-  for (auto [a, b] : s.sharp_edges)
-    if (new_id[a] != no_index && new_id[b] != no_index)
-      out.soup.sharp_edges.emplace_back(new_id[a], new_id[b]);
+  for (size_t i = 0; i < s.sharp_edges.size(); ++i) {
+    const auto [a, b] = s.sharp_edges[i];
+    if (new_id[a] == no_index || new_id[b] == no_index) continue;
+    if (!s.sharp_edge_weights.empty()) {
+      out.soup.sharp_edge_weights.resize(out.soup.sharp_edges.size(), infinite_sharpness);
+      out.soup.sharp_edge_weights.push_back(s.sharp_edge_weights[i]);
+    } else if (!out.soup.sharp_edge_weights.empty()) {
+      out.soup.sharp_edge_weights.push_back(infinite_sharpness);
+    }
+    out.soup.sharp_edges.emplace_back(new_id[a], new_id[b]);
+  }
+  for (auto [v, w] : s.sharp_vertices)
+    if (new_id[v] != no_index) out.soup.sharp_vertices.emplace_back(new_id[v], w);
   for (const RimLine& r : piece.rims) {
     RimLine rim{r.name, {}, r.is_loop};
     for (Index v : r.vertices) rim.vertices.push_back(new_id[v]);

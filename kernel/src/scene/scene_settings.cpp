@@ -31,8 +31,6 @@ StageSettings Scene::stage_settings() const {
     if (stage.boundary) s.boundary = parse_boundary_mode(stage.boundary->text);
   }
   for (const Name& mode : ast_.boundary_modes) s.boundary = parse_boundary_mode(mode.text);
-  for (const MeshDecl& m : ast_.meshes)
-    for (const SharpDecl& sharp : m.sharps) s.has_sharp_weights = s.has_sharp_weights || sharp.weight;
   return s;
 }
 
@@ -111,15 +109,6 @@ void Scene::check_settings(std::vector<Diagnostic>& errors) {
     if (!parse_boundary_mode(mode->text))
       errors.push_back(located(
           mode->location, "unknown boundary mode '" + mode->text + "' (none, edge_only or edge_and_corner)"));
-  // One warning per file, at its first weight.
-  for (const MeshDecl& m : ast_.meshes)
-    for (const SharpDecl& sharp : m.sharps)
-      if (sharp.weight) {
-        warnings_.push_back({Severity::warning, file(), sharp.weight->location,
-                             "sharpness weights are read and kept, but every sharp edge is infinitely sharp "
-                             "until weights are graded"});
-        return;
-      }
 }
 
 }  // namespace nome::scene

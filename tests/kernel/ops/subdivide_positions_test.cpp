@@ -90,6 +90,53 @@ TEST_CASE("a Möbius band subdivides as its orientation double cover does, each 
   }
 }
 
+TEST_CASE("semi-sharp creases and corners across a Möbius seam subdivide as on the double cover",
+          "[kernel]") {
+  const Index segments = 9, width = 3;
+  PolygonSoup band = test::mobius_band(segments, width);
+  PolygonSoup cover = mobius_double_cover(band, segments, width);
+  const auto band_vertex = [&](Index i, Index j) { return (i % segments) * (width + 1) + j; };
+  const auto cover_vertex = [&](Index i, Index j) { return (i % (2 * segments)) * (width + 1) + j; };
+  // A ring along the band's line j = 1, which comes back as j = 2 across the seam, weight 2.5; two
+  // rungs across the band at the seam, 0.7; a corner of weight 1.3 on the band's first vertex.
+  for (Index i = 0; i < segments; ++i) {
+    const Index far = i + 1 == segments ? band_vertex(0, width - 1) : band_vertex(i + 1, 1);
+    band.sharp_edges.emplace_back(band_vertex(i, 1), far);
+    band.sharp_edge_weights.push_back(2.5f);
+  }
+  for (Index j = 1; j < 3; ++j) {
+    band.sharp_edges.emplace_back(band_vertex(0, j - 1), band_vertex(0, j));
+    band.sharp_edge_weights.push_back(0.7f);
+  }
+  band.sharp_vertices = {{band_vertex(0, 0), 1.3f}};
+  // The cover carries each mark on both of its copies.
+  for (Index i = 0; i < 2 * segments; ++i) {
+    const Index jj = i < segments ? 1 : width - 1;
+    cover.sharp_edges.emplace_back(cover_vertex(i, jj), cover_vertex(i + 1, jj));
+    cover.sharp_edge_weights.push_back(2.5f);
+  }
+  for (Index half : {0u, segments})
+    for (Index j = 1; j < 3; ++j) {
+      const Index a = half == 0 ? j - 1 : width - (j - 1), b = half == 0 ? j : width - j;
+      cover.sharp_edges.emplace_back(cover_vertex(half, a), cover_vertex(half, b));
+      cover.sharp_edge_weights.push_back(0.7f);
+    }
+  cover.sharp_vertices = {{cover_vertex(0, 0), 1.3f}, {cover_vertex(segments, width), 1.3f}};
+  for (CreaseMethod method : {CreaseMethod::uniform, CreaseMethod::chaikin})
+    for (int levels = 1; levels <= 3; ++levels) {
+      INFO(to_string(method) << ", " << levels << " levels");
+      SubdivisionOptions options{levels};
+      options.creases.method = method;
+      const Buffer<Vec3> ours = subdivide(build_mesh(band), options).positions();
+      CHECK(test::compare_point_sets(ours, subdivide(build_mesh(cover), options).positions(), 1e-12, 2) ==
+            "");
+      // The weights matter: without them the band refines elsewhere.
+      PolygonSoup plain = band;
+      plain.sharp_edges.clear(), plain.sharp_edge_weights.clear(), plain.sharp_vertices.clear();
+      CHECK(test::compare_point_sets(ours, subdivide(build_mesh(plain), options).positions(), 1e-6) != "");
+    }
+}
+
 TEST_CASE("cube, level 1: face points, edge points and both vertex rules by hand", "[kernel]") {
   const Mesh cube = build_mesh(test::cube());
   const std::vector<Vec3> face_points = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}};

@@ -48,6 +48,11 @@ struct MeshArrays {
   Buffer<Index> face_components;  // empty: found by a walk over faces
   Index num_components = 0;
   std::vector<Color> face_colors;  // empty, or one per face
+  // Semi-sharp crease weights (see Mesh::edge_sharpness), corner weights and hole marks: each empty, or
+  // one per edge / vertex / face.
+  std::vector<float> edge_sharpness;
+  std::vector<float> vertex_sharpness;
+  std::vector<bool> face_holes;
 };
 
 // A 2-manifold polygon mesh, possibly with borders, possibly non-orientable, as index arrays.
@@ -105,6 +110,30 @@ class Mesh {
   const Buffer<Edge>& edges() const { return arrays_.edges; }
   const Edge& edge(Index e) const { return arrays_.edges[e]; }
   void set_sharp(Index e, bool sharp) { arrays_.edges[e].is_sharp = sharp; }
+  // Crease weights with OpenSubdiv's meaning (Catmark, uniform refinement): an edge of weight w >= 1 is
+  // a crease for the first floor(w) levels, a fractional rest blends, infinite_sharpness never decays.
+  // An is_sharp edge weighs infinite_sharpness; setting a weight sets is_sharp exactly when it is
+  // infinite. Storage is allocated with the first non-zero weight.
+  float edge_sharpness(Index e) const {
+    if (arrays_.edges[e].is_sharp) return infinite_sharpness;
+    return arrays_.edge_sharpness.empty() ? 0.0f : arrays_.edge_sharpness[e];
+  }
+  void set_edge_sharpness(Index e, float weight);
+  // A corner weight: the vertex stays put for as many levels (fractional rest blended); 0 by default.
+  float vertex_sharpness(Index v) const {
+    return arrays_.vertex_sharpness.empty() ? 0.0f : arrays_.vertex_sharpness[v];
+  }
+  void set_vertex_sharpness(Index v, float weight);
+  // True when some edge has a finite non-zero weight or some vertex a corner weight.
+  bool has_sharpness_weights() const;
+  // Semi-sharp weights: empty, or one per edge (is_sharp edges' entries are not read).
+  const std::vector<float>& edge_sharpness_weights() const { return arrays_.edge_sharpness; }
+  const std::vector<float>& vertex_sharpness_weights() const { return arrays_.vertex_sharpness; }
+  // Hole faces are subdivided like any other (their neighbours keep their shape) but not output.
+  bool is_hole(Index f) const { return !arrays_.face_holes.empty() && arrays_.face_holes[f]; }
+  void set_hole(Index f, bool hole);
+  bool has_holes() const;
+  const std::vector<bool>& face_holes() const { return arrays_.face_holes; }  // empty, or one per face
 
   // Vertex fans: corners (one per incident face) and edges in fan order, as documented above.
   std::span<const Index> vertex_corners(Index v) const {

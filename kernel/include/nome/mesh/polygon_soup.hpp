@@ -20,6 +20,11 @@ struct PolygonSoup {
   std::vector<std::string> face_names;               // empty, or one per face
   std::vector<Color> face_colors;                    // empty, or one per face
   std::vector<std::pair<Index, Index>> sharp_edges;  // vertex pairs whose edge is marked sharp
+  // Empty: every sharp edge is infinitely sharp; otherwise one crease weight per sharp_edges pair
+  // (OpenSubdiv's sharpness: from infinite_sharpness up, infinitely sharp).
+  std::vector<float> sharp_edge_weights;
+  std::vector<std::pair<Index, float>> sharp_vertices;  // corner vertices and their sharpness
+  std::vector<Index> hole_faces;  // faces refined for their neighbours' sake but not output
 
   Index add_vertex(const Vec3& p) {
     positions.push_back(p);

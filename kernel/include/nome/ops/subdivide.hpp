@@ -6,8 +6,11 @@
 
 #include "nome/mesh/mesh.hpp"
 #include "nome/ops/boundary_mode.hpp"
+#include "nome/ops/crease_options.hpp"
 
 namespace nome {
+
+struct SharpLevel;
 
 // The smooth-vertex rule of Catmull-Clark (report 004 section 4.1.3; see spec/README.md on names).
 enum class SubdivisionRule {
@@ -19,12 +22,16 @@ struct SubdivisionOptions {
   int levels = 1;
   SubdivisionRule rule = SubdivisionRule::classic;
   BoundaryMode boundary = BoundaryMode::edge_only;
+  CreaseOptions creases;
 };
 
 // Catmull-Clark subdivision (report 004 section 4), `levels` times, on any mesh the kernel accepts:
 // polygons of any degree, borders, Möbius edges, several components. Border and sharp edges keep their
 // midpoints; a vertex with >= 3 sharp edges stays put, with 2 it follows the crease (6v + a + b) / 8;
-// `boundary` decides the vertices of a single face and whether border faces are output.
+// `boundary` decides the vertices of a single face and whether border faces are output. Crease and
+// corner weights (Mesh::edge_sharpness, vertex_sharpness) follow OpenSubdiv's Catmark rules: a weight
+// decays by one per level (or by `creases.method`), a vertex takes its parent's and its child's rule
+// blended by the weights that decayed to zero. Hole faces are refined but not output.
 // Each n-gon becomes n quads with its orientation; children of Möbius and sharp edges keep the flag.
 // Positions never depend on face orientation or numbering.
 Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options);
@@ -40,14 +47,18 @@ Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options);
 class Refinement {
  public:
   // The topology pass, on up to `threads` threads. Throws InvalidInputError unless levels >= 1.
-  Refinement(const Mesh& base, int levels, BoundaryMode boundary = BoundaryMode::edge_only, int threads = 1);
+  // The crease weights of `base` are part of the topology, and so are `creases`.
+  Refinement(const Mesh& base, int levels, BoundaryMode boundary = BoundaryMode::edge_only, int threads = 1,
+             const CreaseOptions& creases = {});
   Refinement(Refinement&&) noexcept;
   Refinement& operator=(Refinement&&) noexcept;
   ~Refinement();
 
   int levels() const;
   BoundaryMode boundary() const { return boundary_; }
-  // True when `base` has the counts and sharp flags of the mesh this refinement was built from.
+  const CreaseOptions& creases() const { return creases_; }
+  // True when `base` has the counts, sharp flags, weights and holes of the mesh this refinement was built
+  // from.
   bool fits(const Mesh& base) const;
 
   // The last level: every face is a quad, quad f has corners quad_vertices()[4f .. 4f+3].
@@ -64,22 +75,31 @@ class Refinement {
 
   // The last level as a full Mesh with the given positions (from refine_positions), built from the
   // level before it without any search; faces keep the colours and components of their ancestors. The
-  // descendants of hole faces are left out, with the vertices only they use.
+  // descendants of hole faces are left out, with the vertices only they use; where that leaves faces
+  // touching at a vertex only, the vertex becomes one per fan.
   Mesh mesh(const Mesh& base, Buffer<Vec3> positions, int threads = 1) const;
-  // The position pass into `result`, a mesh made by mesh() from the same base topology (the fast path).
+  // The position pass into `result`, the mesh this refinement's mesh() made last (the fast path).
   void refine_positions(const Mesh& base, SubdivisionRule rule, Mesh& result, int threads = 1);
 
   struct Level;
 
  private:
   void find_kept_vertices(const Mesh& base);
+  void build_levels(const Mesh& base, int threads);
 
   std::vector<Level> levels_;  // levels 1..k: only the last two lack edges and fans
   Index base_vertices_ = 0, base_faces_ = 0, base_corners_ = 0, base_edges_ = 0;
   std::vector<Index> base_sharp_edges_;
+  std::vector<float> base_edge_weights_, base_vertex_weights_;
+  std::vector<bool> base_holes_;
   BoundaryMode boundary_ = BoundaryMode::edge_only;
+  CreaseOptions creases_;
+  std::vector<SharpLevel> sharp_;     // per parent level from the base while it has semi-sharp features
   std::vector<bool> is_hole_;         // per base face; empty when there is none
   std::vector<Index> kept_vertices_;  // with holes: the last level's vertices mesh() keeps, in order
+  // With holes: the last level's vertex of each vertex of the mesh() made last (kept_vertices_, unless
+  // faces touching at a vertex made it split the vertex).
+  mutable std::vector<Index> output_vertices_;
 };
 
 }  // namespace nome

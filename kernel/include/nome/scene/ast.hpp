@@ -89,7 +89,7 @@ struct GeneratorDecl {
 };
 
 // `sharp [weight] (v1 v2 ...) ... endsharp` inside a mesh: the chain of edges v1-v2, v2-v3, ... is sharp;
-// a single vertex is a sharp corner. The successor's weight (a crease sharpness) is kept as written.
+// a single vertex is a sharp corner. The weight is OpenSubdiv's crease sharpness (none: infinite).
 struct SharpDecl {
   std::vector<Name> vertices;
   SourceLocation location;

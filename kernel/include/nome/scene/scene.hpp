@@ -42,7 +42,6 @@ struct StageSettings {
   std::optional<double> offset_distance;
   std::optional<BoundaryMode>
       boundary;  // `sd_boundary MODE` in a subdivision block, or `boundary MODE endboundary`
-  bool has_sharp_weights = false;  // `sharp W (...)`: read and kept, each crease infinitely sharp for now
 };
 
 // The file's render statements as picture defaults, evaluated with the current slider values; `nome

@@ -20,9 +20,9 @@ void sharp(StatementParser& parser, std::vector<SharpDecl>& out) {
   do {
     SharpDecl s{{}, parser.peek().location, weight};
     s.vertices = parser.name_list("a vertex name or ')'");
-    if (s.vertices.size() < 2)
-      parser.diagnostics().error(s.location, "sharp needs at least 2 vertices (an edge), found " +
-                                                 std::to_string(s.vertices.size()));
+    if (s.vertices.empty())
+      parser.diagnostics().error(s.location,
+                                 "sharp needs a vertex (a corner) or a chain of vertices (edges)");
     out.push_back(std::move(s));
   } while (parser.peek().is_symbol("("));
   if (out.empty()) parser.fail(opener, "a vertex list");
@@ -74,13 +74,22 @@ void declare_mesh(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
 Piece evaluate_mesh(DefinitionContext& context, Index decl) {
   const MeshDecl& m = context.ast().meshes[decl];
   for (const FaceDecl& f : m.faces) context.add_face(f.vertices, f.name.text, f.surface);
-  // A sharp chain v1-v2, v2-v3, ... marks the edges between consecutive vertices; a weight is read (its
-  // expression's parameters are tracked) but every crease is infinitely sharp until weights are graded.
+  // A sharp chain v1-v2, v2-v3, ... marks the edges between consecutive vertices, a single vertex is a
+  // corner; the weight is OpenSubdiv's sharpness (none: infinitely sharp).
+  PolygonSoup& soup = context.piece().soup;
   for (const SharpDecl& s : m.sharps) {
-    if (s.weight) context.number(*s.weight);
+    const float weight = s.weight ? float(context.number(*s.weight)) : infinite_sharpness;
+    if (s.vertices.size() == 1) {
+      if (const Index v = context.vertex(s.vertices[0]); v != no_index)
+        soup.sharp_vertices.emplace_back(v, weight);
+      continue;
+    }
     for (size_t i = 0; i + 1 < s.vertices.size(); ++i) {
       const Index a = context.vertex(s.vertices[i]), b = context.vertex(s.vertices[i + 1]);
-      if (a != no_index && b != no_index) context.piece().soup.sharp_edges.emplace_back(a, b);
+      if (a == no_index || b == no_index) continue;
+      soup.sharp_edge_weights.resize(soup.sharp_edges.size(), infinite_sharpness);
+      soup.sharp_edges.emplace_back(a, b);
+      soup.sharp_edge_weights.push_back(weight);
     }
   }
   return std::move(context.piece());
