@@ -63,6 +63,31 @@ class TriangleBvh {
   Index num_triangles() const { return triangles_.size(); }
   Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
   const DisplayTriangles& triangles() const { return triangles_; }
+  // The mesh vertex at corner i (0..2) of triangle t, and its position as the tree stored it.
+  Index triangle_vertex(Index t, int i) const { return corner_vertices_[triangles_.corners[t][i]]; }
+  const Vec3& triangle_point(Index t, int i) const { return positions_[triangle_vertex(t, i)]; }
+
+  // Calls visit(t) for each triangle in a leaf whose box overlaps [lower, upper]: a superset of the
+  // triangles meeting that box, for proximity queries (the print check).
+  template <typename Visit>
+  void visit_box(const Vec3& lower, const Vec3& upper, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    Index stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const BvhNode& node = nodes_[stack[--top]];
+      if (node.lower.x > upper.x || node.lower.y > upper.y || node.lower.z > upper.z ||
+          node.upper.x < lower.x || node.upper.y < lower.y || node.upper.z < lower.z)
+        continue;
+      if (node.count > 0) {
+        for (Index i = node.first; i < node.first + node.count; ++i) visit(order_[i]);
+      } else {
+        stack[top++] = node.first + 1;
+        stack[top++] = node.first;
+      }
+    }
+  }
 
   // The classified hit of the ray on triangle t at the given triangle hit (shared with the
   // brute-force reference in the tests).
