@@ -31,7 +31,8 @@ std::vector<OptionSpec> input_options() {
       {"--quads", "", "", "pair the triangles of .sif files into quads where convex and nearly planar"},
       {"--dialect", "", "2016|jipcad",
        "read scenes in this spelling (default: as their statements say; funnel and tunnel's arguments "
-       "differ)"}};
+       "differ)"},
+      {"--quiet", "-q", "", "no progress bar (there is none either when stderr is not a terminal)"}};
   for (OptionSpec& o : pipeline_option_specs()) options.push_back(std::move(o));
   return options;
 }
@@ -42,21 +43,28 @@ Stage stage_argument(const std::string& name) {
                    "'");
 }
 
-Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes) {
+LoadedInput run_input(const Arguments& args, Stage last, const Progress& progress) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
   InputFiles input = read_input_files(args);
-  PipelineSettings settings = pipeline_settings(args, last);
-  apply_scene_stages(input.scenes, args, settings);
-  Pipeline pipeline;
-  pipeline.set_input(std::move(input.geometry));
+  LoadedInput loaded;
+  loaded.settings = pipeline_settings(args, last);
+  apply_scene_stages(input.scenes, args, loaded.settings);
+  loaded.pipeline.set_input(std::move(input.geometry));
+  loaded.pipeline.set_progress(progress);
   try {
-    pipeline.run(settings);
+    loaded.pipeline.run(loaded.settings);
   } catch (const BudgetError& e) {
     throw BudgetError(std::string(e.what()) + "; use --force to compute it anyway");
   }
-  print_warnings(pipeline.warnings());
-  if (scenes) *scenes = std::move(input.scenes);
-  return pipeline.take_result();
+  print_warnings(loaded.pipeline.warnings());
+  loaded.scenes = std::move(input.scenes);
+  return loaded;
+}
+
+Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes) {
+  LoadedInput loaded = run_input(args, last);
+  if (scenes) *scenes = std::move(loaded.scenes);
+  return loaded.pipeline.take_result();
 }
 
 }  // namespace nome::cli

@@ -20,20 +20,24 @@ bool share_vertex(const TriangleBvh& bvh, Index t, Index u) {
   return false;
 }
 
-// The crossings of triangle t with the triangles after it.
-void cross_triangle(const TriangleBvh& bvh, Index t, std::vector<Crossing>& out) {
-  const Triangle a = triangle_of(bvh, t);
-  const Vec3 lower = glm::min(glm::min(a[0], a[1]), a[2]), upper = glm::max(glm::max(a[0], a[1]), a[2]);
+// The crossings between the triangles of two leaves (the same leaf: each pair once).
+void cross_leaves(const TriangleBvh& bvh, std::span<const Index> a, std::span<const Index> b,
+                  std::vector<Crossing>& out) {
   const auto& faces = bvh.triangles().faces;
-  bvh.visit_box(lower, upper, [&](Index u) {
-    if (u <= t || faces[u] == faces[t] || share_vertex(bvh, t, u)) return;
-    const Triangle b = triangle_of(bvh, u);
-    Crossing crossing;
-    if (!triangles_cross(a, b, crossing.segment)) return;
-    crossing.face = std::min(faces[t], faces[u]);
-    crossing.other_face = std::max(faces[t], faces[u]);
-    out.push_back(crossing);
-  });
+  const bool same = a.data() == b.data();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Index t = a[i];
+    const Triangle first = triangle_of(bvh, t);
+    for (std::size_t j = same ? i + 1 : 0; j < b.size(); ++j) {
+      const Index u = b[j];
+      if (faces[u] == faces[t] || share_vertex(bvh, t, u)) continue;
+      Crossing crossing;
+      if (!triangles_cross(first, triangle_of(bvh, u), crossing.segment)) continue;
+      crossing.face = std::min(faces[t], faces[u]);
+      crossing.other_face = std::max(faces[t], faces[u]);
+      out.push_back(crossing);
+    }
+  }
 }
 
 // Joins pairs into curves: a pair joins its two faces, and crossing faces that share a vertex are one
@@ -58,15 +62,12 @@ void find_curves(const Mesh& surface, Crossings& crossings) {
 }  // namespace
 
 Crossings find_crossings(const Mesh& surface, const TriangleBvh& bvh, int threads) {
-  const Index n = bvh.num_triangles();
   const int count = std::max(1, std::min(threads, 2));
   std::vector<std::vector<Crossing>> found(count);
-  // Interleaved blocks balance the work: crossings cluster in space, and so in the Morton-sorted tree.
-  constexpr Index block = 1024;
-  const Index blocks = (n + block - 1) / block;
   run_parts(count, [&](int part) {
-    for (Index b = Index(part); b < blocks; b += Index(count))
-      for (Index t = b * block; t < std::min(n, (b + 1) * block); ++t) cross_triangle(bvh, t, found[part]);
+    bvh.visit_overlapping_leaves(part, count, [&](std::span<const Index> a, std::span<const Index> b) {
+      cross_leaves(bvh, a, b, found[part]);
+    });
   });
   Crossings crossings;
   for (auto& part : found) crossings.pairs.insert(crossings.pairs.end(), part.begin(), part.end());

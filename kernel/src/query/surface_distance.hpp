@@ -12,6 +12,15 @@
 
 namespace nome {
 
+// Each edge's length, for SurfaceDistance.
+inline std::vector<double> edge_lengths(const Mesh& mesh) {
+  std::vector<double> lengths(mesh.num_edges());
+  for (Index e = 0; e < mesh.num_edges(); ++e)
+    lengths[e] =
+        glm::distance(mesh.position(mesh.edge(e).vertices[0]), mesh.position(mesh.edge(e).vertices[1]));
+  return lengths;
+}
+
 // Distances along the mesh's edges from a set of source vertices, up to a limit (Dijkstra with a binary
 // heap). The distance array is kept between runs and only the vertices a run touched are reset, so one
 // instance per thread serves many small searches on a large mesh.
@@ -19,7 +28,8 @@ class SurfaceDistance {
  public:
   static constexpr double unreached = std::numeric_limits<double>::infinity();
 
-  explicit SurfaceDistance(const Mesh& mesh) : mesh_(mesh), distance_(mesh.num_vertices(), unreached) {}
+  SurfaceDistance(const Mesh& mesh, std::span<const double> edge_lengths)
+      : mesh_(mesh), lengths_(edge_lengths), distance_(mesh.num_vertices(), unreached) {}
 
   // Settles vertices nearest first until the next one is at `limit` or beyond; stop(v) may end the
   // search early (it is called once per settled vertex and returns true to stop).
@@ -40,7 +50,7 @@ class SurfaceDistance {
       if (d >= limit || stop(v)) break;
       for (const Index e : mesh_.vertex_edges(v)) {
         const Index w = mesh_.edge(e).other_vertex(v);
-        const double through = d + glm::distance(mesh_.position(v), mesh_.position(w));
+        const double through = d + lengths_[e];
         if (through >= distance_[w] || through >= limit) continue;
         if (distance_[w] == unreached) touched_.push_back(w);
         distance_[w] = through;
@@ -68,6 +78,7 @@ class SurfaceDistance {
 
   using Entry = std::pair<double, Index>;
   const Mesh& mesh_;
+  std::span<const double> lengths_;
   std::vector<double> distance_;
   std::vector<Index> touched_;
   std::vector<Entry> heap_;  // a min-heap kept in a vector so its block is reused

@@ -25,8 +25,8 @@ struct NearMissOptions {
 
 // For each vertex, the nearest point of the surface outside its neighbourhood (the points closer along the
 // surface than 3 x min_wall, by Dijkstra on edges), reported when it is closer than min_wall. The
-// vertices are grouped into patches of radius min_wall / 2 that share one box query and one search of
-// their neighbourhood; a vertex whose answer that shared search leaves open gets a search of its own.
+// vertices are grouped into patches of radius 3/4 min_wall that share one box query and one search from
+// their seed; a vertex whose answer the shared search leaves open gets a search of its own.
 // In vertex order.
 std::vector<NearMiss> find_near_misses(const Mesh& surface, const TriangleBvh& bvh,
                                        const NearMissOptions& options);
