@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/input.hpp"
 #include "cli/print_check_input.hpp"
+#include "cli/progress_bar.hpp"
 #include "nome/error.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/snapshot.hpp"
@@ -163,9 +164,12 @@ int render_command(const std::vector<std::string>& args) {
     return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
   };
   const auto start = Clock::now();
-  LoadedInput loaded = run_input(parsed, stage);
-  const Mesh mesh = parsed.has("--print-check") ? marked_surface(loaded, check_loaded_input(loaded, 0.0, {}))
-                                                : loaded.pipeline.take_result();
+  ProgressBar bar(parsed.has("--quiet"));
+  LoadedInput loaded = run_input(parsed, stage, bar.sink());
+  const Mesh mesh = parsed.has("--print-check")
+                        ? marked_surface(loaded, check_loaded_input(loaded, 0.0, bar.sink()))
+                        : loaded.pipeline.take_result();
+  bar.finish();
   apply_render_defaults(loaded.scenes, parsed, options.display);
   const double load_ms = milliseconds(start);
   const auto context_start = Clock::now();
