@@ -5,7 +5,7 @@
 namespace nome::cli {
 namespace {
 
-const char* kind_name(FindingKind kind) {
+const char* finding_name(FindingKind kind) {
   switch (kind) {
     case FindingKind::fold_over:
       return "fold-over";
@@ -17,14 +17,14 @@ const char* kind_name(FindingKind kind) {
   return "";
 }
 
-std::size_t count_places(const PrintCheck& check, FindingKind kind) {
+std::size_t count_places_of(const PrintCheck& check, FindingKind kind) {
   std::size_t n = 0;
   for (const PrintPlace& p : check.places) n += p.kind == kind;
   return n;
 }
 
-void write_place(std::ostream& out, const PrintPlace& p) {
-  out << "  " << kind_name(p.kind);
+void write_print_place(std::ostream& out, const PrintPlace& p) {
+  out << "  " << finding_name(p.kind);
   if (p.kind == FindingKind::near_miss) out << " " << p.distance << " thin";
   out << " at (" << p.position.x << ", " << p.position.y << ", " << p.position.z << "), face " << p.face;
   if (p.other_face != no_index) out << " and face " << p.other_face;
@@ -50,13 +50,13 @@ std::string check_text(const PrintCheck& c) {
   out << "printable:    " << (c.is_printable() ? "yes" : "no") << "\n";
   out << "offset:       " << c.offset_distance << " (minimum wall " << c.min_wall << ")\n";
   out << "fold-overs:   " << c.fold_over_faces.size() << " faces in "
-      << count_places(c, FindingKind::fold_over) << " places (the offset turns inside out there)\n";
+      << count_places_of(c, FindingKind::fold_over) << " places (the offset turns inside out there)\n";
   out << "near misses:  " << c.near_misses.size() << " vertices in "
-      << count_places(c, FindingKind::near_miss) << " places (two sheets closer than the wall)\n";
+      << count_places_of(c, FindingKind::near_miss) << " places (two sheets closer than the wall)\n";
   out << "crossings:    " << c.crossings.pairs.size() << " triangle pairs on " << c.crossings.curves
       << " curves (the slab fuses there: by design in one-sided surfaces)\n";
   if (!c.places.empty()) out << "worst places (faces of the surface before the offset):\n";
-  for (std::size_t i = 0; i < c.places.size() && i < listed_places; ++i) write_place(out, c.places[i]);
+  for (std::size_t i = 0; i < c.places.size() && i < listed_places; ++i) write_print_place(out, c.places[i]);
   if (c.places.size() > listed_places) out << "  ... and " << c.places.size() - listed_places << " more\n";
   return out.str();
 }
@@ -71,7 +71,7 @@ std::string check_json(const PrintCheck& c) {
       << ", \"places\": [";
   for (std::size_t i = 0; i < c.places.size(); ++i) {
     const PrintPlace& p = c.places[i];
-    out << (i ? ", " : "") << "{\"kind\": \"" << kind_name(p.kind) << "\", \"position\": [" << p.position.x
+    out << (i ? ", " : "") << "{\"kind\": \"" << finding_name(p.kind) << "\", \"position\": [" << p.position.x
         << ", " << p.position.y << ", " << p.position.z << "], \"face\": " << p.face << ", \"other_face\": ";
     if (p.other_face == no_index)
       out << "null";

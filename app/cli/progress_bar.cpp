@@ -8,9 +8,9 @@
 namespace nome::cli {
 namespace {
 
-constexpr auto show_after = std::chrono::milliseconds(500);
-constexpr auto redraw_every = std::chrono::milliseconds(100);
-constexpr int bar_width = 30;
+constexpr auto bar_show_after = std::chrono::milliseconds(500);
+constexpr auto bar_redraw_every = std::chrono::milliseconds(100);
+constexpr int bar_columns = 30;
 
 }  // namespace
 
@@ -31,13 +31,14 @@ void ProgressBar::draw(std::string_view task, double fraction) {
     task_ = task;
     task_start_ = now;
   }
-  if (now - task_start_ < show_after || (drawn_ && now - last_draw_ < redraw_every && fraction < 1.0)) return;
+  if (now - task_start_ < bar_show_after || (drawn_ && now - last_draw_ < bar_redraw_every && fraction < 1.0))
+    return;
   last_draw_ = now;
   drawn_ = true;
-  const int filled = int(std::clamp(fraction, 0.0, 1.0) * bar_width);
+  const int filled = int(std::clamp(fraction, 0.0, 1.0) * bar_columns);
   std::fprintf(stderr, "\r\033[Knome: %-24.*s [%s%s] %3d%%", int(task.size()), task.data(),
                std::string(std::size_t(filled), '#').c_str(),
-               std::string(std::size_t(bar_width - filled), ' ').c_str(), int(fraction * 100.0));
+               std::string(std::size_t(bar_columns - filled), ' ').c_str(), int(fraction * 100.0));
   std::fflush(stderr);
 }
 

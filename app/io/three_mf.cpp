@@ -5,8 +5,7 @@
 #include <memory>
 #include <string>
 
-#include <Model/COM/NMR_DLLInterfaces.h>
-
+#include "io/lib3mf_handle.hpp"
 #include "nome/atomic_file.hpp"
 #include "nome/error.hpp"
 #include "nome/query/display_triangles.hpp"
@@ -15,23 +14,6 @@ namespace nome {
 namespace {
 
 using namespace NMR;
-
-// lib3mf's handles are reference counted: each one we get is released once.
-struct Release {
-  void operator()(PLib3MFBase* p) const { lib3mf_release(p); }
-};
-using Handle = std::unique_ptr<PLib3MFBase, Release>;
-
-void check(LIB3MFRESULT result, PLib3MFBase* owner, const std::filesystem::path& path, const char* what) {
-  if (result == LIB3MF_OK) return;
-  std::string message;
-  DWORD code = 0;
-  LPCSTR text = nullptr;
-  if (owner && lib3mf_getlasterror(owner, &code, &text) == LIB3MF_OK && text)
-    message = std::string(": ") + text;
-  throw IoError(path.string() + ": 3MF " + what + " failed (lib3mf error " + std::to_string(result) + ")" +
-                message);
-}
 
 DWORD lib3mf_unit(LengthUnit unit) {
   switch (unit) {
@@ -47,7 +29,7 @@ DWORD lib3mf_unit(LengthUnit unit) {
   return MODELUNIT_MILLIMETER;
 }
 
-BYTE to_byte(float channel) {
+BYTE color_byte(float channel) {
   return BYTE(std::lround(std::clamp(channel, 0.0f, 1.0f) * 255.0f));
 }
 
@@ -79,7 +61,7 @@ std::vector<ObjectArrays> split_components(const Mesh& mesh, double scale) {
     object.triangles.push_back(triangle);
     if (has_colors) {
       const Color c = mesh.face_colors()[f];
-      object.colors.push_back({to_byte(c.r), to_byte(c.g), to_byte(c.b), 255});
+      object.colors.push_back({color_byte(c.r), color_byte(c.g), color_byte(c.b), 255});
     }
   }
   return objects;
@@ -87,27 +69,28 @@ std::vector<ObjectArrays> split_components(const Mesh& mesh, double scale) {
 
 void add_object(PLib3MFModel* model, ObjectArrays& arrays, Index number, const std::filesystem::path& path) {
   PLib3MFModelMeshObject* raw = nullptr;
-  check(lib3mf_model_addmeshobject(model, &raw), model, path, "adding an object");
-  const Handle object(raw);
-  check(lib3mf_object_setnameutf8(raw, ("part " + std::to_string(number + 1)).c_str()), raw, path, "naming");
-  check(lib3mf_meshobject_setgeometry(raw, arrays.vertices.data(), DWORD(arrays.vertices.size()),
-                                      arrays.triangles.data(), DWORD(arrays.triangles.size())),
-        raw, path, "setting the geometry");
+  check_lib3mf(lib3mf_model_addmeshobject(model, &raw), model, path, "adding an object");
+  const Lib3mfHandle object(raw);
+  check_lib3mf(lib3mf_object_setnameutf8(raw, ("part " + std::to_string(number + 1)).c_str()), raw, path,
+               "naming");
+  check_lib3mf(lib3mf_meshobject_setgeometry(raw, arrays.vertices.data(), DWORD(arrays.vertices.size()),
+                                             arrays.triangles.data(), DWORD(arrays.triangles.size())),
+               raw, path, "setting the geometry");
   if (!arrays.colors.empty()) {
     PLib3MFPropertyHandler* handler = nullptr;
-    check(lib3mf_meshobject_createpropertyhandler(raw, &handler), raw, path, "colouring");
-    const Handle owned(handler);
-    check(lib3mf_propertyhandler_setsinglecolorarray(handler, arrays.colors.data()), handler, path,
-          "colouring");
+    check_lib3mf(lib3mf_meshobject_createpropertyhandler(raw, &handler), raw, path, "colouring");
+    const Lib3mfHandle owned(handler);
+    check_lib3mf(lib3mf_propertyhandler_setsinglecolorarray(handler, arrays.colors.data()), handler, path,
+                 "colouring");
     // 3MF wants an object with coloured triangles to name a colour of its own as well.
     PLib3MFDefaultPropertyHandler* fallback = nullptr;
-    check(lib3mf_object_createdefaultpropertyhandler(raw, &fallback), raw, path, "colouring");
-    const Handle owned_fallback(fallback);
+    check_lib3mf(lib3mf_object_createdefaultpropertyhandler(raw, &fallback), raw, path, "colouring");
+    const Lib3mfHandle owned_fallback(fallback);
     MODELMESHCOLOR_SRGB first = arrays.colors.front();
-    check(lib3mf_defaultpropertyhandler_setcolor(fallback, &first), fallback, path, "colouring");
+    check_lib3mf(lib3mf_defaultpropertyhandler_setcolor(fallback, &first), fallback, path, "colouring");
   }
   PLib3MFModelBuildItem* item = nullptr;
-  check(lib3mf_model_addbuilditem(model, raw, nullptr, &item), model, path, "adding a build item");
+  check_lib3mf(lib3mf_model_addbuilditem(model, raw, nullptr, &item), model, path, "adding a build item");
   lib3mf_release(item);
 }
 
@@ -137,18 +120,19 @@ const char* to_string(LengthUnit unit) {
 
 void write_3mf(const std::filesystem::path& path, const Mesh& mesh, const ThreeMfOptions& options) {
   PLib3MFModel* raw = nullptr;
-  check(lib3mf_createmodel(&raw), nullptr, path, "creating a model");
-  const Handle model(raw);
-  check(lib3mf_model_setunit(raw, lib3mf_unit(options.unit)), raw, path, "setting the unit");
+  check_lib3mf(lib3mf_createmodel(&raw), nullptr, path, "creating a model");
+  const Lib3mfHandle model(raw);
+  check_lib3mf(lib3mf_model_setunit(raw, lib3mf_unit(options.unit)), raw, path, "setting the unit");
   std::vector<ObjectArrays> objects = split_components(mesh, options.scale);
   for (Index i = 0; i < objects.size(); ++i) add_object(raw, objects[i], i, path);
   PLib3MFModelWriter* writer_raw = nullptr;
-  check(lib3mf_model_querywriter(raw, "3mf", &writer_raw), raw, path, "making a writer");
-  const Handle writer(writer_raw);
+  check_lib3mf(lib3mf_model_querywriter(raw, "3mf", &writer_raw), raw, path, "making a writer");
+  const Lib3mfHandle writer(writer_raw);
   ULONG64 size = 0;
-  check(lib3mf_writer_getstreamsize(writer_raw, &size), writer_raw, path, "sizing the package");
+  check_lib3mf(lib3mf_writer_getstreamsize(writer_raw, &size), writer_raw, path, "sizing the package");
   std::vector<BYTE> bytes(size);
-  check(lib3mf_writer_writetobuffer(writer_raw, bytes.data(), size), writer_raw, path, "writing the package");
+  check_lib3mf(lib3mf_writer_writetobuffer(writer_raw, bytes.data(), size), writer_raw, path,
+               "writing the package");
   write_file_atomically(path, [&](std::ostream& out) {
     out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
   });

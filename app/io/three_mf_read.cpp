@@ -2,8 +2,7 @@
 #include <memory>
 #include <string>
 
-#include <Model/COM/NMR_DLLInterfaces.h>
-
+#include "io/lib3mf_handle.hpp"
 #include "io/three_mf.hpp"
 #include "nome/error.hpp"
 
@@ -11,22 +10,6 @@ namespace nome {
 namespace {
 
 using namespace NMR;
-
-struct Release {
-  void operator()(PLib3MFBase* p) const { lib3mf_release(p); }
-};
-using Handle = std::unique_ptr<PLib3MFBase, Release>;
-
-void check(LIB3MFRESULT result, PLib3MFBase* owner, const std::filesystem::path& path, const char* what) {
-  if (result == LIB3MF_OK) return;
-  std::string message;
-  DWORD code = 0;
-  LPCSTR text = nullptr;
-  if (owner && lib3mf_getlasterror(owner, &code, &text) == LIB3MF_OK && text)
-    message = std::string(": ") + text;
-  throw IoError(path.string() + ": reading 3MF: " + what + " failed (lib3mf error " + std::to_string(result) +
-                ")" + message);
-}
 
 LengthUnit unit_of(DWORD unit) {
   switch (unit) {
@@ -44,13 +27,14 @@ LengthUnit unit_of(DWORD unit) {
 ThreeMfModel::Object read_object(PLib3MFModelMeshObject* mesh, const std::filesystem::path& path) {
   ThreeMfModel::Object object;
   DWORD vertex_count = 0, triangle_count = 0;
-  check(lib3mf_meshobject_getvertexcount(mesh, &vertex_count), mesh, path, "counting vertices");
-  check(lib3mf_meshobject_gettrianglecount(mesh, &triangle_count), mesh, path, "counting triangles");
+  check_lib3mf(lib3mf_meshobject_getvertexcount(mesh, &vertex_count), mesh, path, "counting vertices");
+  check_lib3mf(lib3mf_meshobject_gettrianglecount(mesh, &triangle_count), mesh, path, "counting triangles");
   std::vector<MODELMESHVERTEX> vertices(vertex_count);
   std::vector<MODELMESHTRIANGLE> triangles(triangle_count);
-  check(lib3mf_meshobject_getvertices(mesh, vertices.data(), vertex_count, nullptr), mesh, path, "vertices");
-  check(lib3mf_meshobject_gettriangleindices(mesh, triangles.data(), triangle_count, nullptr), mesh, path,
-        "triangles");
+  check_lib3mf(lib3mf_meshobject_getvertices(mesh, vertices.data(), vertex_count, nullptr), mesh, path,
+               "vertices");
+  check_lib3mf(lib3mf_meshobject_gettriangleindices(mesh, triangles.data(), triangle_count, nullptr), mesh,
+               path, "triangles");
   for (const MODELMESHVERTEX& v : vertices)
     object.vertices.emplace_back(v.m_fPosition[0], v.m_fPosition[1], v.m_fPosition[2]);
   for (const MODELMESHTRIANGLE& t : triangles) {
@@ -60,15 +44,15 @@ ThreeMfModel::Object read_object(PLib3MFModelMeshObject* mesh, const std::filesy
     object.triangles.push_back({Index(t.m_nIndices[0]), Index(t.m_nIndices[1]), Index(t.m_nIndices[2])});
   }
   PLib3MFPropertyHandler* handler = nullptr;
-  check(lib3mf_meshobject_createpropertyhandler(mesh, &handler), mesh, path, "colours");
-  const Handle owned(handler);
+  check_lib3mf(lib3mf_meshobject_createpropertyhandler(mesh, &handler), mesh, path, "colours");
+  const Lib3mfHandle owned(handler);
   for (DWORD t = 0; t < triangle_count; ++t) {
     eModelPropertyType type = MODELPROPERTYTYPE_NONE;
-    check(lib3mf_propertyhandler_getpropertytype(handler, t, &type), handler, path, "colours");
+    check_lib3mf(lib3mf_propertyhandler_getpropertytype(handler, t, &type), handler, path, "colours");
     if (type != MODELPROPERTYTYPE_COLOR) continue;
     if (object.colors.empty()) object.colors.assign(triangle_count, default_face_color);
     MODELMESH_TRIANGLECOLOR_SRGB color{};
-    check(lib3mf_propertyhandler_getcolor(handler, t, &color), handler, path, "colours");
+    check_lib3mf(lib3mf_propertyhandler_getcolor(handler, t, &color), handler, path, "colours");
     const MODELMESHCOLOR_SRGB& c = color.m_Colors[0];
     object.colors[t] = Color(c.m_Red / 255.0f, c.m_Green / 255.0f, c.m_Blue / 255.0f);
   }
@@ -79,24 +63,26 @@ ThreeMfModel::Object read_object(PLib3MFModelMeshObject* mesh, const std::filesy
 
 ThreeMfModel read_3mf(const std::filesystem::path& path) {
   PLib3MFModel* raw = nullptr;
-  check(lib3mf_createmodel(&raw), nullptr, path, "creating a model");
-  const Handle model(raw);
+  check_lib3mf(lib3mf_createmodel(&raw), nullptr, path, "creating a model");
+  const Lib3mfHandle model(raw);
   PLib3MFModelReader* reader_raw = nullptr;
-  check(lib3mf_model_queryreader(raw, "3mf", &reader_raw), raw, path, "making a reader");
-  const Handle reader(reader_raw);
-  check(lib3mf_reader_readfromfileutf8(reader_raw, path.string().c_str()), reader_raw, path, "the package");
+  check_lib3mf(lib3mf_model_queryreader(raw, "3mf", &reader_raw), raw, path, "making a reader");
+  const Lib3mfHandle reader(reader_raw);
+  check_lib3mf(lib3mf_reader_readfromfileutf8(reader_raw, path.string().c_str()), reader_raw, path,
+               "the package");
   ThreeMfModel result;
   DWORD unit = MODELUNIT_MILLIMETER;
-  check(lib3mf_model_getunit(raw, &unit), raw, path, "the unit");
+  check_lib3mf(lib3mf_model_getunit(raw, &unit), raw, path, "the unit");
   result.unit = unit_of(unit);
   PLib3MFModelResourceIterator* iterator_raw = nullptr;
-  check(lib3mf_model_getmeshobjects(raw, &iterator_raw), raw, path, "the objects");
-  const Handle iterator(iterator_raw);
+  check_lib3mf(lib3mf_model_getmeshobjects(raw, &iterator_raw), raw, path, "the objects");
+  const Lib3mfHandle iterator(iterator_raw);
   BOOL has_next = false;
   while (lib3mf_resourceiterator_movenext(iterator_raw, &has_next) == LIB3MF_OK && has_next) {
     PLib3MFModelResource* resource = nullptr;
-    check(lib3mf_resourceiterator_getcurrent(iterator_raw, &resource), iterator_raw, path, "an object");
-    const Handle owned(resource);
+    check_lib3mf(lib3mf_resourceiterator_getcurrent(iterator_raw, &resource), iterator_raw, path,
+                 "an object");
+    const Lib3mfHandle owned(resource);
     result.objects.push_back(read_object(resource, path));
   }
   if (std::all_of(result.objects.begin(), result.objects.end(),

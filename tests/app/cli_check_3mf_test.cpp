@@ -6,13 +6,11 @@
 #include "io/three_mf.hpp"
 #include "nome/io/read_polygons.hpp"
 
+using nome::test::assets;
 using nome::test::run_nome_in_process;
 
 namespace {
-
-const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
-
-nome::Index triangles_of(const nome::PolygonSoup& soup) {
+nome::Index soup_triangles(const nome::PolygonSoup& soup) {
   return soup.face_vertices.size() - 2 * soup.num_faces();
 }
 
@@ -63,7 +61,7 @@ TEST_CASE("a 3MF export holds the solid's parts, unit and colours", "[app][io]")
   CHECK(model.unit == nome::LengthUnit::inch);
   REQUIRE(model.objects.size() == 1);
   CHECK(model.objects[0].vertices.size() == reference.num_vertices());
-  CHECK(model.objects[0].triangles.size() == triangles_of(reference));
+  CHECK(model.objects[0].triangles.size() == soup_triangles(reference));
   REQUIRE(model.objects[0].colors.size() == model.objects[0].triangles.size());
   // The scene's surface "gold" is (0.9 0.7 0.2), stored as bytes.
   for (const nome::Color& c : model.objects[0].colors) CHECK(c == nome::Color(230, 179, 51) / 255.0f);

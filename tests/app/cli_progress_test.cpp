@@ -4,10 +4,9 @@
 
 #include "app/cli_support.hpp"
 
+using nome::test::assets;
+
 namespace {
-
-const std::string assets = std::string(NOME_SOURCE_DIR) + "/assets/";
-
 // Runs nome with a pseudo-terminal for its standard streams (what a person at a terminal gives it).
 nome::test::CommandResult run_in_terminal(const std::string& arguments) {
   return nome::test::run_nome_prefixed("python3 -c 'import pty, sys; pty.spawn(sys.argv[1:])'", arguments);

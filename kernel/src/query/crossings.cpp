@@ -9,11 +9,11 @@
 namespace nome {
 namespace {
 
-Triangle triangle_of(const TriangleBvh& bvh, Index t) {
+Triangle crossing_triangle(const TriangleBvh& bvh, Index t) {
   return {bvh.triangle_point(t, 0), bvh.triangle_point(t, 1), bvh.triangle_point(t, 2)};
 }
 
-bool share_vertex(const TriangleBvh& bvh, Index t, Index u) {
+bool shares_vertex(const TriangleBvh& bvh, Index t, Index u) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       if (bvh.triangle_vertex(t, i) == bvh.triangle_vertex(u, j)) return true;
@@ -21,18 +21,18 @@ bool share_vertex(const TriangleBvh& bvh, Index t, Index u) {
 }
 
 // The crossings between the triangles of two leaves (the same leaf: each pair once).
-void cross_leaves(const TriangleBvh& bvh, std::span<const Index> a, std::span<const Index> b,
-                  std::vector<Crossing>& out) {
+void cross_leaf_pair(const TriangleBvh& bvh, std::span<const Index> a, std::span<const Index> b,
+                     std::vector<Crossing>& out) {
   const auto& faces = bvh.triangles().faces;
   const bool same = a.data() == b.data();
   for (std::size_t i = 0; i < a.size(); ++i) {
     const Index t = a[i];
-    const Triangle first = triangle_of(bvh, t);
+    const Triangle first = crossing_triangle(bvh, t);
     for (std::size_t j = same ? i + 1 : 0; j < b.size(); ++j) {
       const Index u = b[j];
-      if (faces[u] == faces[t] || share_vertex(bvh, t, u)) continue;
+      if (faces[u] == faces[t] || shares_vertex(bvh, t, u)) continue;
       Crossing crossing;
-      if (!triangles_cross(first, triangle_of(bvh, u), crossing.segment)) continue;
+      if (!triangles_cross(first, crossing_triangle(bvh, u), crossing.segment)) continue;
       crossing.face = std::min(faces[t], faces[u]);
       crossing.other_face = std::max(faces[t], faces[u]);
       out.push_back(crossing);
@@ -42,7 +42,7 @@ void cross_leaves(const TriangleBvh& bvh, std::span<const Index> a, std::span<co
 
 // Joins pairs into curves: a pair joins its two faces, and crossing faces that share a vertex are one
 // curve's neighbours.
-void find_curves(const Mesh& surface, Crossings& crossings) {
+void join_crossing_curves(const Mesh& surface, Crossings& crossings) {
   std::vector<char> is_crossing(surface.num_faces(), 0);
   for (const Index f : crossings.faces) is_crossing[f] = 1;
   UnionFind sets(surface.num_faces());
@@ -66,7 +66,7 @@ Crossings find_crossings(const Mesh& surface, const TriangleBvh& bvh, int thread
   std::vector<std::vector<Crossing>> found(count);
   run_parts(count, [&](int part) {
     bvh.visit_overlapping_leaves(part, count, [&](std::span<const Index> a, std::span<const Index> b) {
-      cross_leaves(bvh, a, b, found[part]);
+      cross_leaf_pair(bvh, a, b, found[part]);
     });
   });
   Crossings crossings;
@@ -81,7 +81,7 @@ Crossings find_crossings(const Mesh& surface, const TriangleBvh& bvh, int thread
   }
   std::sort(crossings.faces.begin(), crossings.faces.end());
   crossings.faces.erase(std::unique(crossings.faces.begin(), crossings.faces.end()), crossings.faces.end());
-  find_curves(surface, crossings);
+  join_crossing_curves(surface, crossings);
   return crossings;
 }
 

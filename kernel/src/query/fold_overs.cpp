@@ -8,7 +8,7 @@ namespace nome {
 namespace {
 
 // Newell's normal of face f with each corner moved by side * d * s * n_v: one of the offset's two copies.
-Vec3 copy_normal(const Mesh& mesh, const Normals& normals, Index f, double shift) {
+Vec3 offset_copy_normal(const Mesh& mesh, const Normals& normals, Index f, double shift) {
   Vec3 normal(0.0);
   const Index first = mesh.face_first_corner(f), degree = mesh.face_degree(f);
   auto moved = [&](Index i) {
@@ -35,8 +35,8 @@ std::vector<Index> find_fold_overs(const Mesh& surface, const Normals& normals, 
     for (Index f = begin; f < end; ++f) {
       const Vec3& own = normals.faces[f];
       if (own == Vec3(0.0)) continue;
-      folded[f] = glm::dot(copy_normal(surface, normals, f, distance), own) <= 0.0 ||
-                  glm::dot(copy_normal(surface, normals, f, -distance), own) <= 0.0;
+      folded[f] = glm::dot(offset_copy_normal(surface, normals, f, distance), own) <= 0.0 ||
+                  glm::dot(offset_copy_normal(surface, normals, f, -distance), own) <= 0.0;
     }
   });
   std::vector<Index> faces;

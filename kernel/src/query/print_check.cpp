@@ -12,7 +12,7 @@
 namespace nome {
 namespace {
 
-Vec3 centroid(const Mesh& mesh, Index f) {
+Vec3 face_centroid(const Mesh& mesh, Index f) {
   Vec3 sum(0.0);
   for (const Index v : mesh.face_vertices(f)) sum += mesh.position(v);
   return sum / double(mesh.face_degree(f));
@@ -32,7 +32,7 @@ void add_fold_over_places(const Mesh& mesh, const std::vector<Index>& faces, std
     Index& place = place_of_root[sets.find(f)];
     if (place == no_index) {
       place = Index(out.size() - first);
-      out.push_back({FindingKind::fold_over, centroid(mesh, f), f, no_index, 0.0, 0});
+      out.push_back({FindingKind::fold_over, face_centroid(mesh, f), f, no_index, 0.0, 0});
     }
     ++out[first + place].size;
   }
@@ -90,7 +90,7 @@ void add_crossing_places(const Crossings& crossings, std::vector<PrintPlace>& ou
                    [](const PrintPlace& a, const PrintPlace& b) { return a.size > b.size; });
 }
 
-void check_length(const char* what, double value) {
+void require_length(const char* what, double value) {
   if (!(value >= 0.0) || !std::isfinite(value))
     throw InvalidInputError(std::string("check_printability: the ") + what +
                             " must be zero or positive and finite, got " + std::to_string(value));
@@ -99,8 +99,8 @@ void check_length(const char* what, double value) {
 }  // namespace
 
 PrintCheck check_printability(const Mesh& surface, const PrintCheckOptions& options) {
-  check_length("offset distance", options.offset_distance);
-  check_length("minimum wall", options.min_wall);
+  require_length("offset distance", options.offset_distance);
+  require_length("minimum wall", options.min_wall);
   PrintCheck check;
   check.offset_distance = options.offset_distance;
   check.min_wall = options.min_wall > 0.0 ? options.min_wall : 2.0 * options.offset_distance;

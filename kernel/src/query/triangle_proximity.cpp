@@ -6,16 +6,16 @@ namespace nome {
 namespace {
 
 // Signed distances (times the normal's length) of a's corners from b's plane.
-std::array<double, 3> plane_sides(const Triangle& a, const Triangle& b) {
+std::array<double, 3> sides_of_plane(const Triangle& a, const Triangle& b) {
   const Vec3 normal = glm::cross(b[1] - b[0], b[2] - b[0]);
   return {glm::dot(normal, a[0] - b[0]), glm::dot(normal, a[1] - b[0]), glm::dot(normal, a[2] - b[0])};
 }
 
-bool all_one_side(const std::array<double, 3>& s) {
+bool is_all_on_one_side(const std::array<double, 3>& s) {
   return (s[0] > 0 && s[1] > 0 && s[2] > 0) || (s[0] < 0 && s[1] < 0 && s[2] < 0);
 }
 
-bool inside(const Vec3& p, const Triangle& t) {
+bool lies_in_triangle(const Vec3& p, const Triangle& t) {
   const Vec3 normal = glm::cross(t[1] - t[0], t[2] - t[0]);
   for (int i = 0; i < 3; ++i)
     if (glm::dot(glm::cross(t[(i + 1) % 3] - t[i], p - t[i]), normal) < 0.0) return false;
@@ -23,30 +23,30 @@ bool inside(const Vec3& p, const Triangle& t) {
 }
 
 // Adds the points where a's sides cross b's plane inside b.
-void cut_sides(const Triangle& a, const std::array<double, 3>& side, const Triangle& b, Vec3* points,
-               int& count) {
+void add_side_cuts(const Triangle& a, const std::array<double, 3>& side, const Triangle& b, Vec3* points,
+                   int& count) {
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
     if ((side[i] > 0 && side[j] > 0) || (side[i] < 0 && side[j] < 0)) continue;
     if (side[i] == side[j]) continue;  // both zero: the side lies in the plane
     const Vec3 p = a[i] + (a[j] - a[i]) * (side[i] / (side[i] - side[j]));
-    if (inside(p, b) && count < 6) points[count++] = p;
+    if (lies_in_triangle(p, b) && count < 6) points[count++] = p;
   }
 }
 
 }  // namespace
 
 bool triangles_cross(const Triangle& a, const Triangle& b, CrossingSegment& segment) {
-  const std::array<double, 3> a_sides = plane_sides(a, b);
-  if (all_one_side(a_sides)) return false;
-  const std::array<double, 3> b_sides = plane_sides(b, a);
-  if (all_one_side(b_sides)) return false;
+  const std::array<double, 3> a_sides = sides_of_plane(a, b);
+  if (is_all_on_one_side(a_sides)) return false;
+  const std::array<double, 3> b_sides = sides_of_plane(b, a);
+  if (is_all_on_one_side(b_sides)) return false;
   // Coplanar, or one of them degenerate (a zero normal puts everything on its plane).
   if (a_sides == std::array<double, 3>{0, 0, 0} || b_sides == std::array<double, 3>{0, 0, 0}) return false;
   Vec3 points[6];
   int count = 0;
-  cut_sides(a, a_sides, b, points, count);
-  cut_sides(b, b_sides, a, points, count);
+  add_side_cuts(a, a_sides, b, points, count);
+  add_side_cuts(b, b_sides, a, points, count);
   if (count == 0) return false;
   segment.from = points[0];
   segment.to = points[0];

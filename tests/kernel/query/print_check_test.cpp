@@ -15,7 +15,7 @@ using namespace nome;
 
 namespace {
 
-PrintCheck check(const Mesh& surface, double distance, double wall = 0.0, int threads = 1) {
+PrintCheck check_surface(const Mesh& surface, double distance, double wall = 0.0, int threads = 1) {
   PrintCheckOptions options;
   options.offset_distance = distance;
   options.min_wall = wall;
@@ -51,7 +51,7 @@ TEST_CASE("two triangles cross along the segment where each cuts the other", "[k
 
 TEST_CASE("a torus offset at a safe distance is printable", "[kernel]") {
   const Mesh torus = build_mesh(test::torus(48, 24));
-  const PrintCheck result = check(torus, 0.05);
+  const PrintCheck result = check_surface(torus, 0.05);
   CHECK(result.min_wall == 0.1);
   CHECK(result.fold_over_faces.empty());
   CHECK(result.crossings.pairs.empty());
@@ -62,7 +62,7 @@ TEST_CASE("a torus offset at a safe distance is printable", "[kernel]") {
 
 TEST_CASE("a torus offset by more than its minor radius folds over", "[kernel]") {
   const Mesh torus = build_mesh(test::torus(48, 24));
-  const PrintCheck result = check(torus, 0.35);
+  const PrintCheck result = check_surface(torus, 0.35);
   // The inner copy of every face turns inside out: the tube's radius would be negative.
   CHECK(result.fold_over_faces.size() == torus.num_faces());
   CHECK_FALSE(result.is_printable());
@@ -73,7 +73,7 @@ TEST_CASE("a torus offset by more than its minor radius folds over", "[kernel]")
 
 TEST_CASE("linked tori closer than the wall are near misses, not crossings", "[kernel]") {
   const Mesh tori = linked_tori(0.45);  // gap 0.1
-  const PrintCheck thin = check(tori, 0.08);
+  const PrintCheck thin = check_surface(tori, 0.08);
   CHECK(thin.fold_over_faces.empty());
   CHECK(thin.crossings.pairs.empty());
   REQUIRE_FALSE(thin.near_misses.empty());
@@ -83,14 +83,14 @@ TEST_CASE("linked tori closer than the wall are near misses, not crossings", "[k
   CHECK(thin.places[0].distance == Approx(0.1).margin(0.01));
   CHECK(thin.places[0].other_face != no_index);
   // The same shapes with a thinner wall, and with two threads (the same findings).
-  CHECK(check(tori, 0.04).is_printable());
-  const PrintCheck threaded = check(tori, 0.08, 0.0, 2);
+  CHECK(check_surface(tori, 0.04).is_printable());
+  const PrintCheck threaded = check_surface(tori, 0.08, 0.0, 2);
   CHECK(threaded.near_misses.size() == thin.near_misses.size());
 }
 
 TEST_CASE("tori passing through each other cross along curves", "[kernel]") {
   const Mesh tori = linked_tori(0.6);  // the tubes overlap
-  const PrintCheck result = check(tori, 0.02);
+  const PrintCheck result = check_surface(tori, 0.02);
   CHECK(result.crossings.curves >= 1);
   CHECK_FALSE(result.crossings.faces.empty());
   for (const Crossing& c : result.crossings.pairs)
@@ -113,7 +113,7 @@ TEST_CASE("the original closed Klein bottle crosses itself and prints", "[kernel
   const TopologyReport topology = topology_report(surface);
   REQUIRE(topology.borders == 0);
   REQUIRE_FALSE(topology.orientable);
-  const PrintCheck result = check(surface, 0.03);
+  const PrintCheck result = check_surface(surface, 0.03);
   CHECK(result.crossings.curves >= 1);
   CHECK(result.fold_over_faces.empty());
   CHECK(result.near_misses.empty());
