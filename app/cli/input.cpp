@@ -31,7 +31,8 @@ std::vector<OptionSpec> input_options() {
       {"--quads", "", "", "pair the triangles of .sif files into quads where convex and nearly planar"},
       {"--dialect", "", "2016|jipcad",
        "read scenes in this spelling (default: as their statements say; funnel and tunnel's arguments "
-       "differ)"}};
+       "differ)"},
+      {"--quiet", "-q", "", "no progress bar (there is none either when stderr is not a terminal)"}};
   for (OptionSpec& o : pipeline_option_specs()) options.push_back(std::move(o));
   return options;
 }
@@ -42,29 +43,37 @@ Stage stage_argument(const std::string& name) {
                    "'");
 }
 
-Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes,
-                ObjSubdivisionTags* kept_tags) {
+LoadedInput run_input(const Arguments& args, Stage last, const Progress& progress) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
   InputFiles input = read_input_files(args);
-  PipelineSettings settings = pipeline_settings(args, last);
+  LoadedInput loaded;
+  PipelineSettings& settings = loaded.settings;
+  settings = pipeline_settings(args, last);
   apply_scene_stages(input.scenes, args, settings);
   apply_obj_tags(input.obj_tags, args, settings);
-  if (kept_tags && settings.levels_before() == 0 && settings.levels_after() == 0) {
+  if (settings.levels_before() == 0 && settings.levels_after() == 0) {
     // Nothing refined: the options stay the mesh's, for an OBJ written from it.
-    if (settings.boundary != BoundaryMode::edge_only) kept_tags->boundary = settings.boundary;
-    if (settings.creases.method != CreaseMethod::uniform) kept_tags->crease_method = settings.creases.method;
-    if (settings.creases.smooth_triangles) kept_tags->smooth_triangles = true;
+    if (settings.boundary != BoundaryMode::edge_only) loaded.kept_tags.boundary = settings.boundary;
+    if (settings.creases.method != CreaseMethod::uniform)
+      loaded.kept_tags.crease_method = settings.creases.method;
+    if (settings.creases.smooth_triangles) loaded.kept_tags.smooth_triangles = true;
   }
-  Pipeline pipeline;
-  pipeline.set_input(std::move(input.geometry));
+  loaded.pipeline.set_input(std::move(input.geometry));
+  loaded.pipeline.set_progress(progress);
   try {
-    pipeline.run(settings);
+    loaded.pipeline.run(loaded.settings);
   } catch (const BudgetError& e) {
     throw BudgetError(std::string(e.what()) + "; use --force to compute it anyway");
   }
-  print_warnings(pipeline.warnings());
-  if (scenes) *scenes = std::move(input.scenes);
-  return pipeline.take_result();
+  print_warnings(loaded.pipeline.warnings());
+  loaded.scenes = std::move(input.scenes);
+  return loaded;
+}
+
+Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes) {
+  LoadedInput loaded = run_input(args, last);
+  if (scenes) *scenes = std::move(loaded.scenes);
+  return loaded.pipeline.take_result();
 }
 
 }  // namespace nome::cli

@@ -5,6 +5,7 @@
 #include "cli/arguments.hpp"
 #include "nome/io/obj_tags.hpp"
 #include "nome/mesh/mesh.hpp"
+#include "nome/ops/pipeline.hpp"
 #include "nome/ops/stage.hpp"
 #include "nome/scene/scene.hpp"
 
@@ -16,11 +17,24 @@ std::vector<OptionSpec> input_options();
 // Parses a --stage value (UsageError for an unknown one).
 Stage stage_argument(const std::string& name);
 
+// The pipeline after a run of the FILE arguments up to a stage, kept for a caller that also wants an
+// earlier stage (the print check reads the surface before the offset).
+struct LoadedInput {
+  Pipeline pipeline;
+  PipelineSettings settings;
+  std::vector<scene::Scene> scenes;
+  // When nothing is subdivided: the subdivision options that differ from the defaults, for write_obj to
+  // keep.
+  ObjSubdivisionTags kept_tags;
+};
+
+// Reads the FILE arguments and runs the pipeline up to `last`, printing its warnings; its stages report
+// to `progress` (also in later runs of the returned pipeline).
+LoadedInput run_input(const Arguments& args, Stage last, const Progress& progress = {});
+
 // Reads the FILE arguments (several become parts of one mesh) and runs the kernel's pipeline up to
 // `last` with the options' settings; the scenes read (.nome, .slf) come back through `scenes`.
-// When nothing is subdivided, `kept_tags` receives the subdivision options that differ from the
-// defaults, for write_obj to keep.
 Mesh load_input(const Arguments& args, Stage last = Stage::subdivided_offset,
-                std::vector<scene::Scene>* scenes = nullptr, ObjSubdivisionTags* kept_tags = nullptr);
+                std::vector<scene::Scene>* scenes = nullptr);
 
 }  // namespace nome::cli

@@ -6,6 +6,8 @@
 #include "cli/color_argument.hpp"
 #include "cli/commands.hpp"
 #include "cli/input.hpp"
+#include "cli/print_check_input.hpp"
+#include "cli/progress_bar.hpp"
 #include "nome/error.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/snapshot.hpp"
@@ -107,6 +109,9 @@ std::vector<OptionSpec> render_options() {
       {"--flat", "", "", "flat shading (one normal per face)"},
       {"--mobius-edges", "", "", "highlight the Möbius edges (where the faces' orientations disagree)"},
       {"--borders", "", "", "highlight the border edges"},
+      {"--print-check", "", "",
+       "draw the surface before the offset marked by the print check: crossings red, fold-overs magenta, "
+       "thin places orange"},
       {"--color", "", "COLOR", "front face colour (#rrggbb, R,G,B in 0..1, or a name)"},
       {"--backface-color", "", "COLOR", "back face colour; 'same' as the front, 'cull' to hide back faces"},
       {"--background", "", "COLOR", "background colour (default white)"},
@@ -159,9 +164,13 @@ int render_command(const std::vector<std::string>& args) {
     return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
   };
   const auto start = Clock::now();
-  std::vector<scene::Scene> scenes;
-  const Mesh mesh = load_input(parsed, stage, &scenes);
-  apply_render_defaults(scenes, parsed, options.display);
+  ProgressBar bar(parsed.has("--quiet"));
+  LoadedInput loaded = run_input(parsed, stage, bar.sink());
+  const Mesh mesh = parsed.has("--print-check")
+                        ? marked_surface(loaded, check_loaded_input(loaded, 0.0, bar.sink()))
+                        : loaded.pipeline.take_result();
+  bar.finish();
+  apply_render_defaults(loaded.scenes, parsed, options.display);
   const double load_ms = milliseconds(start);
   const auto context_start = Clock::now();
   const render::OffscreenContext context(backend);

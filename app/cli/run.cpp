@@ -19,7 +19,8 @@ struct Command {
 
 const Command commands[] = {
     {"info", info_command, "print the topology report of a file (V, E, F, chi, orientable, borders, genus)"},
-    {"export", export_command, "write the result as .obj or .stl"},
+    {"export", export_command, "write the result as .obj, .stl or .3mf"},
+    {"check", check_command, "is the solid printable? fold-overs, near misses, crossings (exit 3: no)"},
     {"render", render_command, "draw the result headless into a PNG (EGL or OSMesa, no display needed)"},
     {"version", version_command, "print the version and git commit (--verbose: GL backend, shader folder)"},
 };

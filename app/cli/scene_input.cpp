@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "io/three_mf.hpp"
 #include "nome/error.hpp"
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
@@ -89,6 +90,8 @@ InputFiles read_input_files(const Arguments& args) {
       input.scenes.back().apply_anom(read_text_file(file), file);
     } else if (ext == ".sif") {
       flat.emplace_back(file, read_sif(file, {args.has("--quads"), SifOptions{}.max_fold_degrees}));
+    } else if (ext == ".3mf") {
+      flat.emplace_back(file, three_mf_polygons(read_3mf(file)));
     } else {
       flat.emplace_back(file, read_polygons(file));
       if (ext == ".obj") merge_obj_tags(input.obj_tags, read_obj_subdivision_tags(file));

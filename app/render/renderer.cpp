@@ -75,7 +75,7 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     p.set("back_color", settings.back_color);
     p.set("selection_color", settings.selection_color);
     p.set("different_back_color", settings.back_faces == BackFacePolicy::different ? 1 : 0);
-    p.set("uses_face_colors", settings.uses_face_colors ? 1 : 0);
+    p.set("use_face_colors", settings.uses_face_colors ? 1 : 0);
     p.set("opacity", 1.0f);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_BUFFER, mesh.face_color_texture());

@@ -4,7 +4,7 @@
 
 namespace nome::viewer {
 
-void draw_progress(double seconds_running) {
+void draw_progress(double seconds_running, const WorkProgress& progress) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, 40.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.85f);
@@ -13,7 +13,12 @@ void draw_progress(double seconds_running) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav);
   const char* spinner = "|/-\\";
-  ImGui::Text("%c computing the stage ... %.1f s", spinner[int(seconds_running * 8.0) % 4], seconds_running);
+  const char spin = spinner[int(seconds_running * 8.0) % 4];
+  if (progress.task.empty())
+    ImGui::Text("%c computing the stage ... %.1f s", spin, seconds_running);
+  else
+    ImGui::Text("%c computing the stage: %s %d%% ... %.1f s", spin, progress.task.c_str(),
+                int(progress.fraction * 100.0), seconds_running);
   ImGui::End();
 }
 

@@ -93,8 +93,9 @@ struct StatusLine {
 std::string size_text(const glm::dvec3& size);
 void draw_status_bar(const std::optional<StatusLine>& status, const MessageLog& log);
 void draw_help_overlay(bool& is_shown);
-// The spinner while a stage takes longer than a frame.
-void draw_progress(double seconds_running);
+// The spinner while a stage takes longer than a frame, with the kernel task and its percentage once the
+// pipeline reports them.
+void draw_progress(double seconds_running, const WorkProgress& progress);
 
 // The status bar's height, which the log panel sits above.
 float status_bar_height();

@@ -17,10 +17,26 @@ PipelineSettings initial_settings() {
   return s;
 }
 
+StagePipeline::StagePipeline() {
+  pipeline_.set_progress({[this](std::string_view task, double fraction) {
+    std::lock_guard lock(progress_mutex_);
+    progress_ = {std::string(task), fraction};
+  }});
+}
+
+WorkProgress StagePipeline::progress() const {
+  std::lock_guard lock(progress_mutex_);
+  return progress_;
+}
+
 std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const PipelineSettings& settings,
                                               std::stop_token stop) {
   std::lock_guard lock(mutex_);
   if (stop.stop_requested()) return std::nullopt;
+  {
+    std::lock_guard progress_lock(progress_mutex_);
+    progress_ = {};
+  }
   const auto start = std::chrono::steady_clock::now();
   StageResult result;
   result.stage = settings.stage;

@@ -34,17 +34,29 @@ struct StageResult {
   double seconds = 0.0;
 };
 
+// What a run in flight is doing: the kernel's task ("subdivision", "offset") and how far it got (0..1).
+struct WorkProgress {
+  std::string task;
+  double fraction = 0.0;
+};
+
 // The kernel's Pipeline behind the window's background jobs: runs are serialised, and a run whose stop
 // was requested before it began, or before its display data, gives up and returns none. The pipeline's
 // caches outlive a run: a slider that only moves vertices builds no mesh.
 class StagePipeline {
  public:
+  StagePipeline();
+
   // Throws the kernel's errors (TopologyError naming the elements, BudgetError).
   std::optional<StageResult> run(const PipelineInput& input, const PipelineSettings& settings,
                                  std::stop_token stop);
+  // The progress of the run in flight (an empty task before the first report), for the status overlay.
+  WorkProgress progress() const;
 
  private:
   std::mutex mutex_;
+  mutable std::mutex progress_mutex_;
+  WorkProgress progress_;
   Pipeline pipeline_;
 };
 

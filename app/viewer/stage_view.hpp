@@ -36,6 +36,7 @@ class StageView {
   const Mesh* shown_mesh() const { return shown_ ? shown_->mesh.get() : nullptr; }
   bool is_busy() const { return job_.is_busy(); }
   double seconds_running() const { return job_.seconds_running(); }
+  WorkProgress progress() const { return pipeline_.progress(); }
 
   // The BVH of the shown mesh, for picks: built off the UI thread once the geometry has rested for a
   // moment (a slider drag never starts one), or at a pick that comes sooner (waiting for a build in

@@ -98,7 +98,8 @@ void Window::draw_panels() {
   report_.panels.push_back({"log", layout_.log});
   draw_status();
   if (panels_.is_help_shown) draw_help_overlay(panels_.is_help_shown);
-  if (stage_.is_busy() && stage_.seconds_running() >= 0.03) draw_progress(stage_.seconds_running());
+  if (stage_.is_busy() && stage_.seconds_running() >= 0.03)
+    draw_progress(stage_.seconds_running(), stage_.progress());
   draw_browser();
 }
 

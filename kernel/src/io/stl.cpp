@@ -26,7 +26,8 @@ Vec3 unit_or_zero(const Vec3& n) {
 
 }  // namespace
 
-void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat format) {
+void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat format,
+               const Progress& progress) {
   write_file_atomically(path, [&](std::ostream& out) {
     std::uint32_t triangles = 0;
     for (Index f = 0; f < mesh.num_faces(); ++f) triangles += mesh.face_degree(f) - 2;
@@ -40,6 +41,7 @@ void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat fo
     }
     char buf[160];
     for (Index f = 0; f < mesh.num_faces(); ++f) {
+      if (f % (Index(1) << 16) == 0) progress("writing STL", double(f) / mesh.num_faces());
       const Vec3 n = unit_or_zero(face_area_normal(mesh, f));
       const auto vs = mesh.face_vertices(f);
       for (size_t i = 1; i + 1 < vs.size(); ++i) {

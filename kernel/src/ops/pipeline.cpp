@@ -82,6 +82,10 @@ void Pipeline::set_input(const Mesh& scene_mesh) {
   input_changed(int(scene_->update(scene_mesh)));
 }
 
+void Pipeline::set_progress(Progress progress) {
+  solid_->set_progress(std::move(progress));
+}
+
 const Mesh& Pipeline::run(const Mesh& scene_mesh, const PipelineSettings& settings) {
   set_input(scene_mesh);
   return run(settings);

@@ -36,7 +36,9 @@ const Mesh& SolidStages::run(const Mesh& input, InputChange change, const Pipeli
     return run_stages(input, s, previous);
   } catch (...) {
     // A stage left half done must not pass for a cached one next time.
+    Progress progress = std::move(progress_);
     *this = SolidStages();
+    progress_ = std::move(progress);
     throw;
   }
 }
@@ -71,7 +73,9 @@ const Mesh& SolidStages::run_stages(const Mesh& input, const PipelineSettings& s
 std::optional<Mesh> SolidStages::take_result() {
   std::optional<Mesh> out;
   if (result_) out = std::move(*result_);
+  Progress progress = std::move(progress_);
   *this = SolidStages();
+  progress_ = std::move(progress);
   return out;
 }
 
@@ -93,11 +97,15 @@ Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int 
   if (has_new_topology_ || !stage.refinement || stage.levels != levels ||
       stage.refinement->boundary() != s.boundary || stage.refinement->creases() != s.creases ||
       !stage.refinement->fits(in)) {
+    progress_("subdivision", 0.0);
     stage.refinement.emplace(in, levels, s.boundary, s.threads, s.creases);
     stage.levels = levels;
+    progress_("subdivision", 0.4);
     Buffer<Vec3> positions(stage.refinement->num_vertices());
     stage.refinement->refine_positions(in, s.rule, positions, s.threads);
+    progress_("subdivision", 0.7);
     stage.result = stage.refinement->mesh(in, std::move(positions), s.threads);
+    progress_("subdivision", 1.0);
     stage.work = StageWork::rebuilt;
     has_new_topology_ = has_new_positions_ = true;
   } else if (has_new_positions_) {
@@ -114,8 +122,10 @@ Mesh& SolidStages::offset_stage(const Mesh& in, const PipelineSettings& s) {
     offset_.work = StageWork::cached;
     return offset_.result;
   }
+  progress_("offset", 0.0);
   const Normals& normals = offset_.normals;
   compute_normals(in, offset_.normals);
+  progress_("offset", 0.3);
   if (std::string warning = degeneracy_warning(in, normals); !warning.empty())
     warnings_.push_back("offset: " + warning);
   if (has_new_topology_ || !offset_.has_result) {
@@ -127,6 +137,7 @@ Mesh& SolidStages::offset_stage(const Mesh& in, const PipelineSettings& s) {
     offset_positions(in, normals, s.distance(), offset_.result.positions());
     offset_.work = StageWork::positions;
   }
+  progress_("offset", 1.0);
   return offset_.result;
 }
 

@@ -27,6 +27,7 @@ class SolidStages {
   std::optional<Mesh> take_result();
 
   StageWork work(Stage stage) const;
+  void set_progress(Progress progress) { progress_ = std::move(progress); }
   // Warnings of the last run (degenerate faces met by the offset's normals).
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -55,6 +56,7 @@ class SolidStages {
   SubdivisionStage before_, after_;
   OffsetStage offset_;
   std::vector<std::string> warnings_;
+  Progress progress_;
   Mesh* result_ = nullptr;  // the last stage that ran, or none when the result is the input
 };
 

@@ -81,3 +81,17 @@ TEST_CASE("the viewer's slider tick that moves vertices builds no mesh", "[app]"
   CHECK(build_mesh_count() == before);
   CHECK(result->topology.borders == 0);
 }
+
+TEST_CASE("a stage's run reports the kernel's task and how far it got", "[app]") {
+  StagePipeline pipeline;
+  CHECK(pipeline.progress().task.empty());
+  PipelineSettings settings = viewer::initial_settings();
+  settings.stage = Stage::subdivided;
+  shown(pipeline, two_pieces(), settings);
+  CHECK(pipeline.progress().task == "subdivision");
+  CHECK(pipeline.progress().fraction == 1.0);
+  settings.stage = Stage::offset;
+  shown(pipeline, two_pieces(), settings);
+  CHECK(pipeline.progress().task == "offset");
+  CHECK(pipeline.progress().fraction == 1.0);
+}

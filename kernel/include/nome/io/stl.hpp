@@ -4,6 +4,7 @@
 
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/polygon_soup.hpp"
+#include "nome/progress.hpp"
 
 namespace nome {
 
@@ -11,7 +12,8 @@ enum class StlFormat { binary, ascii };
 
 // Writes each polygon as a triangle fan from its first corner, facet normal from the polygon's
 // orientation (Newell). Atomic (see write_file_atomically).
-void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat format = StlFormat::binary);
+void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat format = StlFormat::binary,
+               const Progress& progress = {});
 
 }  // namespace nome
 

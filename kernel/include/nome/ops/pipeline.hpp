@@ -9,6 +9,7 @@
 #include "nome/ops/merge.hpp"
 #include "nome/ops/pipeline_input.hpp"
 #include "nome/ops/pipeline_settings.hpp"
+#include "nome/progress.hpp"
 
 namespace nome {
 
@@ -65,6 +66,9 @@ class Pipeline {
   const Mesh& run(const Mesh& scene_mesh, const PipelineSettings& settings);
   // Moves the last result out (for a one-shot caller such as the command line); the caches start over.
   Mesh take_result();
+
+  // Where the stages that rebuild a mesh (subdivision, offset) report how far they got.
+  void set_progress(Progress progress);
 
   // What each stage did in the last run.
   StageWork work(Stage stage) const;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
@@ -63,6 +64,66 @@ class TriangleBvh {
   Index num_triangles() const { return triangles_.size(); }
   Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
   const DisplayTriangles& triangles() const { return triangles_; }
+  // The mesh vertex at corner i (0..2) of triangle t, and its position as the tree stored it.
+  Index triangle_vertex(Index t, int i) const { return corner_vertices_[triangles_.corners[t][i]]; }
+  const Vec3& triangle_point(Index t, int i) const { return positions_[triangle_vertex(t, i)]; }
+
+  // Calls visit(a, b) with the triangle ranges of every pair of leaves whose boxes overlap, a leaf with
+  // itself included and each unordered pair once: the candidates of a self-intersection test, found by
+  // descending the tree against itself. Pairs are dealt out to `parts` shares; this call does share `part`.
+  template <typename Visit>
+  void visit_overlapping_leaves(int part, int parts, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    std::vector<std::array<Index, 2>> pairs{{0, 0}}, next;
+    // Breadth first until there are enough pairs to deal out evenly, then depth first per pair.
+    while (pairs.size() < 64 * std::size_t(parts)) {
+      next.clear();
+      bool has_inner = false;
+      for (const auto& pair : pairs) {
+        if (split_pair(pair, next))
+          has_inner = true;
+        else
+          next.push_back(pair);
+      }
+      pairs.swap(next);
+      if (!has_inner) break;
+    }
+    std::vector<std::array<Index, 2>> stack;
+    for (std::size_t i = std::size_t(part); i < pairs.size(); i += std::size_t(parts)) {
+      stack.assign(1, pairs[i]);
+      while (!stack.empty()) {
+        const auto pair = stack.back();
+        stack.pop_back();
+        if (split_pair(pair, stack)) continue;
+        if (!overlaps(pair[0], pair[1])) continue;
+        const BvhNode &a = nodes_[pair[0]], &b = nodes_[pair[1]];
+        visit(std::span<const Index>(order_.data() + a.first, a.count),
+              std::span<const Index>(order_.data() + b.first, b.count));
+      }
+    }
+  }
+
+  // Calls visit(t) for each triangle in a leaf whose box overlaps [lower, upper]: a superset of the
+  // triangles meeting that box, for proximity queries (the print check).
+  template <typename Visit>
+  void visit_box(const Vec3& lower, const Vec3& upper, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    Index stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const BvhNode& node = nodes_[stack[--top]];
+      if (node.lower.x > upper.x || node.lower.y > upper.y || node.lower.z > upper.z ||
+          node.upper.x < lower.x || node.upper.y < lower.y || node.upper.z < lower.z)
+        continue;
+      if (node.count > 0) {
+        for (Index i = node.first; i < node.first + node.count; ++i) visit(order_[i]);
+      } else {
+        stack[top++] = node.first + 1;
+        stack[top++] = node.first;
+      }
+    }
+  }
 
   // The classified hit of the ray on triangle t at the given triangle hit (shared with the
   // brute-force reference in the tests).
@@ -73,6 +134,36 @@ class TriangleBvh {
  private:
   template <typename Visit>
   void traverse(const ShearedRay& ray, double& t_max, Visit&& visit) const;
+
+  bool overlaps(Index a, Index b) const {
+    const BvhNode &x = nodes_[a], &y = nodes_[b];
+    return !(x.lower.x > y.upper.x || x.lower.y > y.upper.y || x.lower.z > y.upper.z ||
+             y.lower.x > x.upper.x || y.lower.y > x.upper.y || y.lower.z > x.upper.z);
+  }
+  // For an overlapping pair of nodes with an inner node, adds the pairs of their children that may overlap
+  // and returns true; returns false for a pair of leaves (or a leaf with itself), adding nothing.
+  bool split_pair(const std::array<Index, 2>& pair, std::vector<std::array<Index, 2>>& out) const {
+    const auto [a, b] = pair;
+    const BvhNode &x = nodes_[a], &y = nodes_[b];
+    if (x.count > 0 && y.count > 0) return false;
+    if (!overlaps(a, b)) return true;
+    if (a == b) {
+      out.push_back({x.first, x.first});
+      out.push_back({x.first + 1, x.first + 1});
+      out.push_back({x.first, x.first + 1});
+    } else if (y.count > 0 || (x.count == 0 && volume(x) >= volume(y))) {
+      out.push_back({x.first, b});
+      out.push_back({x.first + 1, b});
+    } else {
+      out.push_back({a, y.first});
+      out.push_back({a, y.first + 1});
+    }
+    return true;
+  }
+  static double volume(const BvhNode& n) {
+    const Vec3 d = n.upper - n.lower;
+    return d.x * d.y * d.z + d.x + d.y + d.z;
+  }
 
   DisplayTriangles triangles_;
   Buffer<Vec3> positions_;

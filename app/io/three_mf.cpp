@@ -1,0 +1,141 @@
+#include "io/three_mf.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "io/lib3mf_handle.hpp"
+#include "nome/atomic_file.hpp"
+#include "nome/error.hpp"
+#include "nome/query/display_triangles.hpp"
+
+namespace nome {
+namespace {
+
+using namespace NMR;
+
+DWORD lib3mf_unit(LengthUnit unit) {
+  switch (unit) {
+    case LengthUnit::millimeter:
+      return MODELUNIT_MILLIMETER;
+    case LengthUnit::centimeter:
+      return MODELUNIT_CENTIMETER;
+    case LengthUnit::inch:
+      return MODELUNIT_INCH;
+    case LengthUnit::meter:
+      return MODELUNIT_METER;
+  }
+  return MODELUNIT_MILLIMETER;
+}
+
+BYTE color_byte(float channel) {
+  return BYTE(std::lround(std::clamp(channel, 0.0f, 1.0f) * 255.0f));
+}
+
+// The vertices and triangles of one component, with each mesh vertex numbered where it is first used.
+struct ObjectArrays {
+  std::vector<MODELMESHVERTEX> vertices;
+  std::vector<MODELMESHTRIANGLE> triangles;
+  std::vector<MODELMESHCOLOR_SRGB> colors;
+};
+
+std::vector<ObjectArrays> split_components(const Mesh& mesh, double scale) {
+  std::vector<ObjectArrays> objects(mesh.num_components());
+  std::vector<DWORD> local(mesh.num_vertices(), DWORD(-1));
+  const DisplayTriangles triangles = display_triangles(mesh);
+  const bool has_colors = !mesh.face_colors().empty();
+  for (Index t = 0; t < triangles.size(); ++t) {
+    const Index f = triangles.faces[t];
+    ObjectArrays& object = objects[mesh.face_component(f)];
+    MODELMESHTRIANGLE triangle{};
+    for (int i = 0; i < 3; ++i) {
+      const Index v = mesh.corner_vertex(triangles.corners[t][i]);
+      if (local[v] == DWORD(-1)) {
+        local[v] = DWORD(object.vertices.size());
+        const Vec3 p = mesh.position(v) * scale;
+        object.vertices.push_back({{float(p.x), float(p.y), float(p.z)}});
+      }
+      triangle.m_nIndices[i] = local[v];
+    }
+    object.triangles.push_back(triangle);
+    if (has_colors) {
+      const Color c = mesh.face_colors()[f];
+      object.colors.push_back({color_byte(c.r), color_byte(c.g), color_byte(c.b), 255});
+    }
+  }
+  return objects;
+}
+
+void add_object(PLib3MFModel* model, ObjectArrays& arrays, Index number, const std::filesystem::path& path) {
+  PLib3MFModelMeshObject* raw = nullptr;
+  check_lib3mf(lib3mf_model_addmeshobject(model, &raw), model, path, "adding an object");
+  const Lib3mfHandle object(raw);
+  check_lib3mf(lib3mf_object_setnameutf8(raw, ("part " + std::to_string(number + 1)).c_str()), raw, path,
+               "naming");
+  check_lib3mf(lib3mf_meshobject_setgeometry(raw, arrays.vertices.data(), DWORD(arrays.vertices.size()),
+                                             arrays.triangles.data(), DWORD(arrays.triangles.size())),
+               raw, path, "setting the geometry");
+  if (!arrays.colors.empty()) {
+    PLib3MFPropertyHandler* handler = nullptr;
+    check_lib3mf(lib3mf_meshobject_createpropertyhandler(raw, &handler), raw, path, "colouring");
+    const Lib3mfHandle owned(handler);
+    check_lib3mf(lib3mf_propertyhandler_setsinglecolorarray(handler, arrays.colors.data()), handler, path,
+                 "colouring");
+    // 3MF wants an object with coloured triangles to name a colour of its own as well.
+    PLib3MFDefaultPropertyHandler* fallback = nullptr;
+    check_lib3mf(lib3mf_object_createdefaultpropertyhandler(raw, &fallback), raw, path, "colouring");
+    const Lib3mfHandle owned_fallback(fallback);
+    MODELMESHCOLOR_SRGB first = arrays.colors.front();
+    check_lib3mf(lib3mf_defaultpropertyhandler_setcolor(fallback, &first), fallback, path, "colouring");
+  }
+  PLib3MFModelBuildItem* item = nullptr;
+  check_lib3mf(lib3mf_model_addbuilditem(model, raw, nullptr, &item), model, path, "adding a build item");
+  lib3mf_release(item);
+}
+
+}  // namespace
+
+std::optional<LengthUnit> parse_length_unit(std::string_view name) {
+  if (name == "mm") return LengthUnit::millimeter;
+  if (name == "cm") return LengthUnit::centimeter;
+  if (name == "in") return LengthUnit::inch;
+  if (name == "m") return LengthUnit::meter;
+  return std::nullopt;
+}
+
+const char* to_string(LengthUnit unit) {
+  switch (unit) {
+    case LengthUnit::millimeter:
+      return "mm";
+    case LengthUnit::centimeter:
+      return "cm";
+    case LengthUnit::inch:
+      return "in";
+    case LengthUnit::meter:
+      return "m";
+  }
+  return "mm";
+}
+
+void write_3mf(const std::filesystem::path& path, const Mesh& mesh, const ThreeMfOptions& options) {
+  PLib3MFModel* raw = nullptr;
+  check_lib3mf(lib3mf_createmodel(&raw), nullptr, path, "creating a model");
+  const Lib3mfHandle model(raw);
+  check_lib3mf(lib3mf_model_setunit(raw, lib3mf_unit(options.unit)), raw, path, "setting the unit");
+  std::vector<ObjectArrays> objects = split_components(mesh, options.scale);
+  for (Index i = 0; i < objects.size(); ++i) add_object(raw, objects[i], i, path);
+  PLib3MFModelWriter* writer_raw = nullptr;
+  check_lib3mf(lib3mf_model_querywriter(raw, "3mf", &writer_raw), raw, path, "making a writer");
+  const Lib3mfHandle writer(writer_raw);
+  ULONG64 size = 0;
+  check_lib3mf(lib3mf_writer_getstreamsize(writer_raw, &size), writer_raw, path, "sizing the package");
+  std::vector<BYTE> bytes(size);
+  check_lib3mf(lib3mf_writer_writetobuffer(writer_raw, bytes.data(), size), writer_raw, path,
+               "writing the package");
+  write_file_atomically(path, [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  });
+}
+
+}  // namespace nome

@@ -1,0 +1,111 @@
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include "io/lib3mf_handle.hpp"
+#include "io/three_mf.hpp"
+#include "nome/error.hpp"
+
+namespace nome {
+namespace {
+
+using namespace NMR;
+
+LengthUnit unit_of(DWORD unit) {
+  switch (unit) {
+    case MODELUNIT_CENTIMETER:
+      return LengthUnit::centimeter;
+    case MODELUNIT_INCH:
+      return LengthUnit::inch;
+    case MODELUNIT_METER:
+      return LengthUnit::meter;
+    default:
+      return LengthUnit::millimeter;
+  }
+}
+
+ThreeMfModel::Object read_object(PLib3MFModelMeshObject* mesh, const std::filesystem::path& path) {
+  ThreeMfModel::Object object;
+  DWORD vertex_count = 0, triangle_count = 0;
+  check_lib3mf(lib3mf_meshobject_getvertexcount(mesh, &vertex_count), mesh, path, "counting vertices");
+  check_lib3mf(lib3mf_meshobject_gettrianglecount(mesh, &triangle_count), mesh, path, "counting triangles");
+  std::vector<MODELMESHVERTEX> vertices(vertex_count);
+  std::vector<MODELMESHTRIANGLE> triangles(triangle_count);
+  check_lib3mf(lib3mf_meshobject_getvertices(mesh, vertices.data(), vertex_count, nullptr), mesh, path,
+               "vertices");
+  check_lib3mf(lib3mf_meshobject_gettriangleindices(mesh, triangles.data(), triangle_count, nullptr), mesh,
+               path, "triangles");
+  for (const MODELMESHVERTEX& v : vertices)
+    object.vertices.emplace_back(v.m_fPosition[0], v.m_fPosition[1], v.m_fPosition[2]);
+  for (const MODELMESHTRIANGLE& t : triangles) {
+    for (const DWORD i : t.m_nIndices)
+      if (i >= vertex_count)
+        throw IoError(path.string() + ": reading 3MF: a triangle names a missing vertex");
+    object.triangles.push_back({Index(t.m_nIndices[0]), Index(t.m_nIndices[1]), Index(t.m_nIndices[2])});
+  }
+  PLib3MFPropertyHandler* handler = nullptr;
+  check_lib3mf(lib3mf_meshobject_createpropertyhandler(mesh, &handler), mesh, path, "colours");
+  const Lib3mfHandle owned(handler);
+  for (DWORD t = 0; t < triangle_count; ++t) {
+    eModelPropertyType type = MODELPROPERTYTYPE_NONE;
+    check_lib3mf(lib3mf_propertyhandler_getpropertytype(handler, t, &type), handler, path, "colours");
+    if (type != MODELPROPERTYTYPE_COLOR) continue;
+    if (object.colors.empty()) object.colors.assign(triangle_count, default_face_color);
+    MODELMESH_TRIANGLECOLOR_SRGB color{};
+    check_lib3mf(lib3mf_propertyhandler_getcolor(handler, t, &color), handler, path, "colours");
+    const MODELMESHCOLOR_SRGB& c = color.m_Colors[0];
+    object.colors[t] = Color(c.m_Red / 255.0f, c.m_Green / 255.0f, c.m_Blue / 255.0f);
+  }
+  return object;
+}
+
+}  // namespace
+
+ThreeMfModel read_3mf(const std::filesystem::path& path) {
+  PLib3MFModel* raw = nullptr;
+  check_lib3mf(lib3mf_createmodel(&raw), nullptr, path, "creating a model");
+  const Lib3mfHandle model(raw);
+  PLib3MFModelReader* reader_raw = nullptr;
+  check_lib3mf(lib3mf_model_queryreader(raw, "3mf", &reader_raw), raw, path, "making a reader");
+  const Lib3mfHandle reader(reader_raw);
+  check_lib3mf(lib3mf_reader_readfromfileutf8(reader_raw, path.string().c_str()), reader_raw, path,
+               "the package");
+  ThreeMfModel result;
+  DWORD unit = MODELUNIT_MILLIMETER;
+  check_lib3mf(lib3mf_model_getunit(raw, &unit), raw, path, "the unit");
+  result.unit = unit_of(unit);
+  PLib3MFModelResourceIterator* iterator_raw = nullptr;
+  check_lib3mf(lib3mf_model_getmeshobjects(raw, &iterator_raw), raw, path, "the objects");
+  const Lib3mfHandle iterator(iterator_raw);
+  BOOL has_next = false;
+  while (lib3mf_resourceiterator_movenext(iterator_raw, &has_next) == LIB3MF_OK && has_next) {
+    PLib3MFModelResource* resource = nullptr;
+    check_lib3mf(lib3mf_resourceiterator_getcurrent(iterator_raw, &resource), iterator_raw, path,
+                 "an object");
+    const Lib3mfHandle owned(resource);
+    result.objects.push_back(read_object(resource, path));
+  }
+  if (std::all_of(result.objects.begin(), result.objects.end(),
+                  [](const ThreeMfModel::Object& o) { return o.triangles.empty(); }))
+    throw IoError(path.string() + ": reading 3MF: the package holds no triangles");
+  return result;
+}
+
+PolygonSoup three_mf_polygons(const ThreeMfModel& model) {
+  PolygonSoup soup;
+  const bool has_colors = std::any_of(model.objects.begin(), model.objects.end(),
+                                      [](const ThreeMfModel::Object& o) { return !o.colors.empty(); });
+  for (const ThreeMfModel::Object& object : model.objects) {
+    const Index first = soup.num_vertices();
+    for (const Vec3& p : object.vertices) soup.add_vertex(p);
+    for (Index t = 0; t < object.triangles.size(); ++t) {
+      const auto& c = object.triangles[t];
+      soup.add_face({first + c[0], first + c[1], first + c[2]});
+      if (has_colors)
+        soup.face_colors.push_back(object.colors.empty() ? default_face_color : object.colors[t]);
+    }
+  }
+  return soup;
+}
+
+}  // namespace nome

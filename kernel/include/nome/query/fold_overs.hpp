@@ -1,0 +1,17 @@
+#pragma once
+
+#include <vector>
+
+#include "nome/mesh/mesh.hpp"
+#include "nome/mesh/normals.hpp"
+
+namespace nome {
+
+// Faces of `surface` whose copy in the offset by `distance` (either side: v + d s n_v or v - d s n_v, as
+// ops/offset places it) has a Newell normal opposing the face's own: where the distance exceeds the
+// surface's local radius of curvature the offset turns inside out and the printed solid is broken. Faces
+// with a zero normal are skipped. In face order.
+std::vector<Index> find_fold_overs(const Mesh& surface, const Normals& normals, double distance,
+                                   int threads = 1);
+
+}  // namespace nome
