@@ -73,7 +73,7 @@ void declare_mesh(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
 
 Piece evaluate_mesh(DefinitionContext& context, Index decl) {
   const MeshDecl& m = context.ast().meshes[decl];
-  for (const FaceDecl& f : m.faces) context.add_face(f.vertices, f.name.text, f.surface);
+  for (const FaceDecl& f : m.faces) context.add_face(f.vertices, f.name.text, f.surface, f.name.location);
   // A sharp chain v1-v2, v2-v3, ... marks the edges between consecutive vertices; a weight is read (its
   // expression's parameters are tracked) but every crease is infinitely sharp until weights are graded.
   for (const SharpDecl& s : m.sharps) {
