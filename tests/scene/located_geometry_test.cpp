@@ -9,7 +9,7 @@ using namespace nome;
 namespace {
 
 // Four points and a mesh of two faces; the second face is written on line 8.
-std::string two_faces(const std::string& second_face) {
+std::string located_two_faces(const std::string& second_face) {
   return "point a (0 0 0) endpoint\n"
          "point b (1 0 0) endpoint\n"
          "point c (1 1 0) endpoint\n"
@@ -24,7 +24,7 @@ std::string two_faces(const std::string& second_face) {
          "instance j m endinstance\n";
 }
 
-std::string build_error(const std::string& text, Joining joining) {
+std::string located_build_error(const std::string& text, Joining joining) {
   PipelineInput input;
   input.soup = scene::Scene::from_text(text, "t.nome").combined_soup();
   input.joining = joining;
@@ -40,9 +40,9 @@ std::string build_error(const std::string& text, Joining joining) {
 }  // namespace
 
 TEST_CASE("a face that repeats a vertex is located at its face statement", "[scene]") {
-  const std::string text = two_faces("(a c d c)");
+  const std::string text = located_two_faces("(a c d c)");
   for (const Joining joining : {Joining::manifold, Joining::across_edges})
-    CHECK(build_error(text, joining) ==
+    CHECK(located_build_error(text, joining) ==
           "t.nome:8:8: build_mesh: not a 2-manifold: face j_f2 repeats vertex j_c");
 }
 
@@ -54,7 +54,7 @@ TEST_CASE("an edge of three faces is located at the face statement that adds the
       "  face f3 (a b e) endface endmesh\n"
       "instance j m endinstance\n";
   CHECK_THAT(
-      build_error(text, Joining::manifold),
+      located_build_error(text, Joining::manifold),
       Catch::StartsWith("t.nome:4:8: build_mesh: not a 2-manifold: edge (j_a, j_b) has a third face j_f3"));
   // The viewer's joining keeps the faces apart and warns, located the same way.
   PipelineInput input;
@@ -68,7 +68,8 @@ TEST_CASE("an edge of three faces is located at the face statement that adds the
 }
 
 TEST_CASE("a face with coinciding vertices is warned about on load at its statement", "[scene]") {
-  SceneDocument doc = SceneDocument::from_scene(scene::Scene::from_text(two_faces("(a c d e)"), "t.nome"));
+  SceneDocument doc =
+      SceneDocument::from_scene(scene::Scene::from_text(located_two_faces("(a c d e)"), "t.nome"));
   Pipeline pipeline;
   pipeline.set_input(doc.pipeline_input());
   pipeline.run(PipelineSettings{});

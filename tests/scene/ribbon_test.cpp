@@ -29,7 +29,7 @@ std::string ribbon_scene(const std::string& twist, const std::string& bank = "")
          twist + ") endribbon\ninstance b band endinstance\n";
 }
 
-TopologyReport topology(const Scene& s) {
+TopologyReport ribbon_topology(const Scene& s) {
   return topology_report(build_mesh(s.combined_soup()));
 }
 
@@ -38,7 +38,7 @@ TopologyReport topology(const Scene& s) {
 TEST_CASE("a ribbon with half a turn on a closed rim line is a Möbius band", "[scene]") {
   for (const char* twist : {"180", "540", "-180"}) {
     INFO(twist);
-    const TopologyReport t = topology(Scene::from_text(ribbon_scene(twist), "t.nome"));
+    const TopologyReport t = ribbon_topology(Scene::from_text(ribbon_scene(twist), "t.nome"));
     CHECK(t.faces == 8);
     CHECK_FALSE(t.orientable);
     CHECK(t.borders == 1);
@@ -49,7 +49,7 @@ TEST_CASE("a ribbon with half a turn on a closed rim line is a Möbius band", "[
 TEST_CASE("a ribbon with whole turns on a closed rim line is an annulus", "[scene]") {
   for (const char* twist : {"0", "360"}) {
     INFO(twist);
-    const TopologyReport t = topology(Scene::from_text(ribbon_scene(twist), "t.nome"));
+    const TopologyReport t = ribbon_topology(Scene::from_text(ribbon_scene(twist), "t.nome"));
     CHECK(t.faces == 8);
     CHECK(t.orientable);
     CHECK(t.borders == 2);
@@ -77,9 +77,9 @@ TEST_CASE("a ribbon's width, azimuth and twist follow sliders", "[scene]") {
   s.set_parameter(*s.find_parameter("rb_az"), 90);
   for (const Vec3& p : s.combined_soup().positions) highest = std::max(highest, std::abs(p.z));
   CHECK(highest == Approx(0.4));  // standing up: half the width above and below the line
-  CHECK(topology(s).orientable);
+  CHECK(ribbon_topology(s).orientable);
   s.set_parameter(*s.find_parameter("rb_tw"), 180);
-  CHECK_FALSE(topology(s).orientable);
+  CHECK_FALSE(ribbon_topology(s).orientable);
 }
 
 TEST_CASE("a ribbon is saved as written and its rim line must be a curve", "[scene]") {

@@ -19,8 +19,8 @@ void erase_at(std::vector<T>& list, const std::vector<std::pair<size_t, T>>& rem
 }
 
 // Adds the edges to `marked`, or takes them out.
-void mark(std::vector<std::pair<std::string, std::string>>& marked,
-          const std::vector<std::pair<std::string, std::string>>& edges, bool is_sharp) {
+void mark_sharp(std::vector<std::pair<std::string, std::string>>& marked,
+                const std::vector<std::pair<std::string, std::string>>& edges, bool is_sharp) {
   for (const auto& edge : edges) {
     const auto at = std::find(marked.begin(), marked.end(), edge);
     if (is_sharp && at == marked.end()) marked.push_back(edge);
@@ -265,7 +265,7 @@ void Document::apply(const Command& command) {
   } else if (std::holds_alternative<ClearTemporary>(command)) {
     temporary_.clear();
   } else if (const auto* sharp = std::get_if<SetSharp>(&command)) {
-    mark(sharp_, sharp->edges, sharp->is_sharp);
+    mark_sharp(sharp_, sharp->edges, sharp->is_sharp);
   } else {
     const auto& del = std::get<DeleteFaces>(command);
     erase_at(temporary_, del.temporary);
@@ -283,7 +283,7 @@ void Document::revert(const Command& command) {
   } else if (const auto* clear = std::get_if<ClearTemporary>(&command)) {
     temporary_ = clear->faces;
   } else if (const auto* sharp = std::get_if<SetSharp>(&command)) {
-    mark(sharp_, sharp->edges, !sharp->is_sharp);
+    mark_sharp(sharp_, sharp->edges, !sharp->is_sharp);
   } else {
     const auto& del = std::get<DeleteFaces>(command);
     deleted_.resize(deleted_.size() - del.scene_faces.size());

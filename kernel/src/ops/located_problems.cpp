@@ -8,7 +8,7 @@ namespace nome {
 namespace {
 
 // "file:line:col: " of the statement that made face f, or "" when unknown.
-std::string prefix(const PolygonSoup& soup, Index f) {
+std::string origin_prefix(const PolygonSoup& soup, Index f) {
   const std::string& where = soup.origin(f);
   return where.empty() ? std::string() : where + ": ";
 }
@@ -31,7 +31,7 @@ std::optional<TopologyError> located_error(const TopologyError& error, const Pol
   bool is_located = false;
   std::string text;
   for (const TopologyError::Problem& p : error.problems()) {
-    const std::string where = p.face < soup.num_faces() ? prefix(soup, p.face) : std::string();
+    const std::string where = p.face < soup.num_faces() ? origin_prefix(soup, p.face) : std::string();
     is_located = is_located || !where.empty();
     text += (text.empty() ? "" : "\n") + where + "build_mesh: not a 2-manifold: " + p.text;
   }
@@ -56,9 +56,9 @@ std::vector<std::string> coinciding_vertex_warnings(const Mesh& mesh, const Poly
       }
     if (!pair) continue;
     if (++count <= max_listed)
-      out.push_back((soup.origin(f).empty() ? "scene: " : prefix(soup, f)) + "face " + mesh.face_label(f) +
-                    " has coinciding vertices " + mesh.vertex_label(pair->first) + " and " +
-                    mesh.vertex_label(pair->second) +
+      out.push_back((soup.origin(f).empty() ? "scene: " : origin_prefix(soup, f)) + "face " +
+                    mesh.face_label(f) + " has coinciding vertices " + mesh.vertex_label(pair->first) +
+                    " and " + mesh.vertex_label(pair->second) +
                     " (no normal there: its offset and shading are undefined)");
   }
   if (count > max_listed)

@@ -7,7 +7,7 @@
 namespace nome {
 namespace {
 
-double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
+double pixel_distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
   const glm::dvec2 ab = b - a;
   const double length_squared = glm::dot(ab, ab);
   const double t = length_squared > 0 ? std::clamp(glm::dot(p - a, ab) / length_squared, 0.0, 1.0) : 0.0;
@@ -25,7 +25,7 @@ std::optional<Index> nearest_edge_on_screen(const Mesh& mesh, Index face, const 
     const auto a = project_to_pixel(projection, mesh.position(u));
     const auto b = project_to_pixel(projection, mesh.position(w));
     if (!a || !b) continue;
-    const double distance = distance_to_segment(cursor, glm::dvec2(*a), glm::dvec2(*b));
+    const double distance = pixel_distance_to_segment(cursor, glm::dvec2(*a), glm::dvec2(*b));
     if (distance <= best_distance) {
       best_distance = distance;
       best = e;

@@ -14,7 +14,7 @@ using namespace nome;
 
 namespace {
 
-const char* const cube_text =
+const char* const edge_mode_cube_text =
     "point a (0 0 0) endpoint point b (1 0 0) endpoint point c (1 1 0) endpoint point d (0 1 0) endpoint\n"
     "point e (0 0 1) endpoint point f (1 0 1) endpoint point g (1 1 1) endpoint point h (0 1 1) endpoint\n"
     "mesh box\n"
@@ -40,7 +40,7 @@ std::pair<glm::dvec2, std::pair<std::string, std::string>> clickable_edge(const 
   return {};
 }
 
-Buffer<Vec3> subdivided(const SceneDocument& doc) {
+Buffer<Vec3> edge_mode_subdivided(const SceneDocument& doc) {
   Pipeline pipeline;
   pipeline.set_input(doc.pipeline_input());
   PipelineSettings s;
@@ -56,7 +56,7 @@ TEST_CASE(
     "the subdivision",
     "[app]") {
   const std::string dir = nome::test::private_scratch_dir("sharp_edge");
-  std::ofstream(dir + "/cube.nome") << cube_text;
+  std::ofstream(dir + "/cube.nome") << edge_mode_cube_text;
   const Mesh mesh = glue_faces(read_scene(dir + "/cube.nome").combined_soup()).mesh;
   const auto [pixel, names] = clickable_edge(mesh);
   viewer::ViewerOptions options;
@@ -80,5 +80,5 @@ TEST_CASE(
   if (edge.second < edge.first) std::swap(edge.first, edge.second);
   CHECK(back.edits().sharp_edges() == std::vector<std::pair<std::string, std::string>>{edge});
   const SceneDocument plain = SceneDocument::from_scene(read_scene(dir + "/cube.nome"));
-  CHECK(subdivided(back) != subdivided(plain));
+  CHECK(edge_mode_subdivided(back) != edge_mode_subdivided(plain));
 }

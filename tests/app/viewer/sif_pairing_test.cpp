@@ -11,7 +11,7 @@ namespace {
 
 // Frames until the window closes; the face counts of the stage shown at the end of a frame, each time
 // they change (a reopened file shows nothing until its stage is computed).
-std::vector<Index> shown_faces(nome::test::TestViewer& viewer) {
+std::vector<Index> sif_shown_faces(nome::test::TestViewer& viewer) {
   std::vector<Index> seen;
   for (int frames = 0; viewer.frame() && frames < 10000; ++frames)
     if (const viewer::StageResult* shown = viewer.window().shown())
@@ -35,11 +35,11 @@ TEST_CASE("the viewer pairs a .sif file's triangles into quads unless told not t
   options.script = nome::test::write_script(
       dir, "action pair-triangles\nview 30 25\naction pair-triangles\nview 30 25\nquit\n");
   nome::test::TestViewer on(options);
-  CHECK(shown_faces(on) == std::vector<Index>{paired, triangles, paired});
+  CHECK(sif_shown_faces(on) == std::vector<Index>{paired, triangles, paired});
   CHECK(on.window().exit_status() == 0);
 
   options.pair_sif_triangles = false;  // `nome zero.sif --triangles`
   options.script = nome::test::write_script(dir, "quit\n");
   nome::test::TestViewer off(options);
-  CHECK(shown_faces(off) == std::vector<Index>{triangles});
+  CHECK(sif_shown_faces(off) == std::vector<Index>{triangles});
 }

@@ -12,7 +12,7 @@ using namespace nome;
 namespace {
 
 // Two funnels whose vertex count is a slider, and a consolidated face on their sixth high-circle vertices.
-std::string two_funnels() {
+std::string unresolved_two_funnels() {
   return "bank fb\n  set n 6 4 8 1\nendbank\n"
          "funnel f ({$fb_n} 1 0.5 1) endfunnel\n"
          "instance a f endinstance\n"
@@ -30,7 +30,7 @@ TEST_CASE(
     "meanwhile",
     "[app]") {
   const std::string dir = nome::test::private_scratch_dir("unresolved_edits");
-  std::ofstream(dir + "/funnels.nome") << two_funnels();
+  std::ofstream(dir + "/funnels.nome") << unresolved_two_funnels();
   viewer::ViewerOptions options;
   options.file = dir + "/funnels.nome";
   options.script =

@@ -14,7 +14,7 @@ namespace nome::scene {
 namespace {
 
 // The rim line's name is kept as the declaration's one option word, the numbers as its arguments.
-void parse(StatementParser& parser, Index kind) {
+void parse_ribbon(StatementParser& parser, Index kind) {
   const StatementKind& row = statement_kinds()[kind];
   parser.set_statement_end(row.end_keyword);
   parser.take();
@@ -29,26 +29,27 @@ void parse(StatementParser& parser, Index kind) {
   parser.ast().generators.push_back(std::move(g));
 }
 
-void save(SceneWriter& writer, Index kind) {
+void save_ribbon(SceneWriter& writer, Index kind) {
   for (const GeneratorDecl& g : writer.ast().generators)
     if (g.kind == kind)
       writer.out() << "ribbon " << g.name.text << " (" << g.options[0].text << " "
                    << writer.values(g.args.data(), int(g.args.size())) << ") endribbon\n";
 }
 
-void declare(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) {
+void declare_ribbon(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) {
   for (Index i = 0; i < ast.generators.size(); ++i)
     if (ast.generators[i].kind == kind) out.push_back({&ast.generators[i].name, i});
 }
 
 // A rim line through other placements' vertices waits for them.
-void vertex_lists(const DefinitionScope& scope, Index decl, std::vector<const std::vector<Name>*>& out) {
+void ribbon_vertex_lists(const DefinitionScope& scope, Index decl,
+                         std::vector<const std::vector<Name>*>& out) {
   const auto d = scope.definition(scope.ast().generators[decl].options[0].text);
   if (d && statement_kinds()[d->first].sample && statement_kinds()[d->first].vertex_lists)
     statement_kinds()[d->first].vertex_lists(scope, d->second, out);
 }
 
-Piece evaluate(DefinitionContext& c, Index decl) {
+Piece evaluate_ribbon(DefinitionContext& c, Index decl) {
   const GeneratorDecl& g = c.ast().generators[decl];
   const std::string what = "ribbon '" + g.name.text + "': ";
   const Name& rim_name = g.options[0];
@@ -83,11 +84,11 @@ StatementKind ribbon_statement() {
       .keyword = "ribbon",
       .end_keyword = "endribbon",
       .signature = "(RIMLINE width azimuth twist)",
-      .parse = parse,
-      .save = save,
-      .declare = declare,
-      .evaluate = evaluate,
-      .vertex_lists = vertex_lists,
+      .parse = parse_ribbon,
+      .save = save_ribbon,
+      .declare = declare_ribbon,
+      .evaluate = evaluate_ribbon,
+      .vertex_lists = ribbon_vertex_lists,
       .example = "(pl 0.2 0 0) endribbon\npolyline pl (p0 p1 p2 p3) endpolyline\nribbon z (pl 0.2 30 90)"};
 }
 
