@@ -1,5 +1,7 @@
 #include "nome/edit/scene_document.hpp"
 
+#include <algorithm>
+
 #include "nome/error.hpp"
 #include "nome/scene/save_nome.hpp"
 
