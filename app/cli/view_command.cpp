@@ -9,9 +9,11 @@
 namespace nome::cli {
 
 int view_command(const std::vector<std::string>& args) {
-  Arguments parsed("", "nome [FILE [SAVED.anom ...]] [--script S.txt] [--size WxH]",
+  Arguments parsed("", "nome [FILE [SAVED.anom ...]] [--script S.txt] [--size WxH] [--quads | --triangles]",
                    {{"--script", "", "S.txt", "replay the viewer commands in S.txt, one a line"},
-                    {"--size", "", "WxH", "window size in screen pixels (default 1280x800)"}});
+                    {"--size", "", "WxH", "window size in screen pixels (default 1280x800)"},
+                    {"--quads", "", "", "pair a .sif file's triangles into quads (the window's default)"},
+                    {"--triangles", "", "", "keep a .sif file's triangles as they are"}});
   parsed.parse(args);
   if (parsed.has("--help")) {
     std::cout
@@ -34,6 +36,9 @@ int view_command(const std::vector<std::string>& args) {
     }
   }
   if (const auto script = parsed.value("--script")) options.script = *script;
+  if (parsed.has("--quads") && parsed.has("--triangles"))
+    throw UsageError("--quads and --triangles exclude each other");
+  options.pair_sif_triangles = !parsed.has("--triangles");
   if (const auto size = parsed.value("--size")) {
     int w = 0, h = 0;
     char x = 0;

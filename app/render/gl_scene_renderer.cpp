@@ -21,7 +21,10 @@ class GlSceneRenderer final : public SceneRenderer {
   void set_markers(std::span<const CubeMarker> markers) override { cubes_.set(markers); }
   void set_lines(Overlay overlay, std::span<const glm::vec3> points,
                  std::span<const std::uint32_t> segments) override {
-    (overlay == Overlay::rim ? rim_lines_ : selection_lines_).set(points, segments);
+    (overlay == Overlay::rim     ? rim_lines_
+     : overlay == Overlay::sharp ? sharp_lines_
+                                 : selection_lines_)
+        .set(points, segments);
   }
 
   void draw(const Camera& camera, glm::ivec2 framebuffer_size, const PixelRect& viewport,
@@ -35,6 +38,7 @@ class GlSceneRenderer final : public SceneRenderer {
     renderer_.draw_mesh(*buffers_, frame, display);
     renderer_.draw_cubes(cubes_, frame);
     renderer_.draw_lines(rim_lines_, frame, glm::vec4(rim_color, 1.0f), display.highlight_width);
+    renderer_.draw_lines(sharp_lines_, frame, glm::vec4(display.sharp_color, 1.0f), display.highlight_width);
     renderer_.draw_lines(selection_lines_, frame, glm::vec4(display.selection_color, 1.0f),
                          display.highlight_width * 1.5f);
   }
@@ -60,7 +64,7 @@ class GlSceneRenderer final : public SceneRenderer {
   Renderer renderer_;
   std::unique_ptr<MeshBuffers> buffers_;
   CubeSet cubes_;
-  LineSet rim_lines_, selection_lines_;
+  LineSet rim_lines_, selection_lines_, sharp_lines_;
 };
 
 }  // namespace

@@ -25,7 +25,7 @@ struct PixelRect {
 };
 
 // The line overlays the viewer keeps on the GPU beside the mesh.
-enum class Overlay { rim, selection };
+enum class Overlay { rim, selection, sharp };
 
 // What the viewer draws, behind an interface (polyscope's render engine): the GL backend draws into the
 // current context (a GLFW window, or an EGL / OSMesa framebuffer); the null backend draws nothing, so

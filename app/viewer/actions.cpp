@@ -46,10 +46,13 @@ const ActionInfo table[] = {
     {add_polygon, "add-polygon", GLFW_KEY_ENTER, none, "add a polygon through the selected vertices"},
     {accept, "accept", GLFW_KEY_A, control, "accept the temporary faces (consolidate)"},
     {delete_faces, "delete", GLFW_KEY_DELETE, none, "delete the selected faces"},
+    {toggle_sharp, "sharp", GLFW_KEY_K, none, "mark the selected edges sharp (smooth if all are sharp)"},
     {clear_selection, "clear-selection", GLFW_KEY_ESCAPE, none, "clear the selection"},
     {clear_temporary, "clear", 0, none, "clear the temporary faces"},
     {zip, "zip", 0, none, "zip the two selected borders"},
     {merge, "merge", 0, none, "show the merged stage"},
+    {toggle_parameter_lock, "lock-parameters", 0, none, "lock generator parameters while editing (on / off)"},
+    {toggle_sif_pairing, "pair-triangles", 0, none, "pair a .sif file's triangles into quads (on / off)"},
 };
 
 std::string lower(std::string s) {

@@ -52,6 +52,9 @@ enum class Action {
   toggle_log,
   toggle_sidebars,
   toggle_theme,
+  toggle_parameter_lock,
+  toggle_sif_pairing,
+  toggle_sharp,
 };
 
 // One row of the table every binding is read from: the script's name, a shortcut (key 0: none; an

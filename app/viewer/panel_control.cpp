@@ -9,13 +9,14 @@ namespace {
 
 void draw_selection_section(const ActionRegistry& actions, Selection& selection) {
   int mode = int(selection.mode());
-  const char* labels[] = {"vertex", "face", "border (whole)", "border (partial)"};
-  for (int i = 0; i < 4; ++i) {
+  const char* labels[] = {"vertex", "face", "border (whole)", "border (partial)", "edge"};
+  for (int i = 0; i < 5; ++i) {
     if (ImGui::RadioButton(labels[i], &mode, i)) selection.set_mode(SelectionMode(i));
     if (i % 2 == 0) ImGui::SameLine(130);
   }
-  ImGui::Text("%zu vertices, %zu faces, %zu borders", selection.vertices().size(), selection.faces().size(),
-              selection.borders().size());
+  ImGui::NewLine();
+  ImGui::Text("%zu vertices, %zu faces, %zu edges, %zu borders", selection.vertices().size(),
+              selection.faces().size(), selection.edges().size(), selection.borders().size());
   if (ImGui::Button("Clear selection")) actions.run(Action::clear_selection);
 }
 
@@ -60,6 +61,21 @@ void draw_stage_section(const ActionRegistry& actions, PipelineSettings& setting
   ImGui::SliderInt("subdivision after offset", &settings.subdivision_after, 0, 4);
 }
 
+// The marker of edits a slider left without their vertices: kept, hidden, back when the slider returns.
+void draw_unresolved(const std::vector<UnresolvedEdit>& unresolved) {
+  if (unresolved.empty()) return;
+  ImGui::TextColored(message_color(MessageLevel::warning), "(!) %zu edits unresolved (hidden, kept)",
+                     unresolved.size());
+  if (!ImGui::IsItemHovered()) return;
+  std::string text = "their vertices are gone at these slider values; they come back with them:";
+  for (const UnresolvedEdit& edit : unresolved) {
+    text += "\n  " + edit.face + ": ";
+    if (edit.missing.empty()) text += "its face is gone";
+    for (const std::string& v : edit.missing) text += v + " ";
+  }
+  ImGui::SetTooltip("%s", text.c_str());
+}
+
 void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& model) {
   if (!is_editable(model.settings.stage))
     ImGui::TextDisabled("%s is computed: edit on scene or merged", to_string(model.settings.stage));
@@ -68,6 +84,10 @@ void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& m
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("through the selected vertices, in click order (Enter)");
   ImGui::SameLine();
   if (ImGui::Button("Delete faces")) actions.run(Action::delete_faces);
+  if (ImGui::Button("Sharp / smooth")) actions.run(Action::toggle_sharp);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("mark the selected edges sharp, or smooth if all are sharp (K)");
+  ImGui::SameLine();
   if (ImGui::Button("Zip borders")) actions.run(Action::zip);
   ImGui::SameLine();
   float penalty = float(model.zipper.triangle_penalty);
@@ -81,9 +101,16 @@ void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& m
   ImGui::SameLine();
   if (ImGui::Button("Clear temporary")) actions.run(Action::clear_temporary);
   ImGui::EndDisabled();
-  if (const Document* document = model.document)
+  if (const Document* document = model.document) {
     ImGui::Text("%zu temporary, %zu consolidated, %zu deleted", document->temporary_faces().size(),
                 document->consolidated_faces().size(), document->deleted_faces().size());
+    draw_unresolved(document->unresolved());
+  }
+  bool is_locked = model.is_parameter_lock_on;
+  if (ImGui::Checkbox("lock generator parameters while editing", &is_locked))
+    actions.run(Action::toggle_parameter_lock);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("on: the sliders do not move while there are edits, so none can lose its vertices");
 }
 
 ControlPanelChanges draw_color_section(const ControlPanelModel& model) {
@@ -107,8 +134,17 @@ ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPan
   ControlPanelChanges changes;
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
     draw_selection_section(actions, model.selection);
-  if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen))
+  if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (model.sif_pairing) {
+      bool is_paired = *model.sif_pairing;
+      if (ImGui::Checkbox("pair triangles into quads (.sif)", &is_paired))
+        actions.run(Action::toggle_sif_pairing);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "report 7.1: convex, nearly planar pairs; fewer extraordinary points when subdividing");
+    }
     draw_stage_section(actions, model.settings);
+  }
   if (ImGui::CollapsingHeader("Edit", ImGuiTreeNodeFlags_DefaultOpen)) draw_edit_section(actions, model);
   if (ImGui::CollapsingHeader("Colours")) changes = draw_color_section(model);
   return changes;

@@ -61,6 +61,8 @@ struct ControlPanelModel {
   EditColors& edit_colors;
   const Document* document;  // none without a file
   bool can_edit;
+  bool is_parameter_lock_on;
+  std::optional<bool> sif_pairing;  // a .sif file is open: whether its triangles are paired
 };
 // What the control panel changed that needs the renderer told.
 struct ControlPanelChanges {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "nome/query/pick.hpp"
+#include "nome/query/pick_edge.hpp"
 
 namespace nome::viewer {
 namespace {
@@ -29,7 +30,15 @@ std::string select_at(Selection& selection, const StageResult& shown, const Tria
                       const ScreenProjection& projection, glm::dvec2 pixel) {
   const Mesh& mesh = *shown.mesh;
   std::string hint;
-  if (selection.mode() == SelectionMode::face) {
+  if (selection.mode() == SelectionMode::edge) {
+    if (const auto edge = pick_edge(mesh, bvh, projection, pixel, pick_pixels)) {
+      selection.click_edge(*edge);
+      const auto [u, w] = mesh.edge(*edge).vertices;
+      hint = "edge (" + mesh.vertex_label(u) + ", " + mesh.vertex_label(w) + ")" +
+             (mesh.edge(*edge).is_sharp ? ", sharp," : "") +
+             (contains(selection.edges(), *edge) ? " selected" : " deselected");
+    }
+  } else if (selection.mode() == SelectionMode::face) {
     if (const auto face = pick_face(bvh, projection, pixel)) {
       selection.click_face(*face);
       hint = "face " + mesh.face_label(*face) +
@@ -76,6 +85,10 @@ void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Sel
   renderer.set_markers(markers);
   std::vector<glm::vec3> points;
   std::vector<std::uint32_t> segments;
+  for (Index e : selection.edges()) {
+    for (Index v : mesh.edge(e).vertices) points.push_back(glm::vec3(mesh.position(v)));
+    segments.insert(segments.end(), {std::uint32_t(points.size() - 2), std::uint32_t(points.size() - 1)});
+  }
   for (const auto& border : selection.borders()) {
     const std::uint32_t first = std::uint32_t(points.size());
     for (Index v : border.vertices) points.push_back(glm::vec3(mesh.position(v)));
@@ -84,6 +97,17 @@ void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Sel
     if (border.is_loop && n > 2) segments.insert(segments.end(), {first + n - 1, first});
   }
   renderer.set_lines(render::Overlay::selection, points, segments);
+}
+
+void show_sharp_edges(render::SceneRenderer& renderer, const Mesh& mesh) {
+  std::vector<glm::vec3> points;
+  std::vector<std::uint32_t> segments;
+  for (const Edge& edge : mesh.edges()) {
+    if (!edge.is_sharp) continue;
+    for (Index v : edge.vertices) points.push_back(glm::vec3(mesh.position(v)));
+    segments.insert(segments.end(), {std::uint32_t(points.size() - 2), std::uint32_t(points.size() - 1)});
+  }
+  renderer.set_lines(render::Overlay::sharp, points, segments);
 }
 
 void show_face_colors(render::SceneRenderer& renderer, const StageResult& shown, const EditColors& colors) {

@@ -30,6 +30,9 @@ BorderSelection zipper_border(const BorderLookup& borders, const Selection::Bord
 void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Selection& selection,
                     const glm::vec3& color);
 
+// The shown mesh's sharp edges, drawn in the display's sharp colour.
+void show_sharp_edges(render::SceneRenderer& renderer, const Mesh& mesh);
+
 // The colours of the temporary and consolidated faces (edits), painted over the stage's own.
 struct EditColors {
   glm::vec3 consolidated{0.62f, 0.42f, 0.86f};

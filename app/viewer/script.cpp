@@ -47,7 +47,7 @@ struct Syntax {
 
 const Syntax syntaxes[] = {
     {"set", ScriptCommand::Kind::set, 1, 1, "set BANK_PARAM VALUE"},
-    {"mode", ScriptCommand::Kind::mode, 1, 0, "mode vertex|face|border|border-partial"},
+    {"mode", ScriptCommand::Kind::mode, 1, 0, "mode vertex|face|border|border-partial|edge"},
     {"click", ScriptCommand::Kind::click, 0, 2, "click X Y (window pixels)"},
     {"double-click", ScriptCommand::Kind::double_click, 0, 2, "double-click X Y (window pixels)"},
     {"key", ScriptCommand::Kind::key, 1, 0, "key LABEL (W, Ctrl+Z, F1, ...)"},
@@ -66,7 +66,7 @@ const Syntax syntaxes[] = {
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 
-const char* const modes[] = {"vertex", "face", "border", "border-partial"};
+const char* const modes[] = {"vertex", "face", "border", "border-partial", "edge"};
 const char* const recovery_answers[] = {"restore", "discard"};
 const char* const unsaved_answers[] = {"save", "discard", "cancel"};
 const char* const scrolled_panels[] = {"controls", "parameters", "log"};
@@ -83,7 +83,8 @@ std::string expected_word(const ScriptCommand& command) {
   using Kind = ScriptCommand::Kind;
   if (command.words.empty()) return {};
   const std::string& word = command.words[0];
-  if (command.kind == Kind::mode && !is_one_of(word, modes)) return "vertex, face, border or border-partial";
+  if (command.kind == Kind::mode && !is_one_of(word, modes))
+    return "vertex, face, border, border-partial or edge";
   if (command.kind == Kind::action && !find_action(word)) return "an action (" + action_names() + ")";
   if (command.kind == Kind::recover && !is_one_of(word, recovery_answers)) return "restore or discard";
   if (command.kind == Kind::prompt && !is_one_of(word, unsaved_answers)) return "save, discard or cancel";

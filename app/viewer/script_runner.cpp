@@ -9,6 +9,7 @@ SelectionMode mode_named(const std::string& word) {
   if (word == "face") return SelectionMode::face;
   if (word == "border") return SelectionMode::border;
   if (word == "border-partial") return SelectionMode::border_partial;
+  if (word == "edge") return SelectionMode::edge;
   return SelectionMode::vertex;
 }
 

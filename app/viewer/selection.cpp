@@ -28,6 +28,8 @@ const char* to_string(SelectionMode mode) {
       return "border";
     case SelectionMode::border_partial:
       return "border-partial";
+    case SelectionMode::edge:
+      return "edge";
   }
   return "vertex";
 }
@@ -45,9 +47,14 @@ void Selection::click_face(Index f) {
   toggle(faces_, f);
 }
 
+void Selection::click_edge(Index e) {
+  toggle(edges_, e);
+}
+
 void Selection::clear() {
   vertices_.clear();
   faces_.clear();
+  edges_.clear();
   borders_.clear();
   pending_.clear();
 }

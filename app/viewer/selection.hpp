@@ -7,7 +7,7 @@
 
 namespace nome::viewer {
 
-enum class SelectionMode { vertex, face, border, border_partial };
+enum class SelectionMode { vertex, face, border, border_partial, edge };
 
 const char* to_string(SelectionMode mode);
 
@@ -23,17 +23,19 @@ class Selection {
 
   void click_vertex(Index v);
   void click_face(Index f);
+  void click_edge(Index e);
   // Border modes act on border vertices only; returns a hint for the status bar when the click did
   // nothing or needs a follow-up ("pick the other end").
   std::string click_border_vertex(const BorderLookup& borders, Index v);
 
   void clear();
   bool is_empty() const {
-    return vertices_.empty() && faces_.empty() && borders_.empty() && pending_.empty();
+    return vertices_.empty() && faces_.empty() && edges_.empty() && borders_.empty() && pending_.empty();
   }
 
   const std::vector<Index>& vertices() const { return vertices_; }
   const std::vector<Index>& faces() const { return faces_; }
+  const std::vector<Index>& edges() const { return edges_; }
   // Whole loops (closed, from the clicked vertex) and partial segments (open, end to end).
   struct Border {
     std::vector<Index> vertices;
@@ -49,6 +51,7 @@ class Selection {
   SelectionMode mode_ = SelectionMode::vertex;
   std::vector<Index> vertices_;
   std::vector<Index> faces_;
+  std::vector<Index> edges_;
   std::vector<Border> borders_;
   std::vector<Index> pending_;
 };

@@ -1,8 +1,13 @@
 #include "viewer/session.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 #include "nome/error.hpp"
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
+#include "nome/io/sif.hpp"
+#include "nome/scene/save_nome.hpp"
 
 namespace nome::viewer {
 namespace {
@@ -15,13 +20,25 @@ std::string name_of(const std::vector<std::string>& names, Index i, const char* 
 
 }  // namespace
 
-Session Session::open(const std::filesystem::path& path) {
+Session Session::open(const std::filesystem::path& path, bool pair_sif_triangles) {
   Session session;
   session.path_ = path;
+  session.pair_sif_triangles_ = pair_sif_triangles;
   session.document_ = is_scene_file(path) ? SceneDocument::from_scene(read_scene(path))
-                                          : SceneDocument::from_polygons(read_polygons(path));
+                                          : SceneDocument::from_polygons(session.read_flat());
   session.update_input();
   return session;
+}
+
+bool Session::is_sif() const {
+  std::string ext = path_.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".sif";
+}
+
+PolygonSoup Session::read_flat() const {
+  if (!is_sif()) return read_polygons(path_);
+  return read_sif(path_, {pair_sif_triangles_, SifOptions{}.max_fold_degrees});
 }
 
 Session Session::restore(const std::filesystem::path& document, const std::filesystem::path& recovery) {
@@ -71,6 +88,16 @@ EditOutcome Session::zipper(const Mesh& displayed, const BorderSelection& a, con
   return changed(document_.edits().zipper(displayed, a, b, options));
 }
 
+EditOutcome Session::set_sharp(const Mesh& displayed, std::span<const Index> edges, bool is_sharp) {
+  std::vector<std::pair<std::string, std::string>> names;
+  for (Index e : edges) {
+    const auto [u, w] = displayed.edge(e).vertices;
+    names.emplace_back(name_of(displayed.vertex_names(), u, "vertex"),
+                       name_of(displayed.vertex_names(), w, "vertex"));
+  }
+  return changed(document_.edits().set_sharp(names, is_sharp));
+}
+
 bool Session::undo() {
   const bool is_done = document_.edits().undo();
   if (is_done) changed({true, {}});
@@ -97,11 +124,19 @@ void Session::set_parameter(const std::string& name, double value) {
   update_input();
 }
 
-std::vector<std::string> Session::save(const std::filesystem::path& path) {
-  std::vector<std::string> left_out = document_.save(path);
+void Session::save(const std::filesystem::path& path) {
+  std::vector<std::string> left_out;
+  const scene::Scene saved = document_.scene_for_saving(&left_out);
+  if (!left_out.empty()) {
+    std::string names;
+    for (const std::string& name : left_out) names += (names.empty() ? "" : ", ") + name;
+    throw InvalidInputError("save: refused, the file would lose " + std::to_string(left_out.size()) +
+                            " edits whose vertices or faces are gone at the current slider values (" + names +
+                            "): move the sliders back until they show, or delete them, then save");
+  }
+  scene::write_nome(saved, path);
   path_ = path;
-  is_modified_ = !left_out.empty();
-  return left_out;
+  is_modified_ = false;
 }
 
 void Session::apply_anom(const std::filesystem::path& path) {
@@ -117,7 +152,7 @@ void Session::reload() {
   if (scene())
     document_.reload(read_scene(path_));
   else
-    document_.reload(read_polygons(path_));
+    document_.reload(read_flat());
   update_input();
 }
 

@@ -17,14 +17,17 @@ namespace nome::viewer {
 // (hierarchical names; `v12`, `f3` for flat files).
 class Session {
  public:
-  // Reads a scene (.nome .nom .slf) or flat geometry (.obj .stl .sif). Throws nome::Error (a SceneError
-  // lists every `file:line:col: message`) when it cannot.
-  static Session open(const std::filesystem::path& path);
+  // Reads a scene (.nome .nom .slf) or flat geometry (.obj .stl .sif; a .sif file's triangles paired
+  // into quads when `pair_sif_triangles`, report 7.1). Throws nome::Error (a SceneError lists every
+  // `file:line:col: message`) when it cannot.
+  static Session open(const std::filesystem::path& path, bool pair_sif_triangles = false);
   // The state a crashed viewer left in a recovery file (a saved scene, see Autosave), as unsaved changes
   // to `document`: saving writes the document.
   static Session restore(const std::filesystem::path& document, const std::filesystem::path& recovery);
 
   const std::filesystem::path& path() const { return path_; }
+  bool is_sif() const;
+  bool are_sif_triangles_paired() const { return pair_sif_triangles_; }
   // What the scene stage shows: the scene without its deleted faces, then the consolidated and the
   // temporary faces (face_parts() says how many of each).
   const PipelineInput& pipeline_input() const { return input_; }
@@ -47,9 +50,10 @@ class Session {
   void set_parameter(const std::string& name, double value);
 
   // Saves the scene with its slider values and the consolidated faces and deletions as .nome
-  // (atomically); the saved file becomes the session's file. Temporary faces are not saved, nor edits
-  // whose vertices are gone at the current slider values: those are returned (they stay in the session).
-  std::vector<std::string> save(const std::filesystem::path& path);
+  // (atomically); the saved file becomes the session's file. Temporary faces are not saved. While an
+  // accepted edit's vertices or face are gone at the current slider values the file could not hold it:
+  // saving is refused (InvalidInputError naming those edits), nothing is written and the edits stay.
+  void save(const std::filesystem::path& path);
   // The scene as save() writes it. Throws InvalidInputError for flat geometry.
   scene::Scene saved_scene() const { return document_.scene_for_saving(); }
 
@@ -61,6 +65,8 @@ class Session {
   EditOutcome delete_faces(const Mesh& displayed, std::span<const Index> faces);
   EditOutcome zipper(const Mesh& displayed, const BorderSelection& a, const BorderSelection& b,
                      const ZipperOptions& options);
+  // Marks the edges of `displayed` sharp (or smooth), by their vertices' names.
+  EditOutcome set_sharp(const Mesh& displayed, std::span<const Index> edges, bool is_sharp);
   bool undo();
   bool redo();
 
@@ -76,7 +82,10 @@ class Session {
   EditOutcome changed(EditOutcome outcome);
   void update_input();
 
+  PolygonSoup read_flat() const;
+
   std::filesystem::path path_;
+  bool pair_sif_triangles_ = false;
   SceneDocument document_;
   PipelineInput input_;
   FaceParts parts_;

@@ -17,7 +17,7 @@ SessionController::SessionController(MessageLog& log, const ViewerStores& stores
 
 bool SessionController::open(const std::filesystem::path& path) {
   try {
-    Session session = Session::open(path);
+    Session session = Session::open(path, pair_sif_triangles_);
     session_.emplace(std::move(session));
     history_.clear();
     recovery_offer_ = autosave_.pending_recovery(path);
@@ -32,6 +32,18 @@ bool SessionController::open(const std::filesystem::path& path) {
     log_.error(e.what());
     return false;
   }
+}
+
+bool SessionController::set_sif_pairing(bool is_on) {
+  if (is_on == pair_sif_triangles_) return true;
+  if (session_ && session_->is_sif() && session_->is_modified()) {
+    log_.error("pair triangles: " + session_->path().filename().string() +
+               " has unsaved edits, which name its faces: undo them first");
+    return false;
+  }
+  pair_sif_triangles_ = is_on;
+  log_.info(std::string(".sif triangles ") + (is_on ? "paired into quads" : "kept as triangles"));
+  return !session_ || !session_->is_sif() || open(session_->path());
 }
 
 bool SessionController::apply_anom(const std::filesystem::path& path) {
@@ -56,18 +68,12 @@ void SessionController::save(const std::optional<std::filesystem::path>& target)
   if (!has_scene()) throw InvalidInputError("save: only scene files (.nome) are saved");
   const std::filesystem::path previous = session_->path();
   const std::filesystem::path path = target ? *target : previous;
-  const std::vector<std::string> left_out = session_->save(path);
+  session_->save(path);
   if (previous != path) autosave_.discard(previous);  // its changes went to the new file
   std::error_code ec;
   file_time_ = std::filesystem::last_write_time(path, ec);
   recent_.add(path);
   log_.info("saved " + path.string());
-  if (!left_out.empty()) {
-    std::string names;
-    for (const std::string& name : left_out) names += (names.empty() ? "" : ", ") + name;
-    log_.warning("not saved, kept in this session: " + std::to_string(left_out.size()) +
-                 " edits whose vertices or faces are gone at the current slider values (" + names + ")");
-  }
 }
 
 bool SessionController::save_logged(const std::optional<std::filesystem::path>& target) {
@@ -84,21 +90,66 @@ bool SessionController::save_logged(const std::optional<std::filesystem::path>& 
   }
 }
 
+namespace {
+
+// The edits of `list` that `other` has not, named with what they miss.
+std::string missing_from(const std::vector<UnresolvedEdit>& list, const std::vector<UnresolvedEdit>& other,
+                         std::size_t& count) {
+  std::string text;
+  count = 0;
+  for (const UnresolvedEdit& edit : list) {
+    const auto is_same = [&](const UnresolvedEdit& o) { return o.face == edit.face; };
+    if (std::any_of(other.begin(), other.end(), is_same)) continue;
+    ++count;
+    std::string missing;
+    for (const std::string& v : edit.missing) missing += (missing.empty() ? "" : " ") + v;
+    text += (text.empty() ? "" : ", ") + edit.face +
+            (missing.empty() ? " (its face is gone)" : " (missing " + missing + ")");
+  }
+  return text;
+}
+
+}  // namespace
+
+bool SessionController::are_parameters_locked() const {
+  if (!is_parameter_lock_on_ || !session_) return false;
+  const Document& d = session_->document();
+  return !d.consolidated_faces().empty() || !d.temporary_faces().empty() || !d.deleted_faces().empty();
+}
+
+void SessionController::report_unresolved(const std::vector<UnresolvedEdit>& before) {
+  const std::vector<UnresolvedEdit> after = session_->document().unresolved();
+  std::size_t count = 0;
+  if (const std::string lost = missing_from(after, before, count); count > 0)
+    log_.warning(std::to_string(count) + " edits lost their vertices at these slider values; kept, hidden, " +
+                 "until the sliders bring them back (save refuses until then): " + lost);
+  if (const std::string back = missing_from(before, after, count); count > 0)
+    log_.info(std::to_string(count) + " edits back with their vertices: " + back);
+}
+
 void SessionController::set_parameter(const std::string& name, double value) {
   if (!session_) throw InvalidInputError("set: no file is open");
+  if (are_parameters_locked())
+    throw InvalidInputError("set " + name + ": the sliders are locked while editing (uncheck \"lock " +
+                            "generator parameters while editing\" to move them)");
   const scene::Scene* scene = session_->scene();
   const std::optional<Index> id = scene ? scene->find_parameter(name) : std::nullopt;
   const double before = id ? scene->parameters()[*id].value : 0.0;
+  const std::vector<UnresolvedEdit> unresolved = session_->document().unresolved();
   session_->set_parameter(name, value);
+  report_unresolved(unresolved);
   if (id) history_.push(slider_step({{*id, before}}, {{*id, value}}));
 }
 
 bool SessionController::apply_moves(const std::vector<std::pair<Index, double>>& moves) {
+  const std::vector<UnresolvedEdit> unresolved = session_->document().unresolved();
   try {
     for (const auto& [parameter, value] : moves) session_->set_parameter(parameter, value);
+    report_unresolved(unresolved);
     return true;
   } catch (const std::exception& e) {
     log_.error(e.what());
+    report_unresolved(unresolved);
     return false;
   }
 }
@@ -113,6 +164,12 @@ UndoHistory::Step SessionController::slider_step(std::vector<std::pair<Index, do
 
 void SessionController::move_sliders(const std::vector<std::pair<Index, double>>& moves, bool continues) {
   if (!session_ || !session_->scene() || moves.empty()) return;
+  if (are_parameters_locked()) {
+    log_.warning(
+        "the sliders are locked while editing (uncheck \"lock generator parameters while editing\" "
+        "to move them)");
+    return;
+  }
   std::vector<std::pair<Index, double>> before, done;
   for (const auto& [parameter, value] : moves) {
     const double old = session_->scene()->parameters()[parameter].value;
@@ -137,6 +194,12 @@ bool SessionController::edit(Action action, const StageResult* shown, const Sele
     outcome = session_->clear_temporary();
   } else if (action == Action::add_polygon) {
     outcome = session_->add_polygon(*shown->mesh, selection.vertices());
+  } else if (action == Action::toggle_sharp) {
+    // Smooth when every selected edge is sharp already, sharp otherwise.
+    const auto& edges = selection.edges();
+    const bool are_all_sharp =
+        std::all_of(edges.begin(), edges.end(), [&](Index e) { return shown->mesh->edge(e).is_sharp; });
+    outcome = session_->set_sharp(*shown->mesh, edges, !are_all_sharp);
   } else if (action == Action::delete_faces) {
     outcome = session_->delete_faces(*shown->mesh, selection.faces());
   } else if (action == Action::zip) {

@@ -48,15 +48,24 @@ class SessionController {
 
   // Opens a file; on error logs it, keeps the current one and returns false.
   bool open(const std::filesystem::path& path);
+  // Whether .sif files open with their triangles paired into quads (report 7.1; on unless `--triangles`).
+  // Changing it reopens an open .sif file, unless it has unsaved edits (logged; returns false).
+  bool set_sif_pairing(bool is_on);
+  bool is_sif_pairing_on() const { return pair_sif_triangles_; }
   // An .anom file applies to the open scene instead of replacing it. Returns whether it applied.
   bool apply_anom(const std::filesystem::path& path);
   // Saves the scene to `target` (the session's file when none); throws Error on failure.
   void save(const std::optional<std::filesystem::path>& target);
   // save() with the error logged; returns whether it saved.
   bool save_logged(const std::optional<std::filesystem::path>& target);
-  // Moves a slider (a step of the undo history); throws InvalidInputError for an unknown name or a value
-  // out of range.
+  // Moves a slider (a step of the undo history); throws InvalidInputError for an unknown name, a value
+  // out of range, or while the sliders are locked.
   void set_parameter(const std::string& name, double value);
+  // The report's lock, as an option: "lock generator parameters while editing". While it is on and the
+  // document has edits, slider moves are refused (with a log line) so that no edit can lose its vertices.
+  void set_parameter_lock(bool is_on) { is_parameter_lock_on_ = is_on; }
+  bool is_parameter_lock_on() const { return is_parameter_lock_on_; }
+  bool are_parameters_locked() const;
   // The panel's slider moves of one frame, one undo step (errors logged); `continues`: the same drag as
   // the last step's, which it merges into.
   void move_sliders(const std::vector<std::pair<Index, double>>& moves, bool continues);
@@ -90,7 +99,12 @@ class SessionController {
   std::optional<std::filesystem::path> recovery_offer_;
   UndoHistory history_;
 
+  bool is_parameter_lock_on_ = false;
+  bool pair_sif_triangles_ = true;
+
   bool apply_moves(const std::vector<std::pair<Index, double>>& moves);
+  // Logs the edits a slider move left without their vertices (kept, hidden) and those it brought back.
+  void report_unresolved(const std::vector<UnresolvedEdit>& before);
   UndoHistory::Step slider_step(std::vector<std::pair<Index, double>> before,
                                 std::vector<std::pair<Index, double>> after);
 };

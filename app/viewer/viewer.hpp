@@ -12,7 +12,8 @@ struct ViewerOptions {
   std::optional<std::filesystem::path> script;    // replayed one command per frame, then the window stays
   int width = 1280;
   int height = 800;
-  bool has_size = false;  // --size given: otherwise the window opens at the size it last had
+  bool has_size = false;           // --size given: otherwise the window opens at the size it last had
+  bool pair_sif_triangles = true;  // .sif triangles paired into quads (`--triangles`: not)
 };
 
 // Opens the window and runs until the user (or the script) quits. Returns the exit status: 0, or 1 when

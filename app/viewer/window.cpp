@@ -30,6 +30,7 @@ Window::Window(Platform& platform, render::SceneRenderer& renderer, const Viewer
       should_close_ = true;
     }
   }
+  sessions_.set_sif_pairing(options.pair_sif_triangles);
   if (options.file) open(*options.file);
   if (options.file && !sessions_.has_session()) exit_status_ = 1;
   for (const std::filesystem::path& anom : options.anom_files) drop({anom});
@@ -274,8 +275,10 @@ void Window::show_result(StageResult result) {
 }
 
 void Window::refresh_selection() {
-  if (const Mesh* mesh = stage_.shown_mesh())
+  if (const Mesh* mesh = stage_.shown_mesh()) {
     show_selection(renderer_, *mesh, selection_, display_.selection_color);
+    show_sharp_edges(renderer_, *mesh);
+  }
 }
 
 void Window::frame_all() {

@@ -71,6 +71,7 @@ class Window : private ScriptHost {
   // What tests look at.
   const MessageLog& log() const { return log_; }
   const Selection& selection() const { return selection_; }
+  const SessionController& sessions() const { return sessions_; }
   const StageResult* shown() const { return stage_.shown(); }
   const render::Camera& camera() const { return view_.camera(); }
   const render::DisplaySettings& display() const { return display_; }
@@ -86,6 +87,8 @@ class Window : private ScriptHost {
   void open_browser(Action action);
   bool edit(Action action);
   bool can_edit() const;
+  // Whether the open .sif file's triangles are paired; none when no .sif file is open.
+  std::optional<bool> sif_pairing() const;
   // window.cpp
   void handle_mouse(const InputFrame& input);
   void update_stage();

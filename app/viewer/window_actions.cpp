@@ -90,8 +90,23 @@ void Window::bind_actions() {
                   refresh_selection();
                 }));
   actions_.bind(Action::merge, always([this] { stage_.settings().stage = Stage::merged; }));
+  actions_.bind(Action::toggle_sif_pairing, [this] {
+    if (!sessions_.set_sif_pairing(!sessions_.is_sif_pairing_on())) return false;
+    // A reopened .sif file is a new session: what was shown and picked belongs to the old one.
+    if (sif_pairing()) {
+      selection_.clear();
+      stage_.clear();
+    }
+    return true;
+  });
+  actions_.bind(
+      Action::toggle_parameter_lock, always([this] {
+        sessions_.set_parameter_lock(!sessions_.is_parameter_lock_on());
+        log_.info(std::string("generator parameters ") +
+                  (sessions_.is_parameter_lock_on() ? "locked while the document has edits" : "free"));
+      }));
   for (Action action : {Action::add_polygon, Action::accept, Action::clear_temporary, Action::delete_faces,
-                        Action::zip, Action::undo, Action::redo})
+                        Action::zip, Action::toggle_sharp, Action::undo, Action::redo})
     actions_.bind(action, [this, action] { return edit(action); });
 }
 
@@ -114,17 +129,27 @@ bool Window::can_edit() const {
   return sessions_.has_session() && stage_.shown() && is_editable(stage_.settings().stage);
 }
 
+std::optional<bool> Window::sif_pairing() const {
+  const Session* session = sessions_.session();
+  if (!session || !session->is_sif()) return std::nullopt;
+  return session->are_sif_triangles_paired();
+}
+
 bool Window::edit(Action action) {
   const std::string name = action_name(action);
   if (!sessions_.has_session()) {
     log_.error(name + ": no file is open");
     return false;
   }
-  const bool is_on_selection =
-      action == Action::add_polygon || action == Action::delete_faces || action == Action::zip;
+  const bool is_on_selection = action == Action::add_polygon || action == Action::delete_faces ||
+                               action == Action::zip || action == Action::toggle_sharp;
   if (is_on_selection && !can_edit()) {
     log_.error(name + ": the " + to_string(stage_.settings().stage) +
                " stage is computed from the scene; switch to the scene or merged stage to edit");
+    return false;
+  }
+  if (action == Action::toggle_sharp && selection_.edges().empty()) {
+    log_.error("sharp: select edges first (edge mode: click near an edge)");
     return false;
   }
   if (action == Action::zip && selection_.borders().size() != 2) {

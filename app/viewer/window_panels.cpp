@@ -109,9 +109,9 @@ void Window::draw_sidebars() {
   if (layout_settings_.is_left_shown) {
     report_.panels.push_back({"controls", layout_.left});
     if (begin_docked_panel("Controls", layout_.left, &width, take_scroll(ScrolledPanel::controls))) {
-      const ControlPanelChanges changes =
-          draw_control_panel(actions_, {selection_, stage_.settings(), zipper_options_, display_, rim_color_,
-                                        edit_colors_, sessions_.document(), can_edit()});
+      const ControlPanelChanges changes = draw_control_panel(
+          actions_, {selection_, stage_.settings(), zipper_options_, display_, rim_color_, edit_colors_,
+                     sessions_.document(), can_edit(), sessions_.is_parameter_lock_on(), sif_pairing()});
       if (changes.is_selection_changed) refresh_selection();
       if (changes.is_edit_color_changed && stage_.shown())
         show_face_colors(renderer_, *stage_.shown(), edit_colors_);
@@ -127,9 +127,13 @@ void Window::draw_sidebars() {
     if (const StageResult* shown = stage_.shown())
       if (ImGui::CollapsingHeader("Topology", ImGuiTreeNodeFlags_DefaultOpen))
         draw_topology_section(shown->topology, shown_size_);
-    if (const scene::Scene* scene = sessions_.scene())
+    if (const scene::Scene* scene = sessions_.scene()) {
+      const bool is_locked = sessions_.are_parameters_locked();
+      if (is_locked) ImGui::TextDisabled("locked while editing (Controls > Edit)");
+      ImGui::BeginDisabled(is_locked);
       moves = draw_parameter_section(*scene, selection_parameters(*scene), parameters_, report_);
-    else
+      ImGui::EndDisabled();
+    } else
       ImGui::TextDisabled("no sliders: open a scene (.nome)");
   }
   ImGui::End();

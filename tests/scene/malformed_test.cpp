@@ -37,9 +37,10 @@ TEST_CASE("malformed scenes: each error says where and what was expected", "[sce
        "t.nome:1:1: expected a statement (bank, surface, point, polyline, face, object, funnel, tunnel, "
        "circle, mobiusstrip, sphere, ellipsoid, cylinder, cone, disk, torus, torusknot, helix, spiral, "
        "hyperboloid, dupin, gencartesiansurf, genparametricsurf, genimplicitsurf, mesh, group, instance, "
-       "delete, consolidate, include, subdivision, offset, boundary, camera, light, window, viewport, "
+       "delete, consolidate, sharpedges, include, subdivision, offset, boundary, camera, light, window, "
+       "viewport, "
        "frontcolor, backcolor, backgroundcolor, backface, controlpoint, beziercurve, bspline, sweep, "
-       "sweepmorph, morphvisualizer), found 'frobnicate'"},
+       "sweepmorph, morphvisualizer, ribbon), found 'frobnicate'"},
       {"bank b set n 8 3 10 endbank\n", "t.nome:1:21: expected a number, found 'endbank'"},
       {"(* never closed\n", "t.nome:1:1: unclosed comment: '(*' without '*)'"},
       {"point p (1e 2 3) endpoint\n", "t.nome:1:10: malformed number '1e'"},

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace nome {
 
@@ -18,10 +20,21 @@ class InvalidInputError : public Error {
   using Error::Error;
 };
 
-// The polygons do not form a 2-manifold (the message names the elements).
+// The polygons do not form a 2-manifold (the message names the elements). build_mesh also lists each
+// problem with the face it is about, so that a caller knowing where faces come from can locate them.
 class TopologyError : public Error {
  public:
+  struct Problem {
+    std::string text;
+    std::uint32_t face = std::uint32_t(-1);  // none: a problem of a vertex alone
+  };
   using Error::Error;
+  TopologyError(const std::string& what, std::vector<Problem> problems)
+      : Error(what), problems_(std::move(problems)) {}
+  const std::vector<Problem>& problems() const { return problems_; }
+
+ private:
+  std::vector<Problem> problems_;
 };
 
 // Reading or writing a file failed, or a file's content is malformed.

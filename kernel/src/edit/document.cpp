@@ -18,6 +18,16 @@ void erase_at(std::vector<T>& list, const std::vector<std::pair<size_t, T>>& rem
   for (auto it = removed.rbegin(); it != removed.rend(); ++it) list.erase(list.begin() + long(it->first));
 }
 
+// Adds the edges to `marked`, or takes them out.
+void mark_sharp(std::vector<std::pair<std::string, std::string>>& marked,
+                const std::vector<std::pair<std::string, std::string>>& edges, bool is_sharp) {
+  for (const auto& edge : edges) {
+    const auto at = std::find(marked.begin(), marked.end(), edge);
+    if (is_sharp && at == marked.end()) marked.push_back(edge);
+    if (!is_sharp && at != marked.end()) marked.erase(at);
+  }
+}
+
 template <typename T>
 void insert_at(std::vector<T>& list, const std::vector<std::pair<size_t, T>>& removed) {
   for (const auto& [at, item] : removed) list.insert(list.begin() + long(at), item);
@@ -56,8 +66,10 @@ void Document::index_scene() {
 }
 
 void Document::load_edits(const std::vector<std::vector<std::string>>& consolidated,
-                          std::vector<std::string> deleted) {
+                          std::vector<std::string> deleted,
+                          std::vector<std::pair<std::string, std::string>> sharp_edges) {
   temporary_.clear();
+  sharp_ = std::move(sharp_edges);
   consolidated_.clear();
   for (const auto& vertices : consolidated) consolidated_.push_back({next_face_name(), vertices});
   deleted_ = std::move(deleted);
@@ -198,6 +210,33 @@ EditOutcome Document::delete_faces(const std::vector<std::string>& face_names) {
   return {true, std::to_string(count) + (count == 1 ? " face" : " faces") + " deleted"};
 }
 
+EditOutcome Document::set_sharp(const std::vector<std::pair<std::string, std::string>>& edges,
+                                bool is_sharp) {
+  SetSharp command{{}, is_sharp};
+  for (auto [a, b] : edges) {
+    if (b < a) std::swap(a, b);
+    const Index u = vertex_id(a), w = vertex_id(b);
+    if (u == no_index || w == no_index) return {false, "no vertex named " + (u == no_index ? a : b)};
+    const std::string edge = "(" + a + ", " + b + ")";
+    if (!scene_edge_faces_.count(edge_key(u, w)))
+      return {false, edge + " is no edge of the scene's faces (an added face's edges cannot be sharp yet)"};
+    const bool is_in_text = std::any_of(scene_.sharp_edges.begin(), scene_.sharp_edges.end(), [&](auto p) {
+      return edge_key(p.first, p.second) == edge_key(u, w);
+    });
+    if (!is_sharp && is_in_text)
+      return {false, edge + " is sharp in the scene's text: change its `sharp` there"};
+    const bool is_marked =
+        is_in_text || std::find(sharp_.begin(), sharp_.end(), std::pair{a, b}) != sharp_.end();
+    if (is_marked != is_sharp) command.edges.emplace_back(a, b);
+  }
+  const size_t count = command.edges.size();
+  if (count == 0)
+    return {false, std::string("the edges are ") + (is_sharp ? "sharp" : "smooth") + " already"};
+  execute(std::move(command));
+  return {true, std::to_string(count) + (count == 1 ? " edge" : " edges") + " marked " +
+                    (is_sharp ? "sharp" : "smooth")};
+}
+
 void Document::execute(Command command) {
   history_.resize(done_);
   history_.push_back(std::move(command));
@@ -225,6 +264,8 @@ void Document::apply(const Command& command) {
     temporary_.clear();
   } else if (std::holds_alternative<ClearTemporary>(command)) {
     temporary_.clear();
+  } else if (const auto* sharp = std::get_if<SetSharp>(&command)) {
+    mark_sharp(sharp_, sharp->edges, sharp->is_sharp);
   } else {
     const auto& del = std::get<DeleteFaces>(command);
     erase_at(temporary_, del.temporary);
@@ -241,6 +282,8 @@ void Document::revert(const Command& command) {
     consolidated_.resize(consolidated_.size() - accept->count);
   } else if (const auto* clear = std::get_if<ClearTemporary>(&command)) {
     temporary_ = clear->faces;
+  } else if (const auto* sharp = std::get_if<SetSharp>(&command)) {
+    mark_sharp(sharp_, sharp->edges, !sharp->is_sharp);
   } else {
     const auto& del = std::get<DeleteFaces>(command);
     deleted_.resize(deleted_.size() - del.scene_faces.size());
@@ -261,6 +304,12 @@ std::vector<UnresolvedEdit> Document::unresolved() const {
   }
   for (const std::string& name : deleted_)
     if (!face_ids_.count(name)) out.push_back({name, {}});
+  for (const auto& [a, b] : sharp_) {
+    UnresolvedEdit edit{"sharp (" + a + ", " + b + ")", {}};
+    for (const std::string* name : {&a, &b})
+      if (vertex_id(*name) == no_index) edit.missing.push_back(*name);
+    if (!edit.missing.empty()) out.push_back(std::move(edit));
+  }
   return out;
 }
 
@@ -270,8 +319,19 @@ PolygonSoup Document::scene_soup() const {
   soup.positions = scene_.positions;
   soup.vertex_names = scene_.vertex_names;
   soup.sharp_edges = scene_.sharp_edges;
+  soup.sharp_edge_weights = scene_.sharp_edge_weights;
+  soup.sharp_vertices = scene_.sharp_vertices;
+  for (const auto& [a, b] : sharp_) {
+    const Index u = vertex_id(a), w = vertex_id(b);
+    if (u == no_index || w == no_index || !scene_edge_faces_.count(edge_key(u, w))) continue;
+    if (!soup.sharp_edge_weights.empty()) soup.sharp_edge_weights.push_back(infinite_sharpness);
+    soup.sharp_edges.emplace_back(u, w);
+  }
+  const std::unordered_set<Index> holes(scene_.hole_faces.begin(), scene_.hole_faces.end());
   for (Index f = 0; f < scene_.num_faces(); ++f) {
     if (f < scene_.face_names.size() && deleted.count(scene_.face_names[f])) continue;
+    if (holes.count(f)) soup.hole_faces.push_back(soup.num_faces());
+    soup.note_origin(scene_.origin(f));
     soup.add_face(std::span(scene_.face_vertices)
                       .subspan(scene_.face_offsets[f], scene_.face_offsets[f + 1] - scene_.face_offsets[f]));
     if (!scene_.face_names.empty()) soup.face_names.push_back(scene_.face_names[f]);

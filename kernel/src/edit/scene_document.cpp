@@ -29,11 +29,13 @@ void SceneDocument::set_scene(scene::Scene scene) {
   for (std::vector<std::string>& face : consolidated)
     for (std::string& name : face) name = scene.resolve_vertex_name(name);
   std::vector<std::string> deleted = scene.deleted_faces();
+  std::vector<std::pair<std::string, std::string>> sharp = scene.sharp_edits();
   scene.set_consolidated_faces({});
   scene.set_deleted_faces({});
+  scene.set_sharp_edits({});
   scene_.emplace(std::move(scene));
   document_.set_scene_geometry(scene_->combined_soup());
-  document_.load_edits(consolidated, std::move(deleted));
+  document_.load_edits(consolidated, std::move(deleted), std::move(sharp));
 }
 
 std::vector<Index> SceneDocument::set_parameter(Index parameter, double value) {
@@ -64,10 +66,11 @@ void SceneDocument::apply_anom(std::string_view text, const std::string& file) {
   scene::Scene next = *scene_;
   next.apply_anom(text, file);
   std::vector<std::string> deleted = document_.deleted_faces();
+  std::vector<std::pair<std::string, std::string>> sharp = document_.sharp_edges();
   set_scene(std::move(next));
   std::vector<std::vector<std::string>> consolidated;
   for (const EditedFace& face : document_.consolidated_faces()) consolidated.push_back(face.vertices);
-  document_.load_edits(consolidated, std::move(deleted));
+  document_.load_edits(consolidated, std::move(deleted), std::move(sharp));
 }
 
 void SceneDocument::reload(scene::Scene fresh) {
@@ -83,6 +86,7 @@ void SceneDocument::reload(scene::Scene fresh) {
   // The file's own edits are those the document holds already.
   fresh.set_consolidated_faces({});
   fresh.set_deleted_faces({});
+  fresh.set_sharp_edits({});
   scene_.emplace(std::move(fresh));
   document_.set_scene_geometry(scene_->combined_soup());
 }
@@ -114,11 +118,15 @@ scene::Scene SceneDocument::scene_for_saving(std::vector<std::string>* left_out)
   std::vector<std::string> deleted;
   for (const std::string& name : document_.deleted_faces())
     if (keep(name)) deleted.push_back(name);
+  std::vector<std::pair<std::string, std::string>> sharp;
+  for (const auto& [a, b] : document_.sharp_edges())
+    if (keep("sharp (" + a + ", " + b + ")")) sharp.emplace_back(a, b);
   if (left_out) *left_out = std::move(skipped);
 
   scene::Scene out = *scene_;
   out.set_consolidated_faces(std::move(consolidated));
   out.set_deleted_faces(std::move(deleted));
+  out.set_sharp_edits(sharp);
   return out;
 }
 

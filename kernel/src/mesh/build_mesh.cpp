@@ -14,22 +14,23 @@ namespace {
 // Collects topology problems so one error can name several elements.
 class Problems {
  public:
-  void add(std::string message) {
-    if (messages_.size() < max_listed) messages_.push_back(std::move(message));
+  // A problem about `face` (no_index: about a vertex alone).
+  void add(std::string message, Index face) {
+    if (messages_.size() < max_listed) messages_.push_back({std::move(message), face});
     ++count_;
   }
   void throw_if_any() const {
     if (count_ == 0) return;
     std::ostringstream out;
-    out << "build_mesh: not a 2-manifold: " << messages_.front();
-    for (size_t i = 1; i < messages_.size(); ++i) out << "; " << messages_[i];
+    out << "build_mesh: not a 2-manifold: " << messages_.front().text;
+    for (size_t i = 1; i < messages_.size(); ++i) out << "; " << messages_[i].text;
     if (count_ > messages_.size()) out << "; and " << (count_ - messages_.size()) << " more";
-    throw TopologyError(out.str());
+    throw TopologyError(out.str(), messages_);
   }
 
  private:
   static constexpr size_t max_listed = 8;
-  std::vector<std::string> messages_;
+  std::vector<TopologyError::Problem> messages_;
   size_t count_ = 0;
 };
 
@@ -85,17 +86,18 @@ void check_faces(const PolygonSoup& soup, const Labels& labels, Problems& proble
     const Index b = soup.face_offsets[f], e = soup.face_offsets[f + 1];
     if (e < b) throw InvalidInputError("build_mesh: face_offsets are not increasing");
     if (e - b < 3) {
-      problems.add("face " + labels.face(f) + " has " + std::to_string(e - b) +
-                   " vertices (at least 3 needed)");
+      problems.add(
+          "face " + labels.face(f) + " has " + std::to_string(e - b) + " vertices (at least 3 needed)", f);
       continue;
     }
     for (Index c = b; c < e; ++c) {
       const Index v = soup.face_vertices[c];
       if (v >= nv) {
         problems.add("face " + labels.face(f) + " refers to vertex " + std::to_string(v) +
-                     " but there are only " + std::to_string(nv) + " vertices");
+                         " but there are only " + std::to_string(nv) + " vertices",
+                     f);
       } else if (stamp[v] == f) {
-        problems.add("face " + labels.face(f) + " repeats vertex " + labels.vertex(v));
+        problems.add("face " + labels.face(f) + " repeats vertex " + labels.vertex(v), f);
       } else {
         stamp[v] = f;
       }
@@ -104,7 +106,7 @@ void check_faces(const PolygonSoup& soup, const Labels& labels, Problems& proble
   for (size_t i = 0; i < soup.positions.size(); ++i) {
     const Vec3& p = soup.positions[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      problems.add("vertex " + labels.vertex(Index(i)) + " has a non-finite position");
+      problems.add("vertex " + labels.vertex(Index(i)) + " has a non-finite position", no_index);
   }
 }
 
@@ -145,8 +147,9 @@ void find_edges(MeshArrays& m, Index nv, const Labels& labels, Problems& problem
         Edge& edge = m.edges[e];
         if (edge.faces[1] != no_index) {
           problems.add("edge (" + labels.vertex(edge.vertices[0]) + ", " + labels.vertex(edge.vertices[1]) +
-                       ") has a third face " + labels.face(m.corner_faces[c]) + " besides " +
-                       labels.face(edge.faces[0]) + " and " + labels.face(edge.faces[1]));
+                           ") has a third face " + labels.face(m.corner_faces[c]) + " besides " +
+                           labels.face(edge.faces[0]) + " and " + labels.face(edge.faces[1]),
+                       m.corner_faces[c]);
           continue;
         }
         edge.faces[1] = m.corner_faces[c];
@@ -235,7 +238,8 @@ void find_fans(MeshArrays& m, Index nv, const Labels& labels, Problems& problems
     if (k == 0) continue;
     if (!walk_fan(m, v, std::span<const Index>(vertex_corner_list.data() + b, k), visited))
       problems.add("vertex " + labels.vertex(v) + ": its " + std::to_string(k) +
-                   " faces do not form one fan (the surface touches itself there)");
+                       " faces do not form one fan (the surface touches itself there)",
+                   m.corner_faces[vertex_corner_list[b]]);
     m.fan_edge_offsets[v + 1] = static_cast<Index>(m.fan_edges.size());
   }
 }

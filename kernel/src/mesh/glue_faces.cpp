@@ -59,8 +59,13 @@ GluedFaces glue_faces(const PolygonSoup& soup) {
       parent[find(parent, c1)] = find(parent, same_way ? c2 : next(c2));
       parent[find(parent, next(c1))] = find(parent, same_way ? next(c2) : c2);
     } else if (end - i > 2) {
-      out.problems.push_back("edge (" + label(half_edges[i].low) + ", " + label(half_edges[i].high) +
-                             ") has " + std::to_string(end - i) + " faces");
+      const Index face =
+          Index(std::upper_bound(soup.face_offsets.begin(), soup.face_offsets.end(), half_edges[i].corner) -
+                soup.face_offsets.begin() - 1);
+      const std::string& where = soup.origin(face);
+      out.problems.push_back((where.empty() ? "" : where + ": ") + "edge (" + label(half_edges[i].low) +
+                             ", " + label(half_edges[i].high) + ") has " + std::to_string(end - i) +
+                             " faces");
     }
     i = end;
   }

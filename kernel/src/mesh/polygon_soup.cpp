@@ -1,9 +1,20 @@
 #include "nome/mesh/polygon_soup.hpp"
 
+#include <algorithm>
+
 namespace nome {
 
 void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   const Index base = into.num_vertices(), corner_base = Index(into.face_vertices.size());
+  // The origins first, while into.num_faces() is where the part's faces will start.
+  if (part.face_origins.empty() || part.face_origins.front().first_face != 0) into.note_origin({});
+  const Index face_base = into.num_faces();
+  for (const FaceOrigin& o : part.face_origins) {
+    if (!into.face_origins.empty() && into.face_origins.back().first_face == o.first_face + face_base)
+      into.face_origins.back().where = o.where;
+    else
+      into.face_origins.push_back({o.first_face + face_base, o.where});
+  }
   const bool has_names = !into.vertex_names.empty() || !part.vertex_names.empty();
   const bool has_face_names = !into.face_names.empty() || !part.face_names.empty();
   const bool has_colors = !into.face_colors.empty() || !part.face_colors.empty();
@@ -38,6 +49,22 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   for (auto [v, w] : part.sharp_vertices) into.sharp_vertices.emplace_back(v + base, w);
   const Index face_base = into.num_faces() - part.num_faces();
   for (Index f : part.hole_faces) into.hole_faces.push_back(f + face_base);
+}
+
+void PolygonSoup::note_origin(const std::string& where) {
+  const Index next = num_faces();
+  if (face_origins.empty() ? where.empty() : face_origins.back().where == where) return;
+  if (!face_origins.empty() && face_origins.back().first_face == next)
+    face_origins.back().where = where;
+  else
+    face_origins.push_back({next, where});
+}
+
+const std::string& PolygonSoup::origin(Index f) const {
+  static const std::string unknown;
+  const auto after = std::upper_bound(face_origins.begin(), face_origins.end(), f,
+                                      [](Index face, const FaceOrigin& o) { return face < o.first_face; });
+  return after == face_origins.begin() ? unknown : std::prev(after)->where;
 }
 
 }  // namespace nome

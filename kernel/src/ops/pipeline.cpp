@@ -67,7 +67,7 @@ void Pipeline::input_changed(int change) {
   solid_change_ = std::max(solid_change_, change);
   result_ = nullptr;
   input_warnings_.clear();
-  for (const std::string& p : scene_->problems()) input_warnings_.push_back("scene: " + p);
+  input_warnings_ = scene_->problems();
 }
 
 void Pipeline::set_input(PipelineInput input) {

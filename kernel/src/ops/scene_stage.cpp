@@ -5,6 +5,7 @@
 
 #include "nome/error.hpp"
 #include "nome/mesh/glue_faces.hpp"
+#include "ops/located_problems.hpp"
 
 namespace nome {
 namespace {
@@ -33,7 +34,8 @@ PolygonSoup part_of(const PolygonSoup& soup, Index first, Index count) {
 Mesh build_naming_the_part(const PipelineInput& input) {
   try {
     return build_mesh(PolygonSoup(input.soup));
-  } catch (const TopologyError&) {
+  } catch (const TopologyError& e) {
+    if (std::optional<TopologyError> located = located_error(e, input.soup)) throw *located;
     if (input.parts.empty()) throw;
     Index first = 0;
     for (const InputPart& part : input.parts) {
@@ -84,7 +86,7 @@ std::optional<GluedFaces> split_touching_vertices(const PipelineInput& input,
   std::string list;
   for (size_t i = 0; i < names.size() && i < names_shown; ++i) list += (i ? ", " : "") + names[i];
   if (names.size() > names_shown) list += " and " + std::to_string(names.size() - names_shown) + " more";
-  warnings.push_back("faces meet at " + std::to_string(names.size()) +
+  warnings.push_back("scene: faces meet at " + std::to_string(names.size()) +
                      " vertices without sharing an edge there (" + list +
                      "): each is split, one vertex per fan of faces");
   return glued;
@@ -151,10 +153,17 @@ InputChange SceneStage::move_vertices(Buffer<Vec3> positions) {
 void SceneStage::rebuild(PipelineInput input) {
   problems_.clear();
   if (input.joining == Joining::across_edges) {
-    GluedFaces glued = glue_faces(input.soup);
+    GluedFaces glued;
+    try {
+      glued = glue_faces(input.soup);
+    } catch (const TopologyError& e) {
+      if (std::optional<TopologyError> located = located_error(e, input.soup)) throw *located;
+      throw;
+    }
     mesh_ = std::move(glued.mesh);
     vertex_sources_ = std::move(glued.vertex_sources);
-    problems_ = std::move(glued.problems);
+    for (std::string& p : glued.problems)
+      problems_.push_back(input.soup.face_origins.empty() ? "scene: " + p : std::move(p));
   } else {
     try {
       mesh_ = build_naming_the_part(input);
@@ -166,6 +175,7 @@ void SceneStage::rebuild(PipelineInput input) {
       vertex_sources_ = std::move(split->vertex_sources);
     }
   }
+  for (std::string& w : coinciding_vertex_warnings(mesh_, input.soup)) problems_.push_back(std::move(w));
   has_mesh_ = true;
   work_ = StageWork::rebuilt;
 }

@@ -1,6 +1,8 @@
 // The placements of each top-level instance joined into its geometry (deleted faces left out), and all
 // top-level instances as one soup.
 #include <algorithm>
+#include <cstdint>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "nome/assert.hpp"
@@ -38,6 +40,7 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
     corners.clear();
     for (Index c = s.face_offsets[f]; c < s.face_offsets[f + 1]; ++c)
       corners.push_back(new_id[s.face_vertices[c]]);
+    out.soup.note_origin(s.origin(f));
     out.add_face(corners, s.face_names[f]);
     out.soup.face_colors.back() = s.face_colors[f];
     out.face_has_color.back() = piece.face_has_color[f];
@@ -62,6 +65,26 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
     out.rims.push_back(std::move(rim));
   }
   return has_color;
+}
+
+// The named vertex pairs that are edges of the soup's faces, marked sharp; the others (a slider took a
+// vertex away) are left out.
+void mark_sharp_edges(PolygonSoup& soup, const std::vector<std::pair<std::string, std::string>>& edges) {
+  std::unordered_map<std::string, Index> ids;
+  for (Index v = 0; v < soup.vertex_names.size(); ++v) ids.emplace(soup.vertex_names[v], v);
+  std::unordered_set<std::uint64_t> face_edges;
+  const auto key = [](Index u, Index w) { return (std::uint64_t(std::min(u, w)) << 32) | std::max(u, w); };
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    const Index b = soup.face_offsets[f], e = soup.face_offsets[f + 1];
+    for (Index c = b; c < e; ++c)
+      face_edges.insert(key(soup.face_vertices[c], soup.face_vertices[c + 1 == e ? b : c + 1]));
+  }
+  for (const auto& [a, b] : edges) {
+    const auto u = ids.find(a), w = ids.find(b);
+    if (u == ids.end() || w == ids.end() || !face_edges.count(key(u->second, w->second))) continue;
+    if (!soup.sharp_edge_weights.empty()) soup.sharp_edge_weights.push_back(infinite_sharpness);
+    soup.sharp_edges.emplace_back(u->second, w->second);
+  }
 }
 
 }  // namespace
@@ -114,6 +137,7 @@ Buffer<Vec3> Scene::combined_positions() const {
 PolygonSoup Scene::combined_soup() const {
   PolygonSoup out;
   for (const SceneInstance& i : instances_) append_soup(out, i.geometry.soup);
+  if (!sharp_edits_.empty()) mark_sharp_edges(out, sharp_edits_);
   return out;
 }
 

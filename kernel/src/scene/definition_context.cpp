@@ -92,10 +92,11 @@ Index DefinitionContext::vertex(const Name& name) {
 }
 
 void DefinitionContext::add_face(const std::vector<Name>& names, const std::string& face_name,
-                                 const std::optional<Name>& surface) {
+                                 const std::optional<Name>& surface, SourceLocation at) {
   std::vector<Index> corners;
   for (const Name& n : names) corners.push_back(vertex(n));
   if (std::find(corners.begin(), corners.end(), no_index) != corners.end()) return;
+  piece_.soup.note_origin(scene_.where(at));
   piece_.add_face(corners, face_name);
   if (surface) {
     piece_.soup.face_colors.back() = surface_color(*surface);

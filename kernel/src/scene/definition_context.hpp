@@ -49,9 +49,9 @@ class DefinitionContext : public DefinitionScope {
   // Where a named vertex is, without adding it to the piece (a sweep reads its curves' points so).
   std::optional<Vec3> position(const Name& name);
   void warning(SourceLocation at, std::string message) const { scene_.add_warning(at, std::move(message)); }
-  // A face over named vertices; left out when one of them is unknown.
+  // A face over named vertices, made by the statement at `at`; left out when one of them is unknown.
   void add_face(const std::vector<Name>& names, const std::string& face_name,
-                const std::optional<Name>& surface);
+                const std::optional<Name>& surface, SourceLocation at);
   void add_rim(const Name& name, const std::vector<Name>& vertices, bool is_loop);
   Color surface_color(const Name& surface);
   void error(SourceLocation at, std::string message);

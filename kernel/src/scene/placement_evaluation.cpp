@@ -96,14 +96,28 @@ std::optional<Color> Scene::placement_color(Index placement, std::vector<Index>&
 Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads,
                               std::vector<Diagnostic>& errors) {
   DefinitionContext context(*this, reads, errors);
-  if (p.target.kind != consolidated_kind)
-    return statement_kinds()[p.target.kind].evaluate(context, p.target.index);
+  if (p.target.kind != consolidated_kind) {
+    const StatementKind& kind = statement_kinds()[p.target.kind];
+    Piece piece = kind.evaluate(context, p.target.index);
+    // A generator's faces all come from its statement; faces over named vertices noted their own.
+    if (piece.soup.face_origins.empty() && piece.soup.num_faces() > 0) {
+      std::vector<DeclaredName> names;
+      kind.declare(ast_, p.target.kind, names);
+      for (const DeclaredName& d : names)
+        if (d.decl == p.target.index) piece.soup.face_origins.push_back({0, where(d.name->location)});
+    }
+    return piece;
+  }
   const size_t first_error = errors.size();
   for (size_t i = 0; i < ast_.consolidated_faces.size(); ++i)
-    context.add_face(ast_.consolidated_faces[i].vertices, "cf" + std::to_string(i), std::nullopt);
+    context.add_face(ast_.consolidated_faces[i].vertices, "cf" + std::to_string(i), std::nullopt,
+                     ast_.consolidated_faces[i].location);
   // The names are located in the file that gave them: the scene, or an .anom file's working mesh.
-  if (!consolidated_file_.empty())
+  if (!consolidated_file_.empty()) {
     for (size_t e = first_error; e < errors.size(); ++e) errors[e].file = consolidated_file_;
+    for (FaceOrigin& o : context.piece().soup.face_origins)
+      o.where = consolidated_file_ + o.where.substr(ast_.file.size());
+  }
   return std::move(context.piece());
 }
 

@@ -15,6 +15,10 @@ Diagnostic Scene::located(SourceLocation at, std::string message) const {
   return {Severity::error, ast_.file, at, std::move(message)};
 }
 
+std::string Scene::where(SourceLocation at) const {
+  return ast_.file + ":" + location_text(at);
+}
+
 void Scene::add_warning(SourceLocation at, std::string message) const {
   Diagnostic d{Severity::warning, ast_.file, at, std::move(message)};
   const auto is_same = [&](const Diagnostic& w) {
@@ -176,6 +180,7 @@ void Scene::build(std::vector<Diagnostic>& errors) {
   if (const auto over = evaluate_all(leaves, errors)) throw BudgetError(*over);
   if (!errors.empty()) return;
   deleted_ = resolve_deleted(ast_.deleted_faces, errors);
+  resolve_sharp_edits(errors);
   assemble_all();
 }
 
@@ -269,6 +274,17 @@ void Scene::set_consolidated_faces(std::vector<std::vector<std::string>> faces) 
   std::vector<Diagnostic> errors;
   next.is_vertex_index_current_ = false;
   next.build(errors);
+  if (!errors.empty()) throw SceneError(std::move(errors));
+  *this = std::move(next);
+}
+
+void Scene::set_sharp_edits(const std::vector<std::pair<std::string, std::string>>& edges) {
+  Scene next = *this;
+  next.ast_.sharp_edges.clear();
+  for (const auto& [a, b] : edges)
+    next.ast_.sharp_edges.push_back({{{normalize_name(a), {}}, {normalize_name(b), {}}}, {}});
+  std::vector<Diagnostic> errors;
+  next.resolve_sharp_edits(errors);
   if (!errors.empty()) throw SceneError(std::move(errors));
   *this = std::move(next);
 }

@@ -37,6 +37,7 @@ StatementKind group_statement();
 StatementKind instance_statement();
 StatementKind delete_statement();
 StatementKind consolidate_statement();
+StatementKind sharp_edges_statement();
 StatementKind include_statement();
 StatementKind subdivision_statement();
 StatementKind offset_statement();
@@ -55,6 +56,7 @@ StatementKind bspline_statement();
 StatementKind sweep_statement();
 StatementKind sweep_morph_statement();
 StatementKind morph_visualizer_statement();
+StatementKind ribbon_statement();
 
 std::span<const StatementKind> statement_kinds() {
   // In the order error messages list the keywords and the writer writes the statements (any order
@@ -89,6 +91,7 @@ std::span<const StatementKind> statement_kinds() {
       instance_statement(),      // a top-level instance: a root of the scene
       delete_statement(),        // faces deleted by name
       consolidate_statement(),   // the consolidated mesh
+      sharp_edges_statement(),   // edges marked sharp in the viewer
       include_statement(),       // successor: another file's statements
       subdivision_statement(),   // successor: root instances and the subdivision levels
       offset_statement(),        // successor: root instances and the offset distance
@@ -104,6 +107,7 @@ std::span<const StatementKind> statement_kinds() {
       sweep_statement(),             // a cross-section swept along a path (kernel sweep())
       sweep_morph_statement(),       // a sweep whose cross-sections blend between control points
       morph_visualizer_statement(),  // one of a sweep's cross-sections
+      ribbon_statement(),            // a band along a rim line (report 6.3's rim ribbon)
   };
   return table;
 }

@@ -45,17 +45,18 @@ TEST_CASE("double-click, drop and prompt take the window's pixel, the dropped fi
 
 TEST_CASE("every bad line of a script is reported with its line and column", "[app]") {
   try {
-    parse_script("click 10\nmode edge\nfrobnicate\nset a b\naction fly\n", "s.txt");
+    parse_script("click 10\nmode edges\nfrobnicate\nset a b\naction fly\n", "s.txt");
     FAIL("the script should have been refused");
   } catch (const nome::InvalidInputError& e) {
     const std::string message = e.what();
     CHECK_THAT(message, Catch::Contains("s.txt:1:9: expected 'click X Y"));
-    CHECK_THAT(message,
-               Catch::Contains("s.txt:2:6: expected vertex, face, border or border-partial, found 'edge'"));
+    CHECK_THAT(
+        message,
+        Catch::Contains("s.txt:2:6: expected vertex, face, border, border-partial or edge, found 'edges'"));
     CHECK_THAT(message, Catch::Contains("s.txt:3:1: expected a command"));
     CHECK_THAT(message, Catch::Contains("s.txt:4:7: expected a number"));
     CHECK_THAT(message, Catch::Contains("s.txt:5:8: expected an action (") &&
-                            Catch::Contains("undo, redo, add-polygon, accept, delete"));
+                            Catch::Contains("undo, redo, add-polygon, accept, delete, sharp"));
   }
 }
 

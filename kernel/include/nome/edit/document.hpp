@@ -49,8 +49,8 @@ class Document {
   const PolygonSoup& scene_geometry() const { return scene_; }
   // The consolidated faces (vertex names) and deleted face names read from a saved file; clears the
   // temporary mesh and the undo history.
-  void load_edits(const std::vector<std::vector<std::string>>& consolidated,
-                  std::vector<std::string> deleted);
+  void load_edits(const std::vector<std::vector<std::string>>& consolidated, std::vector<std::string> deleted,
+                  std::vector<std::pair<std::string, std::string>> sharp_edges = {});
 
   // Adds a polygon through the named vertices, in order, to the temporary mesh. Refused if a vertex is
   // unknown or repeated or an edge already has two faces. Reversed if most of its edges that already
@@ -66,6 +66,13 @@ class Document {
   // merged mesh) into the temporary mesh.
   EditOutcome zipper(const Mesh& displayed, const BorderSelection& a, const BorderSelection& b,
                      const ZipperOptions& options = {});
+
+  // Marks (or unmarks) the edges between the named vertex pairs sharp: infinitely sharp creases for
+  // subdivision. Refused when a pair is no edge of the scene's faces, or, unmarking, when the edge is sharp
+  // in the scene's own text (its `sharp` is changed there).
+  EditOutcome set_sharp(const std::vector<std::pair<std::string, std::string>>& edges, bool is_sharp);
+  // The edges marked sharp by edits, as vertex-name pairs (the smaller name first).
+  const std::vector<std::pair<std::string, std::string>>& sharp_edges() const { return sharp_; }
 
   bool can_undo() const { return done_ > 0; }
   bool can_redo() const { return done_ < history_.size(); }
@@ -101,7 +108,11 @@ class Document {
     std::vector<std::pair<size_t, EditedFace>> temporary;  // with their former positions
     std::vector<std::pair<size_t, EditedFace>> consolidated;
   };
-  using Command = std::variant<AddTemporary, Accept, ClearTemporary, DeleteFaces>;
+  struct SetSharp {
+    std::vector<std::pair<std::string, std::string>> edges;  // those the command changes
+    bool is_sharp;
+  };
+  using Command = std::variant<AddTemporary, Accept, ClearTemporary, DeleteFaces, SetSharp>;
 
   // Faces on one undirected edge: the face and whether it runs from the lower to the higher vertex id.
   struct EdgeUse {
@@ -129,6 +140,7 @@ class Document {
   std::vector<EditedFace> temporary_;
   std::vector<EditedFace> consolidated_;
   std::vector<std::string> deleted_;
+  std::vector<std::pair<std::string, std::string>> sharp_;
   std::vector<Command> history_;
   size_t done_ = 0;  // history_[0, done_) is applied; the rest can be redone
   std::size_t face_counter_ = 0;

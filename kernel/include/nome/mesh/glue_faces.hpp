@@ -10,7 +10,9 @@ namespace nome {
 struct GluedFaces {
   Mesh mesh;
   std::vector<Index> vertex_sources;  // mesh vertex -> soup vertex it copies
-  std::vector<std::string> problems;  // edges left apart because more than two faces use them
+  // Edges left apart because more than two faces use them, each `file:line:col: ` first where the soup
+  // knows the origin of a face on it.
+  std::vector<std::string> problems;
 };
 
 // Builds a mesh from polygons that share vertices by id but need not be a 2-manifold at every vertex:

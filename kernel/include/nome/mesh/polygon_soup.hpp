@@ -10,6 +10,13 @@
 
 namespace nome {
 
+// Where faces were made, for messages about them: the faces from `first_face` up to the next origin's
+// first face come from the statement at `where` ("file:line:col"; empty: unknown).
+struct FaceOrigin {
+  Index first_face = 0;
+  std::string where;
+};
+
 // Positions and polygons as given, before any topology: the input of build_mesh.
 // Optional per-element names and colours travel with the elements into the Mesh.
 struct PolygonSoup {
@@ -25,6 +32,7 @@ struct PolygonSoup {
   std::vector<float> sharp_edge_weights;
   std::vector<std::pair<Index, float>> sharp_vertices;  // corner vertices and their sharpness
   std::vector<Index> hole_faces;  // faces refined for their neighbours' sake but not output
+  std::vector<FaceOrigin> face_origins;              // empty, or runs sorted by first_face
 
   Index add_vertex(const Vec3& p) {
     positions.push_back(p);
@@ -39,12 +47,16 @@ struct PolygonSoup {
   Index add_face(std::initializer_list<Index> vertices) {
     return add_face<std::initializer_list<Index>>(vertices);
   }
+  // The faces added from now on come from `where` (an empty text on a soup without origins adds none).
+  void note_origin(const std::string& where);
+  // Where face f was made; empty when unknown.
+  const std::string& origin(Index f) const;
   Index num_vertices() const { return static_cast<Index>(positions.size()); }
   Index num_faces() const { return static_cast<Index>(face_offsets.size() - 1); }
 };
 
-// Appends `part` to `into` as separate vertices and faces, keeping names, colours and sharp marks: where
-// only one of them has names, the other's elements get empty ones; where only one has colours, the
+// Appends `part` to `into` as separate vertices and faces, keeping names, colours, origins and sharp marks:
+// where only one of them has names, the other's elements get empty ones; where only one has colours, the
 // other's faces get default_face_color.
 void append_soup(PolygonSoup& into, const PolygonSoup& part);
 

@@ -231,6 +231,7 @@ struct SceneAst {
   std::vector<InstanceDecl> instances;  // top-level: the scene's roots
   std::vector<Name> deleted_faces;      // `delete face NAME endface ... enddelete`
   std::vector<NamedFace> consolidated_faces;
+  std::vector<NamedFace> sharp_edges;  // `sharpedges (a b) ... endsharpedges`: two vertices each
   std::vector<StageDecl> stages;
   std::vector<Name> boundary_modes;  // `boundary MODE endboundary`: subdivision at the border
   std::vector<RenderDecl> render;

@@ -131,6 +131,12 @@ class Scene {
   const std::vector<std::string>& deleted_faces() const { return deleted_; }
   void set_deleted_faces(std::vector<std::string> faces);
 
+  // Edges marked sharp in the viewer (`sharpedges (a b) ... endsharpedges`) as full vertex-name pairs;
+  // combined_soup() marks those that are edges of its faces. Setting them resolves the names (SceneError
+  // listing unknown or ambiguous ones; nothing changes then).
+  const std::vector<std::pair<std::string, std::string>>& sharp_edits() const { return sharp_edits_; }
+  void set_sharp_edits(const std::vector<std::pair<std::string, std::string>>& edges);
+
   // The full hierarchical name of the vertex a (possibly shortened) name refers to. Throws SceneError
   // naming the candidates when the name is unknown or ambiguous.
   std::string resolve_vertex_name(const std::string& name) const;
@@ -189,6 +195,8 @@ class Scene {
   void rename_repeated_instances(std::vector<InstanceDecl>& instances);
   void build(std::vector<Diagnostic>& errors);
   Diagnostic located(SourceLocation at, std::string message) const;
+  // "file:line:col" of a place in the scene's text, for the origins of faces.
+  std::string where(SourceLocation at) const;
   // A warning found while evaluating (a sweep's inexact join), kept once however often it is evaluated.
   void add_warning(SourceLocation at, std::string message) const;
 
@@ -226,6 +234,7 @@ class Scene {
   void build_vertex_index() const;
   const VertexRef* lookup_vertex(const Name& name, std::vector<Diagnostic>& errors) const;
   std::vector<std::string> resolve_deleted(const std::vector<Name>& names, std::vector<Diagnostic>& errors);
+  void resolve_sharp_edits(std::vector<Diagnostic>& errors);
 
   // assembly.cpp: the placements of one top-level instance joined into its geometry.
   void assemble(Index top);
@@ -251,6 +260,7 @@ class Scene {
   std::vector<std::vector<std::string>> consolidated_;
   std::string consolidated_file_;  // where the consolidated faces' names are located, if not in file()
   std::vector<std::string> deleted_;
+  std::vector<std::pair<std::string, std::string>> sharp_edits_;
   std::size_t placement_evaluations_ = 0;
   std::size_t vertex_moves_ = 0;
   bool has_only_moved_vertices_ = false;

@@ -21,7 +21,7 @@ void declare_face(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
 
 Piece evaluate_face(DefinitionContext& context, Index decl) {
   const FaceDecl& f = context.ast().faces[decl];
-  context.add_face(f.vertices, f.name.text, f.surface);
+  context.add_face(f.vertices, f.name.text, f.surface, f.name.location);
   return std::move(context.piece());
 }
 

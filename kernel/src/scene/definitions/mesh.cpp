@@ -73,7 +73,7 @@ void declare_mesh(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
 
 Piece evaluate_mesh(DefinitionContext& context, Index decl) {
   const MeshDecl& m = context.ast().meshes[decl];
-  for (const FaceDecl& f : m.faces) context.add_face(f.vertices, f.name.text, f.surface);
+  for (const FaceDecl& f : m.faces) context.add_face(f.vertices, f.name.text, f.surface, f.name.location);
   // A sharp chain v1-v2, v2-v3, ... marks the edges between consecutive vertices, a single vertex is a
   // corner; the weight is OpenSubdiv's sharpness (none: infinitely sharp).
   PolygonSoup& soup = context.piece().soup;

@@ -37,7 +37,8 @@ Piece evaluate_object(DefinitionContext& context, Index decl) {
       context.error(face.location, "unknown face '" + face.text + "'" + did_you_mean(face.text, names));
       continue;
     }
-    context.add_face(ast.faces[f].vertices, ast.faces[f].name.text, ast.faces[f].surface);
+    context.add_face(ast.faces[f].vertices, ast.faces[f].name.text, ast.faces[f].surface,
+                     ast.faces[f].name.location);
   }
   return std::move(context.piece());
 }

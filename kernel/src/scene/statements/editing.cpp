@@ -55,7 +55,40 @@ void save_consolidate(SceneWriter& writer, Index) {
   writer.out() << "endconsolidate\n";
 }
 
+// `sharpedges (a b) (c d) ... endsharpedges`.
+void parse_sharp_edges(StatementParser& parser, Index kind) {
+  const std::string_view end = statement_kinds()[kind].end_keyword;
+  parser.set_statement_end(end);
+  parser.take();
+  while (!parser.peek().is_word(end)) {
+    const SourceLocation at = parser.peek().location;
+    std::vector<Name> pair = parser.name_list("a vertex name or ')'");
+    if (pair.size() != 2) {
+      parser.diagnostics().error(at, "a sharp edge is two vertices, found " + std::to_string(pair.size()));
+      continue;
+    }
+    parser.ast().sharp_edges.push_back({std::move(pair), at});
+  }
+  parser.take();
+}
+
+// By full hierarchical names, as the scene resolved them.
+void save_sharp_edges(SceneWriter& writer, Index) {
+  const auto& edges = writer.scene().sharp_edits();
+  if (edges.empty()) return;
+  writer.out() << "sharpedges";
+  for (const auto& [a, b] : edges) writer.out() << "\n    (" << a << " " << b << ")";
+  writer.out() << "\nendsharpedges\n";
+}
+
 }  // namespace
+
+StatementKind sharp_edges_statement() {
+  return {.keyword = "sharpedges",
+          .end_keyword = "endsharpedges",
+          .parse = parse_sharp_edges,
+          .save = save_sharp_edges};
+}
 
 StatementKind delete_statement() {
   return {.keyword = "delete", .end_keyword = "enddelete", .parse = parse_delete, .save = save_delete};

@@ -1,0 +1,84 @@
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+#include "app/viewer_support.hpp"
+#include "nome/edit/scene_document.hpp"
+#include "nome/io/read_scene.hpp"
+#include "nome/mesh/glue_faces.hpp"
+#include "nome/ops/pipeline.hpp"
+#include "nome/query/pick_edge.hpp"
+#include "viewer/window.hpp"
+
+using namespace nome;
+
+namespace {
+
+const char* const edge_mode_cube_text =
+    "point a (0 0 0) endpoint point b (1 0 0) endpoint point c (1 1 0) endpoint point d (0 1 0) endpoint\n"
+    "point e (0 0 1) endpoint point f (1 0 1) endpoint point g (1 1 1) endpoint point h (0 1 1) endpoint\n"
+    "mesh box\n"
+    "  face bottom (a d c b) endface face top (e f g h) endface face front (a b f e) endface\n"
+    "  face back (c d h g) endface face left (a e h d) endface face right (b c g f) endface\n"
+    "endmesh\n"
+    "instance k box endinstance\n";
+
+// A window pixel where a click in edge mode picks an edge, and that edge's vertex names.
+std::pair<glm::dvec2, std::pair<std::string, std::string>> clickable_edge(const Mesh& mesh) {
+  const ScreenProjection projection = nome::test::viewer_projection(mesh, 30.0, 25.0);
+  const TriangleBvh bvh(mesh);
+  for (Index e = 0; e < mesh.num_edges(); ++e) {
+    const auto [u, w] = mesh.edge(e).vertices;
+    const auto a = project_to_pixel(projection, mesh.position(u));
+    const auto b = project_to_pixel(projection, mesh.position(w));
+    if (!a || !b) continue;
+    const glm::dvec2 middle = glm::round(0.5 * (glm::dvec2(*a) + glm::dvec2(*b)));
+    if (pick_edge(mesh, bvh, projection, middle, 8.0) == e)
+      return {middle, {mesh.vertex_names()[u], mesh.vertex_names()[w]}};
+  }
+  FAIL("no edge of the cube can be clicked");
+  return {};
+}
+
+Buffer<Vec3> edge_mode_subdivided(const SceneDocument& doc) {
+  Pipeline pipeline;
+  pipeline.set_input(doc.pipeline_input());
+  PipelineSettings s;
+  s.stage = Stage::subdivided;
+  s.subdivision_levels = 1;
+  return pipeline.run(s).positions();
+}
+
+}  // namespace
+
+TEST_CASE(
+    "an edge clicked in edge mode and marked sharp with K is drawn, saved, read back and creases "
+    "the subdivision",
+    "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("sharp_edge");
+  std::ofstream(dir + "/cube.nome") << edge_mode_cube_text;
+  const Mesh mesh = glue_faces(read_scene(dir + "/cube.nome").combined_soup()).mesh;
+  const auto [pixel, names] = clickable_edge(mesh);
+  viewer::ViewerOptions options;
+  options.file = dir + "/cube.nome";
+  options.script = nome::test::write_script(
+      dir, "view 30 25\nmode edge\nclick " + std::to_string(int(pixel.x)) + " " +
+               std::to_string(int(pixel.y)) + "\nkey K\nsave " + dir + "/sharp.nome\nquit\n");
+  nome::test::TestViewer viewer(options);
+  CHECK(viewer.run() == 0);
+  const std::string log = viewer.messages();
+  CHECK_THAT(log, Catch::Contains("edge (" + names.first + ", " + names.second + ") selected"));
+  CHECK_THAT(log, Catch::Contains("sharp: 1 edge marked sharp"));
+  // The shown mesh has the edge sharp (the overlay draws the shown mesh's sharp edges).
+  const Mesh& shown = *viewer.window().shown()->mesh;
+  Index sharp = 0;
+  for (const Edge& e : shown.edges()) sharp += e.is_sharp ? 1 : 0;
+  CHECK(sharp == 1);
+
+  const SceneDocument back = SceneDocument::from_scene(read_scene(dir + "/sharp.nome"));
+  auto edge = names;
+  if (edge.second < edge.first) std::swap(edge.first, edge.second);
+  CHECK(back.edits().sharp_edges() == std::vector<std::pair<std::string, std::string>>{edge});
+  const SceneDocument plain = SceneDocument::from_scene(read_scene(dir + "/cube.nome"));
+  CHECK(edge_mode_subdivided(back) != edge_mode_subdivided(plain));
+}
