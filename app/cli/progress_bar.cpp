@@ -4,17 +4,23 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 namespace nome::cli {
 namespace {
 
-constexpr auto bar_show_after = std::chrono::milliseconds(500);
+// How long a task runs before its bar shows: NOME_PROGRESS_AFTER_MS, half a second when unset.
+std::chrono::milliseconds bar_show_after() {
+  const char* text = std::getenv("NOME_PROGRESS_AFTER_MS");
+  return std::chrono::milliseconds(text ? std::max(0L, std::strtol(text, nullptr, 10)) : 500L);
+}
 constexpr auto bar_redraw_every = std::chrono::milliseconds(100);
 constexpr int bar_columns = 30;
 
 }  // namespace
 
-ProgressBar::ProgressBar(bool quiet) : enabled_(!quiet && isatty(STDERR_FILENO) == 1) {}
+ProgressBar::ProgressBar(bool quiet)
+    : enabled_(!quiet && isatty(STDERR_FILENO) == 1), show_after_(bar_show_after()) {}
 
 ProgressBar::~ProgressBar() {
   finish();
@@ -31,7 +37,7 @@ void ProgressBar::draw(std::string_view task, double fraction) {
     task_ = task;
     task_start_ = now;
   }
-  if (now - task_start_ < bar_show_after || (drawn_ && now - last_draw_ < bar_redraw_every && fraction < 1.0))
+  if (now - task_start_ < show_after_ || (drawn_ && now - last_draw_ < bar_redraw_every && fraction < 1.0))
     return;
   last_draw_ = now;
   drawn_ = true;

@@ -8,7 +8,8 @@
 namespace nome::cli {
 
 // A progress bar on stderr for long kernel work: drawn only when stderr is a terminal and the user did not
-// ask for --quiet, and only once a task has run for half a second (quick work stays silent). The line is
+// ask for --quiet, and only once a task has run for half a second (quick work stays silent;
+// NOME_PROGRESS_AFTER_MS sets another delay). The line is
 // cleared when the work ends, so nothing of it stays in the terminal's scrollback.
 class ProgressBar {
  public:
@@ -28,6 +29,7 @@ class ProgressBar {
   bool enabled_;
   bool drawn_ = false;
   std::string task_;
+  std::chrono::milliseconds show_after_;
   std::chrono::steady_clock::time_point task_start_, last_draw_;
 };
 

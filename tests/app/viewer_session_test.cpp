@@ -20,10 +20,7 @@ namespace {
 
 using nome::test::assets;
 
-// The viewer names the vertices of a flat file as its lines do: v1, v2, ...
-std::string obj_vertex(Index v) {
-  return "v" + std::to_string(v + 1);
-}
+using nome::test::obj_vertex;
 
 using nome::test::click_line;
 

@@ -177,6 +177,10 @@ std::optional<glm::dvec2> click_position(const Mesh& mesh, const ScreenProjectio
   return std::nullopt;
 }
 
+std::string obj_vertex(Index v) {
+  return "v" + std::to_string(v + 1);
+}
+
 std::string click_line(glm::dvec2 p) {
   return "click " + std::to_string(int(p.x)) + " " + std::to_string(int(p.y)) + "\n";
 }

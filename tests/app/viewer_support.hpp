@@ -34,6 +34,9 @@ constexpr int viewer_height = 800;
 // Runs `nome ARGUMENTS` on a fresh virtual display (xvfb-run), as a user's session would run.
 CommandResult run_viewer(const std::string& arguments);
 
+// The viewer names the vertices of a flat file as its lines do: v1, v2, ...
+std::string obj_vertex(Index v);
+
 // A script line that clicks the window at p.
 std::string click_line(glm::dvec2 p);
 

@@ -38,7 +38,7 @@ std::vector<PathSample> circle_path(int n, int turns = 1) {
 }
 
 const CrossSection segment{{{-0.5, 0}, {0.5, 0}}, false};
-const CrossSection square{{{1, 1}, {-1, 1}, {-1, -1}, {1, -1}}, true};
+const CrossSection square_section{{{1, 1}, {-1, 1}, {-1, -1}, {1, -1}}, true};
 
 constexpr const char* square_points =
     "point s1 (0.5 0.5 0) endpoint\npoint s2 (-0.5 0.5 0) endpoint\n"
@@ -141,7 +141,7 @@ TEST_CASE("sweep core: caps face away from the path, triangles on request, cut e
   std::vector<PathSample> path = {{Vec3(0, 0, 0)}, {Vec3(0, 0, 1)}, {Vec3(0, 0, 2)}, {Vec3(0, 0, 3)}};
   SweepOptions o;
   o.has_begin_cap = o.has_end_cap = true;
-  const Piece quads = sweep(path, {&square, 1}, o).piece;
+  const Piece quads = sweep(path, {&square_section, 1}, o).piece;
   REQUIRE(quads.soup.face_names.back() == "endcap");
   const auto normal = [&](const PolygonSoup& s, Index f) {
     const Vec3 a = s.positions[s.face_vertices[s.face_offsets[f]]];
@@ -156,7 +156,7 @@ TEST_CASE("sweep core: caps face away from the path, triangles on request, cut e
   CHECK(quads.soup.vertex_names[5] == "v1_1");
   o.faces = FaceShape::triangles;
   o.is_cut_begin = o.is_cut_end = true;
-  const Piece triangles = sweep(path, {&square, 1}, o).piece;
+  const Piece triangles = sweep(path, {&square_section, 1}, o).piece;
   CHECK(triangles.soup.num_vertices() == 8);
   CHECK(triangles.soup.num_faces() == 2 * 4 + 2);
   CHECK(topology(triangles.soup).chi == 2);
@@ -337,8 +337,8 @@ TEST_CASE("sweep_positions() gives exactly the positions of sweep()", "[scene]")
   std::vector<PathSample> path = circle_path(12);
   path[3].scale = {2, 0.5};
   path[5].rotate = {5, 10, 30};
-  const PolygonSoup soup = sweep(path, {&square, 1}, o).piece.soup;
-  CHECK(sweep_positions(path, {&square, 1}, o).positions == soup.positions);
+  const PolygonSoup soup = sweep(path, {&square_section, 1}, o).piece.soup;
+  CHECK(sweep_positions(path, {&square_section, 1}, o).positions == soup.positions);
 }
 
 TEST_CASE("a sweep with every option is saved and read back to the same surface", "[scene]") {

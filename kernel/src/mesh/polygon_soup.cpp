@@ -47,7 +47,6 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   }
   for (auto [a, b] : part.sharp_edges) into.sharp_edges.emplace_back(a + base, b + base);
   for (auto [v, w] : part.sharp_vertices) into.sharp_vertices.emplace_back(v + base, w);
-  const Index face_base = into.num_faces() - part.num_faces();
   for (Index f : part.hole_faces) into.hole_faces.push_back(f + face_base);
 }
 

@@ -384,7 +384,7 @@ Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& optio
     return builder.build(normals, options.distance, MeshArrays(), options.threads);
   });
   if (options.subdivision_levels == 0) return solid;
-  return subdivide(solid, {options.subdivision_levels, options.rule});
+  return subdivide(solid, {.levels = options.subdivision_levels, .rule = options.rule});
 }
 
 void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh& solid, int threads) {

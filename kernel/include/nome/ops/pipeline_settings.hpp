@@ -16,7 +16,7 @@ struct PipelineSettings {
   int subdivision_levels = 0;              // Catmull-Clark levels before the offset
   SubdivisionRule rule = SubdivisionRule::classic;
   BoundaryMode boundary = BoundaryMode::edge_only;
-  CreaseOptions creases;         // how crease weights decay; smooth triangles
+  CreaseOptions creases = {};    // how crease weights decay; smooth triangles
   double offset_distance = 0.0;  // 0: no offset; otherwise positive and finite
   int subdivision_after = 0;     // levels after the offset (needs an offset)
   bool force = false;            // compute even when the estimate exceeds the memory budget

@@ -22,7 +22,7 @@ struct SubdivisionOptions {
   int levels = 1;
   SubdivisionRule rule = SubdivisionRule::classic;
   BoundaryMode boundary = BoundaryMode::edge_only;
-  CreaseOptions creases;
+  CreaseOptions creases = {};
 };
 
 // Catmull-Clark subdivision (report 004 section 4), `levels` times, on any mesh the kernel accepts:
