@@ -31,8 +31,8 @@ struct PolygonSoup {
   // (OpenSubdiv's sharpness: from infinite_sharpness up, infinitely sharp).
   std::vector<float> sharp_edge_weights;
   std::vector<std::pair<Index, float>> sharp_vertices;  // corner vertices and their sharpness
-  std::vector<Index> hole_faces;  // faces refined for their neighbours' sake but not output
-  std::vector<FaceOrigin> face_origins;              // empty, or runs sorted by first_face
+  std::vector<Index> hole_faces;         // faces refined for their neighbours' sake but not output
+  std::vector<FaceOrigin> face_origins;  // empty, or runs sorted by first_face
 
   Index add_vertex(const Vec3& p) {
     positions.push_back(p);
