@@ -15,6 +15,48 @@ Index find(std::vector<Index>& parent, Index v) {
   return v;
 }
 
+// The source's sharp edges and corners on the glued soup, whose corner c (same numbering as the source's)
+// holds the glued vertex of source corner c: a glued edge takes the weight of its source pair.
+void carry_sharpness(const PolygonSoup& soup, PolygonSoup& glued) {
+  const Index num_corners = Index(soup.face_vertices.size());
+  const auto next = [&](Index c) {
+    const Index f = Index(std::upper_bound(soup.face_offsets.begin(), soup.face_offsets.end(), c) -
+                          soup.face_offsets.begin() - 1);
+    return c + 1 == soup.face_offsets[f + 1] ? soup.face_offsets[f] : c + 1;
+  };
+  if (!soup.sharp_edges.empty()) {
+    // (low, high, weight), sorted: a glued edge takes the weight of its source pair.
+    std::vector<std::tuple<Index, Index, float>> sharp;
+    for (size_t i = 0; i < soup.sharp_edges.size(); ++i) {
+      const auto [a, b] = soup.sharp_edges[i];
+      const float w = soup.sharp_edge_weights.empty() ? infinite_sharpness : soup.sharp_edge_weights[i];
+      sharp.emplace_back(std::min(a, b), std::max(a, b), w);
+    }
+    std::sort(sharp.begin(), sharp.end());
+    for (Index c = 0; c < num_corners; ++c) {
+      const Index u = soup.face_vertices[c], w = soup.face_vertices[next(c)];
+      const auto key = std::tuple{std::min(u, w), std::max(u, w), -INFINITY};
+      const auto found = std::lower_bound(sharp.begin(), sharp.end(), key);
+      if (found == sharp.end() || std::get<0>(*found) != std::get<0>(key) ||
+          std::get<1>(*found) != std::get<1>(key))
+        continue;
+      glued.sharp_edges.emplace_back(glued.face_vertices[c], glued.face_vertices[next(c)]);
+      if (!soup.sharp_edge_weights.empty()) glued.sharp_edge_weights.push_back(std::get<2>(*found));
+    }
+  }
+  if (!soup.sharp_vertices.empty()) {
+    std::vector<float> corner_weight(soup.num_vertices(), 0.0f);
+    for (auto [v, w] : soup.sharp_vertices) corner_weight.at(v) = w;
+    std::vector<bool> done(glued.num_vertices(), false);
+    for (Index c = 0; c < num_corners; ++c) {
+      const Index v = glued.face_vertices[c];
+      if (done[v] || corner_weight[soup.face_vertices[c]] <= 0.0f) continue;
+      done[v] = true;
+      glued.sharp_vertices.emplace_back(v, corner_weight[soup.face_vertices[c]]);
+    }
+  }
+}
+
 }  // namespace
 
 GluedFaces glue_faces(const PolygonSoup& soup) {
@@ -84,37 +126,7 @@ GluedFaces glue_faces(const PolygonSoup& soup) {
     }
     glued.face_vertices.push_back(v);
   }
-  if (!soup.sharp_edges.empty()) {
-    // (low, high, weight), sorted: a glued edge takes the weight of its source pair.
-    std::vector<std::tuple<Index, Index, float>> sharp;
-    for (size_t i = 0; i < soup.sharp_edges.size(); ++i) {
-      const auto [a, b] = soup.sharp_edges[i];
-      const float w = soup.sharp_edge_weights.empty() ? infinite_sharpness : soup.sharp_edge_weights[i];
-      sharp.emplace_back(std::min(a, b), std::max(a, b), w);
-    }
-    std::sort(sharp.begin(), sharp.end());
-    for (Index c = 0; c < num_corners; ++c) {
-      const Index u = soup.face_vertices[c], w = soup.face_vertices[next(c)];
-      const auto key = std::tuple{std::min(u, w), std::max(u, w), -INFINITY};
-      const auto found = std::lower_bound(sharp.begin(), sharp.end(), key);
-      if (found == sharp.end() || std::get<0>(*found) != std::get<0>(key) ||
-          std::get<1>(*found) != std::get<1>(key))
-        continue;
-      glued.sharp_edges.emplace_back(id[find(parent, c)], id[find(parent, next(c))]);
-      if (!soup.sharp_edge_weights.empty()) glued.sharp_edge_weights.push_back(std::get<2>(*found));
-    }
-  }
-  if (!soup.sharp_vertices.empty()) {
-    std::vector<float> corner_weight(soup.num_vertices(), 0.0f);
-    for (auto [v, w] : soup.sharp_vertices) corner_weight.at(v) = w;
-    std::vector<bool> done(glued.num_vertices(), false);
-    for (Index c = 0; c < num_corners; ++c) {
-      const Index v = id[find(parent, c)];
-      if (done[v] || corner_weight[soup.face_vertices[c]] <= 0.0f) continue;
-      done[v] = true;
-      glued.sharp_vertices.emplace_back(v, corner_weight[soup.face_vertices[c]]);
-    }
-  }
+  carry_sharpness(soup, glued);
   glued.hole_faces = soup.hole_faces;
   glued.face_offsets = soup.face_offsets;
   glued.face_names = soup.face_names;
