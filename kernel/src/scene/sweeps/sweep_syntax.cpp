@@ -114,31 +114,32 @@ void vertex_lists_sweep_syntax(const DefinitionScope& scope, Index decl,
   }
 }
 
-Piece evaluate_sweep_syntax(DefinitionContext& context, Index decl) {
+// Reads the statement's curves and runs `make` (sweep or sweep_positions) on them, its refusals and
+// warnings located at the statement's name.
+template <typename Make>
+auto run_sweep(DefinitionContext& context, Index decl, Make make) {
   const SweepDecl& s = context.ast().sweeps[decl];
   const SweepInput in = sweep_input(context, s);
   const std::string what = std::string(statement_kinds()[s.kind].keyword) + " '" + s.name.text + "': ";
-  SweepResult result;
+  decltype(make(in)) result;
   try {
-    result = sweep(in.path, in.sections, in.options);
+    result = make(in);
   } catch (const InvalidInputError& e) {
     throw EvaluationError(s.name.location, what + e.what());
   }
   for (std::string& w : result.warnings) context.warning(s.name.location, what + w);
-  return std::move(result.piece);
+  return result;
+}
+
+Piece evaluate_sweep_syntax(DefinitionContext& context, Index decl) {
+  return run_sweep(context, decl,
+                   [](const SweepInput& in) { return sweep(in.path, in.sections, in.options); })
+      .piece;
 }
 
 PiecePositions evaluate_positions_sweep_syntax(DefinitionContext& context, Index decl) {
-  const SweepDecl& s = context.ast().sweeps[decl];
-  const SweepInput in = sweep_input(context, s);
-  const std::string what = std::string(statement_kinds()[s.kind].keyword) + " '" + s.name.text + "': ";
-  SweepPositions result;
-  try {
-    result = sweep_positions(in.path, in.sections, in.options);
-  } catch (const InvalidInputError& e) {
-    throw EvaluationError(s.name.location, what + e.what());
-  }
-  for (std::string& w : result.warnings) context.warning(s.name.location, what + w);
+  SweepPositions result = run_sweep(
+      context, decl, [](const SweepInput& in) { return sweep_positions(in.path, in.sections, in.options); });
   return {std::move(result.positions), result.topology_key};
 }
 
