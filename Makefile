@@ -25,7 +25,7 @@ PREFIX     ?= /usr/local
 PACKAGEDIR := build/package
 
 .PHONY: run test sanitize-full deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery \
-        install package package-test icon
+        install package package-test icon hardening mutants
 
 deps:
 	@missing=""; for p in $(PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -108,6 +108,18 @@ fuzz-build: deps
 
 fuzz: fuzz-build
 	FUZZ_JOBS=$(FUZZ_JOBS) FUZZ_TARGETS="$(FUZZ_TARGETS)" tests/fuzz/run_fuzzers.sh $(FUZZDIR) $(FUZZ_SECONDS)
+
+# Everything that does not fit beside `make test` in CI: soak, a short fuzz of every target
+# (FUZZ_SECONDS=120 each, two at a time) and ThreadSanitizer. How long each takes: README.md.
+hardening:
+	$(MAKE) soak
+	$(MAKE) fuzz FUZZ_SECONDS=$(or $(HARDENING_FUZZ_SECONDS),120) FUZZ_JOBS=2
+	$(MAKE) tsan
+
+# Mutation check: each mutation in tests/mutants/mutants.py is applied alone, its tests run, and every
+# one must be caught. Edits the source while it runs (restored after each mutation): commit first.
+mutants: deps
+	tests/mutants/mutants.py build/mutants
 
 format-check: deps
 	@clang-format --dry-run --Werror $(SOURCES) && echo "clang-format: $(words $(SOURCES)) files clean"

@@ -5,6 +5,8 @@
 
 #include "io/three_mf.hpp"
 #include "nome/error.hpp"
+#include "nome/io/face_location.hpp"
+#include "nome/io/file_extension.hpp"
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
 #include "nome/io/sif.hpp"
@@ -75,9 +77,7 @@ InputFiles read_input_files(const Arguments& args) {
   const scene::SceneOptions options = scene_options(args);
   std::vector<std::pair<std::string, PolygonSoup>> flat;  // flat geometry, in argument order after the scenes
   for (const std::string& file : args.positionals()) {
-    std::string ext = std::filesystem::path(file).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lower_extension(file);
     if (is_scene_file(file)) {
       try {
         input.scenes.push_back(read_scene(file, options));
@@ -92,9 +92,12 @@ InputFiles read_input_files(const Arguments& args) {
       flat.emplace_back(file, read_sif(file, {args.has("--quads"), SifOptions{}.max_fold_degrees}));
     } else if (ext == ".3mf") {
       flat.emplace_back(file, three_mf_polygons(read_3mf(file)));
-    } else {
+    } else if (ext == ".obj" || ext == ".stl") {
       flat.emplace_back(file, read_polygons(file));
       if (ext == ".obj") merge_obj_tags(input.obj_tags, read_obj_subdivision_tags(file));
+    } else {
+      throw IoError(file + ": unknown file type '" + ext +
+                    "' (Nome reads .nome, .nom, .slf, .sif, .obj, .stl and .3mf, and .anom after its scene)");
     }
   }
   for (const scene::Scene& s : input.scenes)
@@ -105,6 +108,8 @@ InputFiles read_input_files(const Arguments& args) {
   auto add_part = [&](const PolygonSoup& soup, const std::string& file, bool is_scene) {
     append_soup(input.geometry.soup, soup);
     input.geometry.parts.push_back({file, soup.num_faces(), is_scene});
+    if (!is_scene)
+      input.geometry.parts.back().locate_face = [file](Index f) { return locate_face_in_file(file, f); };
   };
   for (const scene::Scene& s : input.scenes) add_part(s.combined_soup(), s.file(), true);
   for (const auto& [file, soup] : flat) add_part(soup, file, false);

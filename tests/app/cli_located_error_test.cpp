@@ -14,6 +14,6 @@ TEST_CASE("nome info of a face that repeats a vertex says where the face is writ
   const auto r = nome::test::run_nome_in_process({"info", file});
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::StartsWith("nome: " + file +
-                                      ":5:8: build_mesh: not a 2-manifold: face j_f repeats "
+                                      ":5:8: not a 2-manifold: face j_f repeats "
                                       "vertex j_b"));
 }

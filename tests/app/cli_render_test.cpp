@@ -23,8 +23,7 @@ TEST_CASE("nome render writes a PNG of the requested size and reports the backen
                                                "/band.png --size 320x200 --verbose");
   INFO(r.err);
   REQUIRE(r.status == 0);
-  CHECK(r.err.find("EGL") != std::string::npos);
-  CHECK(r.err.find("llvmpipe") != std::string::npos);
+  CHECK_THAT(r.err, Catch::StartsWith("nome: EGL"));
   CHECK(r.err.find("wrote " + dir + "/band.png") != std::string::npos);
   const render::Image image = render::read_png(dir + "/band.png");
   CHECK(image.width == 320);

@@ -21,11 +21,14 @@ run_one() {
   artifacts=$build/artifacts/$name
   mkdir -p "$corpus" "$seeds" "$artifacts"
   case $format in
-    polygon_soup) max_len=1024 ;;
+    polygon_soup | pick | pipeline | zipper) max_len=1024 ;;
+    save_reload) max_len=16384; cp "$root"/assets/*.nome "$seeds"/ ;;
+    anom_scene) max_len=16384; cp "$root"/tests/data/bad/*.anom "$seeds"/ ;;
     *) max_len=16384
        cp "$root"/assets/*."$format" "$root"/tests/data/bad/*."$format" "$seeds"/ 2>/dev/null
-       cp "$root"/tests/data/fuzz/seeds/"$format"/* "$seeds"/ 2>/dev/null ;;
+       ;;
   esac
+  cp "$root"/tests/data/fuzz/seeds/"$format"/* "$seeds"/ 2>/dev/null
   cp "$root"/tests/data/fuzz/"$name"/* "$seeds"/ 2>/dev/null
   log=$build/$name.log
   "$fuzzer" -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 -max_len="$max_len" \

@@ -12,12 +12,17 @@
 
 namespace nome::fuzz {
 int anom_target(const uint8_t*, size_t);
+int anom_scene_target(const uint8_t*, size_t);
 int nome_target(const uint8_t*, size_t);
 int obj_target(const uint8_t*, size_t);
+int pick_target(const uint8_t*, size_t);
+int pipeline_target(const uint8_t*, size_t);
 int polygon_soup_target(const uint8_t*, size_t);
+int save_reload_target(const uint8_t*, size_t);
 int sif_target(const uint8_t*, size_t);
 int slf_target(const uint8_t*, size_t);
 int stl_target(const uint8_t*, size_t);
+int zipper_target(const uint8_t*, size_t);
 }  // namespace nome::fuzz
 
 namespace fs = std::filesystem;
@@ -28,10 +33,18 @@ const fs::path regressions = fs::path(NOME_SOURCE_DIR) / "tests/data/fuzz";
 
 // The folder of each target's regressions, as `make fuzz` names it (tests/fuzz/run_fuzzers.sh).
 const std::map<std::string, nome::fuzz::FuzzTarget> targets = {
-    {"anom_fuzzer", nome::fuzz::anom_target}, {"nome_fuzzer", nome::fuzz::nome_target},
-    {"obj_fuzzer", nome::fuzz::obj_target},   {"polygon_soup_fuzzer", nome::fuzz::polygon_soup_target},
-    {"sif_fuzzer", nome::fuzz::sif_target},   {"slf_fuzzer", nome::fuzz::slf_target},
-    {"stl_fuzzer", nome::fuzz::stl_target}};
+    {"anom_fuzzer", nome::fuzz::anom_target},
+    {"anom_scene_fuzzer", nome::fuzz::anom_scene_target},
+    {"nome_fuzzer", nome::fuzz::nome_target},
+    {"obj_fuzzer", nome::fuzz::obj_target},
+    {"pick_fuzzer", nome::fuzz::pick_target},
+    {"pipeline_fuzzer", nome::fuzz::pipeline_target},
+    {"polygon_soup_fuzzer", nome::fuzz::polygon_soup_target},
+    {"save_reload_fuzzer", nome::fuzz::save_reload_target},
+    {"sif_fuzzer", nome::fuzz::sif_target},
+    {"slf_fuzzer", nome::fuzz::slf_target},
+    {"stl_fuzzer", nome::fuzz::stl_target},
+    {"zipper_fuzzer", nome::fuzz::zipper_target}};
 
 std::string bytes_of(const fs::path& p) {
   std::ostringstream s;
@@ -73,20 +86,28 @@ TEST_CASE("the fuzz targets take the seeds and the example files without a findi
   const fs::path assets = fs::path(NOME_SOURCE_DIR) / "assets";
   int replayed = 0;
   for (const auto& [extension, target] :
-       std::map<std::string, nome::fuzz::FuzzTarget>{{".nome", nome::fuzz::nome_target},
-                                                     {".obj", nome::fuzz::obj_target},
-                                                     {".sif", nome::fuzz::sif_target},
-                                                     {".slf", nome::fuzz::slf_target},
-                                                     {".stl", nome::fuzz::stl_target}})
+       std::multimap<std::string, nome::fuzz::FuzzTarget>{{".nome", nome::fuzz::nome_target},
+                                                          {".nome", nome::fuzz::save_reload_target},
+                                                          {".obj", nome::fuzz::obj_target},
+                                                          {".sif", nome::fuzz::sif_target},
+                                                          {".slf", nome::fuzz::slf_target},
+                                                          {".stl", nome::fuzz::stl_target}})
     for (const auto& input : fs::directory_iterator(assets))
       if (input.path().extension() == extension && fs::file_size(input.path()) < 16384) {
         INFO(input.path().filename().string());
         CHECK(replay(target, input.path()) == 0);
         ++replayed;
       }
-  for (const auto& input : fs::directory_iterator(regressions / "seeds/stl")) {
-    CHECK(replay(nome::fuzz::stl_target, input.path()) == 0);
-    ++replayed;
+  // tests/data/fuzz/seeds/<format>/: the target whose folder is <format>_fuzzer.
+  for (const auto& folder : fs::directory_iterator(regressions / "seeds")) {
+    const auto target = targets.find(folder.path().filename().string() + "_fuzzer");
+    INFO("seeds/" << folder.path().filename().string());
+    REQUIRE(target != targets.end());
+    for (const auto& input : fs::directory_iterator(folder.path())) {
+      INFO(input.path().filename().string());
+      CHECK(replay(target->second, input.path()) == 0);
+      ++replayed;
+    }
   }
-  CHECK(replayed > 5);
+  CHECK(replayed > 15);
 }

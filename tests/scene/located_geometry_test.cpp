@@ -42,8 +42,7 @@ std::string located_build_error(const std::string& text, Joining joining) {
 TEST_CASE("a face that repeats a vertex is located at its face statement", "[scene]") {
   const std::string text = located_two_faces("(a c d c)");
   for (const Joining joining : {Joining::manifold, Joining::across_edges})
-    CHECK(located_build_error(text, joining) ==
-          "t.nome:8:8: build_mesh: not a 2-manifold: face j_f2 repeats vertex j_c");
+    CHECK(located_build_error(text, joining) == "t.nome:8:8: not a 2-manifold: face j_f2 repeats vertex j_c");
 }
 
 TEST_CASE("an edge of three faces is located at the face statement that adds the third", "[scene]") {
@@ -53,9 +52,8 @@ TEST_CASE("an edge of three faces is located at the face statement that adds the
       "mesh m face f1 (a b c) endface face f2 (b a d) endface\n"
       "  face f3 (a b e) endface endmesh\n"
       "instance j m endinstance\n";
-  CHECK_THAT(
-      located_build_error(text, Joining::manifold),
-      Catch::StartsWith("t.nome:4:8: build_mesh: not a 2-manifold: edge (j_a, j_b) has a third face j_f3"));
+  CHECK_THAT(located_build_error(text, Joining::manifold),
+             Catch::StartsWith("t.nome:4:8: not a 2-manifold: edge (j_a, j_b) has a third face j_f3"));
   // The viewer's joining keeps the faces apart and warns, located the same way.
   PipelineInput input;
   input.soup = scene::Scene::from_text(text, "t.nome").combined_soup();

@@ -5,19 +5,10 @@
 #include <sstream>
 
 #include "nome/error.hpp"
+#include "nome/io/file_extension.hpp"
 #include "nome/scene/parser.hpp"
 
 namespace nome {
-namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
-}  // namespace
-
 std::string read_text_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(path.string() + ": cannot open");

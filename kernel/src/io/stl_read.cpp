@@ -7,6 +7,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "io/stl_detect.hpp"
 #include "nome/error.hpp"
 #include "nome/io/stl.hpp"
 
@@ -35,25 +36,14 @@ class Welder {
   std::unordered_map<std::array<float, 3>, Index, FloatTripleHash> ids_;
 };
 
-bool looks_ascii(const std::string& bytes) {
-  if (bytes.compare(0, 5, "solid") != 0) return false;
-  // A binary file may also start with "solid": trust the size formula when it matches.
-  if (bytes.size() >= 84) {
-    std::uint32_t n;
-    std::memcpy(&n, bytes.data() + 80, 4);
-    if (84 + 50ull * n == bytes.size()) return false;
-  }
-  return true;
-}
-
 PolygonSoup read_binary(const std::string& file, const std::string& bytes) {
   if (bytes.size() < 84)
     throw IoError(file + ": truncated binary STL header (" + std::to_string(bytes.size()) + " bytes)");
   std::uint32_t n;
   std::memcpy(&n, bytes.data() + 80, 4);
   if (84 + 50ull * n != bytes.size())
-    throw IoError(file + ": binary STL header says " + std::to_string(n) + " triangles but the file holds " +
-                  std::to_string((bytes.size() - 84) / 50));
+    throw IoError(file + ": byte 80: binary STL header says " + std::to_string(n) +
+                  " triangles but the file holds " + std::to_string((bytes.size() - 84) / 50));
   PolygonSoup soup;
   Welder weld(soup);
   for (std::uint32_t t = 0; t < n; ++t) {
@@ -119,11 +109,22 @@ PolygonSoup read_ascii(const std::string& file, const std::string& bytes) {
 
 }  // namespace
 
+bool stl_looks_ascii(const std::string& bytes) {
+  if (bytes.compare(0, 5, "solid") != 0) return false;
+  // Trust the size formula when it matches.
+  if (bytes.size() >= 84) {
+    std::uint32_t n;
+    std::memcpy(&n, bytes.data() + 80, 4);
+    if (84 + 50ull * n == bytes.size()) return false;
+  }
+  return true;
+}
+
 PolygonSoup read_stl(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(path.string() + ": cannot open");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return looks_ascii(bytes) ? read_ascii(path.string(), bytes) : read_binary(path.string(), bytes);
+  return stl_looks_ascii(bytes) ? read_ascii(path.string(), bytes) : read_binary(path.string(), bytes);
 }
 
 }  // namespace nome

@@ -33,7 +33,8 @@ std::optional<TopologyError> located_error(const TopologyError& error, const Pol
   for (const TopologyError::Problem& p : error.problems()) {
     const std::string where = p.face < soup.num_faces() ? origin_prefix(soup, p.face) : std::string();
     is_located = is_located || !where.empty();
-    text += (text.empty() ? "" : "\n") + where + "build_mesh: not a 2-manifold: " + p.text;
+    text += (text.empty() ? "" : "\n") + where + (where.empty() ? "build_mesh: " : "") +
+            "not a 2-manifold: " + p.text;
   }
   if (!is_located) return std::nullopt;
   return TopologyError(text, error.problems());

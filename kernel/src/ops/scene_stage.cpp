@@ -29,6 +29,22 @@ PolygonSoup part_of(const PolygonSoup& soup, Index first, Index count) {
   return part;
 }
 
+// The part's error with each problem at the place in its file that wrote the face (one line each, the
+// same problem listed once), or prefixed with the part's name where no place is known.
+TopologyError located_in_part(const TopologyError& error, const InputPart& part) {
+  std::vector<std::string> lines;
+  for (const TopologyError::Problem& p : error.problems()) {
+    const std::string where = part.locate_face && p.face != no_index ? part.locate_face(p.face) : "";
+    if (where.empty()) return TopologyError(part.name + ": " + error.what(), error.problems());
+    const std::string line = where + ": not a 2-manifold: " + p.text;
+    if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+  }
+  if (lines.empty()) return TopologyError(part.name + ": " + error.what(), error.problems());
+  std::string text = lines.front();
+  for (size_t i = 1; i < lines.size(); ++i) text += "\n" + lines[i];
+  return TopologyError(text, error.problems());
+}
+
 // build_mesh on the whole input; a topology error names the part at fault, with element numbers of that
 // part alone: the parts are built one by one (only on this error path) to find it.
 Mesh build_naming_the_part(const PipelineInput& input) {
@@ -42,7 +58,7 @@ Mesh build_naming_the_part(const PipelineInput& input) {
       try {
         build_mesh(part_of(input.soup, first, part.faces));
       } catch (const TopologyError& in_part) {
-        throw TopologyError(part.name + ": " + in_part.what());
+        throw located_in_part(in_part, part);
       }
       first += part.faces;
     }

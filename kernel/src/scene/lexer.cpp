@@ -150,15 +150,18 @@ class Lexer {
 }  // namespace
 
 std::string Token::describe() const {
+  // A message names a token, it does not repeat a megabyte of it.
+  constexpr size_t shown = 40;
+  const std::string brief = text.size() <= shown ? text : text.substr(0, shown) + "...";
   switch (kind) {
     case TokenKind::word:
-      return "'" + text + "'";
+      return "'" + brief + "'";
     case TokenKind::number:
-      return "number " + text;
+      return "number " + brief;
     case TokenKind::parameter:
-      return "'$" + text + "'";
+      return "'$" + brief + "'";
     case TokenKind::symbol:
-      return "'" + text + "'";
+      return "'" + brief + "'";
     case TokenKind::end:
       return "end of file";
   }

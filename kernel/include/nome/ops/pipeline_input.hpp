@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct InputPart {
   // scene's pieces meeting at a point), the vertex is split, one copy per fan, with a warning naming it,
   // instead of refusing the input. Edges of three or more faces are refused all the same.
   bool may_touch_at_vertices = false;
+  // Where the part's face k was written (`file:line:col`), or empty: topology errors then point at it.
+  std::function<std::string(Index)> locate_face = {};
 };
 
 // The pipeline's input: the scene stage's polygons, part after part.
