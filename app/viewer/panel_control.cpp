@@ -7,10 +7,10 @@
 namespace nome::viewer {
 namespace {
 
-void draw_selection_section(const ActionRegistry& actions, Selection& selection) {
+bool draw_selection_section(const ActionRegistry& actions, Selection& selection, glm::vec3& instance_color) {
   int mode = int(selection.mode());
-  const char* labels[] = {"vertex", "face", "border (whole)", "border (partial)", "edge"};
-  for (int i = 0; i < 5; ++i) {
+  const char* labels[] = {"vertex", "face", "border (whole)", "border (partial)", "edge", "instance"};
+  for (int i = 0; i < 6; ++i) {
     if (ImGui::RadioButton(labels[i], &mode, i)) selection.set_mode(SelectionMode(i));
     if (i % 2 == 0) ImGui::SameLine(130);
   }
@@ -18,6 +18,15 @@ void draw_selection_section(const ActionRegistry& actions, Selection& selection)
   ImGui::Text("%zu vertices, %zu faces, %zu edges, %zu borders", selection.vertices().size(),
               selection.faces().size(), selection.edges().size(), selection.borders().size());
   if (ImGui::Button("Clear selection")) actions.run(Action::clear_selection);
+  if (selection.mode() != SelectionMode::instance) return false;
+  // Report 8.4: selected instances take a surface colour, saved with the scene.
+  ImGui::Text("%zu instances selected", selection.instances().size());
+  ImGui::ColorEdit3("instance colour", &instance_color.x, ImGuiColorEditFlags_NoInputs);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(selection.instances().empty());
+  const bool is_applied = ImGui::Button("Colour selected");
+  ImGui::EndDisabled();
+  return is_applied;
 }
 
 void draw_stage_section(const ActionRegistry& actions, PipelineSettings& settings) {
@@ -132,8 +141,9 @@ ControlPanelChanges draw_color_section(const ControlPanelModel& model) {
 
 ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPanelModel model) {
   ControlPanelChanges changes;
+  bool is_instance_color_applied = false;
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
-    draw_selection_section(actions, model.selection);
+    is_instance_color_applied = draw_selection_section(actions, model.selection, model.instance_color);
   if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen)) {
     if (model.sif_pairing) {
       bool is_paired = *model.sif_pairing;
@@ -147,6 +157,7 @@ ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPan
   }
   if (ImGui::CollapsingHeader("Edit", ImGuiTreeNodeFlags_DefaultOpen)) draw_edit_section(actions, model);
   if (ImGui::CollapsingHeader("Colours")) changes = draw_color_section(model);
+  changes.is_instance_color_applied = is_instance_color_applied;
   return changes;
 }
 

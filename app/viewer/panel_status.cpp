@@ -32,7 +32,10 @@ void draw_status_bar(const std::optional<StatusLine>& status, const MessageLog& 
     ImGui::Text("%s%s | %s stage: %u V, %u F, %s | %s mode", status->file.c_str(),
                 status->is_modified ? " *" : "", to_string(status->stage), status->vertices, status->faces,
                 size_text(status->size).c_str(), to_string(status->mode));
-  else
+  if (status && !status->instances.empty()) {
+    ImGui::SameLine();
+    ImGui::Text("| instances %s", status->instances.c_str());
+  } else
     ImGui::TextUnformatted("no file: File > Open (Ctrl+O) or drop a file on the window");
   if (const Message* latest = log.latest()) {
     ImGui::SameLine();

@@ -63,11 +63,13 @@ struct ControlPanelModel {
   bool can_edit;
   bool is_parameter_lock_on;
   std::optional<bool> sif_pairing;  // a .sif file is open: whether its triangles are paired
+  glm::vec3& instance_color;        // the colour picker's, for the selected instances
 };
 // What the control panel changed that needs the renderer told.
 struct ControlPanelChanges {
   bool is_selection_changed = false;
   bool is_edit_color_changed = false;
+  bool is_instance_color_applied = false;  // "Colour selected instances" was pressed
 };
 // Draws into the current window (the left sidebar).
 ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPanelModel model);
@@ -89,7 +91,8 @@ struct StatusLine {
   Index vertices = 0;
   Index faces = 0;
   SelectionMode mode = SelectionMode::vertex;
-  glm::dvec3 size{0.0};  // the bounding box of the shown stage
+  glm::dvec3 size{0.0};   // the bounding box of the shown stage
+  std::string instances;  // the selected instances' paths, comma-separated
 };
 // "12.5 x 8 x 3.25 mm": a bounding box's size in the export unit.
 std::string size_text(const glm::dvec3& size);

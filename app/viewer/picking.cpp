@@ -4,6 +4,7 @@
 
 #include "nome/query/pick.hpp"
 #include "nome/query/pick_edge.hpp"
+#include "nome/query/rim_pick.hpp"
 
 namespace nome::viewer {
 namespace {
@@ -12,22 +13,36 @@ bool contains(const std::vector<Index>& items, Index i) {
   return std::find(items.begin(), items.end(), i) != items.end();
 }
 
-std::string select_border(Selection& selection, const StageResult& shown, Index v) {
+std::string select_border(Selection& selection, const StageResult& shown, const PickableRims& rims, Index v) {
   const std::size_t before = selection.borders().size();
-  std::string hint = selection.click_border_vertex(*shown.borders, v);
+  const bool has_rims = rims.borders && rims.first_id == shown.mesh->num_vertices();
+  std::string hint = selection.click_border_vertex(has_rims ? *rims.borders : *shown.borders, v);
   if (hint.empty() && selection.borders().size() > before) {
     const auto& border = selection.borders().back();
-    hint = std::string(border.is_loop ? "border" : "partial border") + " of " +
-           std::to_string(border.vertices.size()) + " vertices selected, from " +
-           shown.mesh->vertex_label(border.vertices.front());
+    const bool is_rim = touches_rim(rims, border);
+    hint = std::string(is_rim ? (border.is_loop ? "rim line" : "rim line segment")
+                              : (border.is_loop ? "border" : "partial border")) +
+           " of " + std::to_string(border.vertices.size()) + " vertices selected, from " +
+           (is_rim ? rims.name(*shown.mesh, border.vertices.front())
+                   : shown.mesh->vertex_label(border.vertices.front()));
   }
   return hint;
+}
+
+// The vertex under the pixel: a rim vertex whose cube is in front of the surface, else the nearest corner
+// of the face under it.
+std::optional<Index> vertex_at(const StageResult& shown, const TriangleBvh& bvh, const PickableRims& rims,
+                               const ScreenProjection& projection, glm::dvec2 pixel) {
+  if (rims.first_id == shown.mesh->num_vertices())
+    if (const auto k = pick_rim_vertex(rims.lines, rims.half_sizes, bvh, projection, pixel))
+      return rims.first_id + *k;
+  return pick_vertex(*shown.mesh, bvh, projection, pixel, pick_pixels);
 }
 
 }  // namespace
 
 std::string select_at(Selection& selection, const StageResult& shown, const TriangleBvh& bvh,
-                      const ScreenProjection& projection, glm::dvec2 pixel) {
+                      const PickableRims& rims, const ScreenProjection& projection, glm::dvec2 pixel) {
   const Mesh& mesh = *shown.mesh;
   std::string hint;
   if (selection.mode() == SelectionMode::edge) {
@@ -44,19 +59,32 @@ std::string select_at(Selection& selection, const StageResult& shown, const Tria
       hint = "face " + mesh.face_label(*face) +
              (contains(selection.faces(), *face) ? " selected" : " deselected");
     }
-  } else if (const auto v = pick_vertex(mesh, bvh, projection, pixel, pick_pixels)) {
+  } else if (const auto v = vertex_at(shown, bvh, rims, projection, pixel)) {
     if (selection.mode() == SelectionMode::vertex) {
       selection.click_vertex(*v);
-      hint = "vertex " + mesh.vertex_label(*v) +
+      hint = (rims.is_rim(*v) ? "rim vertex " + rims.name(mesh, *v) : "vertex " + mesh.vertex_label(*v)) +
              (contains(selection.vertices(), *v) ? " selected" : " deselected");
     } else {
-      hint = select_border(selection, shown, *v);
+      hint = select_border(selection, shown, rims, *v);
     }
   }
   if (!hint.empty() && !is_editable(shown.stage))
     hint += std::string(" in the ") + to_string(shown.stage) +
             " stage (to look; edits need the scene or merged stage)";
   return hint;
+}
+
+std::string select_instance(Selection& selection, const StageResult& shown, const TriangleBvh& bvh,
+                            const scene::Scene* scene, const ScreenProjection& projection, glm::dvec2 pixel) {
+  const auto face = pick_face(bvh, projection, pixel);
+  if (!face) return {};
+  const auto& names = shown.mesh->face_names();
+  const auto path = scene && *face < names.size() ? scene->instance_of_face(names[*face]) : std::nullopt;
+  if (!path) return "no instance: instance mode needs a scene file on the scene or merged stage";
+  selection.click_instance(*path);
+  const auto& selected = selection.instances();
+  return "instance " + *path +
+         (std::find(selected.begin(), selected.end(), *path) != selected.end() ? " selected" : " deselected");
 }
 
 BorderSelection zipper_border(const BorderLookup& borders, const Selection::Border& border) {
@@ -71,16 +99,32 @@ BorderSelection zipper_border(const BorderLookup& borders, const Selection::Bord
   return out;
 }
 
-void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Selection& selection,
-                    const glm::vec3& color) {
-  renderer.set_selected_faces(selection.faces());
-  std::vector<Index> marked(selection.vertices().begin(), selection.vertices().end());
+void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const PickableRims& rims,
+                    const Selection& selection, const glm::vec3& color, const glm::vec3& rim_color) {
+  // Selected instances show as their faces selected.
+  std::vector<Index> faces = selection.faces();
+  const auto& face_names = mesh.face_names();
+  for (const std::string& path : selection.instances())
+    for (Index f = 0; f < face_names.size(); ++f)
+      if (face_names[f].size() > path.size() && face_names[f].compare(0, path.size(), path) == 0 &&
+          face_names[f][path.size()] == '_')
+        faces.push_back(f);
+  renderer.set_selected_faces(faces);
+  std::vector<Index> marked;
+  for (Index v : selection.vertices())
+    if (!rims.is_rim(v)) marked.push_back(v);
   // The first vertex of each whole border is the zipper's matching point: marked as a cube.
   for (const auto& border : selection.borders())
-    if (border.is_loop && !border.vertices.empty()) marked.push_back(border.vertices[0]);
-  std::vector<render::CubeMarker> markers = render::vertex_markers(mesh, marked, color);
-  for (const render::CubeMarker& m :
-       render::vertex_markers(mesh, selection.pending_ends(), {0.1f, 0.7f, 0.3f}))
+    if (border.is_loop && !border.vertices.empty() && !rims.is_rim(border.vertices[0]))
+      marked.push_back(border.vertices[0]);
+  std::vector<Index> rim_selected = selection.vertices();
+  rim_selected.insert(rim_selected.end(), selection.pending_ends().begin(), selection.pending_ends().end());
+  std::vector<render::CubeMarker> markers = rim_markers(rims, rim_selected, rim_color, color);
+  for (const render::CubeMarker& m : render::vertex_markers(mesh, marked, color)) markers.push_back(m);
+  std::vector<Index> pending;
+  for (Index v : selection.pending_ends())
+    if (!rims.is_rim(v)) pending.push_back(v);
+  for (const render::CubeMarker& m : render::vertex_markers(mesh, pending, {0.1f, 0.7f, 0.3f}))
     markers.push_back(m);
   renderer.set_markers(markers);
   std::vector<glm::vec3> points;
@@ -91,7 +135,7 @@ void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Sel
   }
   for (const auto& border : selection.borders()) {
     const std::uint32_t first = std::uint32_t(points.size());
-    for (Index v : border.vertices) points.push_back(glm::vec3(mesh.position(v)));
+    for (Index v : border.vertices) points.push_back(glm::vec3(rims.position(mesh, v)));
     const std::uint32_t n = std::uint32_t(border.vertices.size());
     for (std::uint32_t i = 0; i + 1 < n; ++i) segments.insert(segments.end(), {first + i, first + i + 1});
     if (border.is_loop && n > 2) segments.insert(segments.end(), {first + n - 1, first});

@@ -47,7 +47,8 @@ struct Syntax {
 
 const Syntax syntaxes[] = {
     {"set", ScriptCommand::Kind::set, 1, 1, "set BANK_PARAM VALUE"},
-    {"mode", ScriptCommand::Kind::mode, 1, 0, "mode vertex|face|border|border-partial|edge"},
+    {"mode", ScriptCommand::Kind::mode, 1, 0, "mode vertex|face|border|border-partial|edge|instance"},
+    {"color", ScriptCommand::Kind::color, 0, 3, "color R G B (0..1)"},
     {"click", ScriptCommand::Kind::click, 0, 2, "click X Y (window pixels)"},
     {"double-click", ScriptCommand::Kind::double_click, 0, 2, "double-click X Y (window pixels)"},
     {"key", ScriptCommand::Kind::key, 1, 0, "key LABEL (W, Ctrl+Z, F1, ...)"},
@@ -66,7 +67,7 @@ const Syntax syntaxes[] = {
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 
-const char* const modes[] = {"vertex", "face", "border", "border-partial", "edge"};
+const char* const modes[] = {"vertex", "face", "border", "border-partial", "edge", "instance"};
 const char* const recovery_answers[] = {"restore", "discard"};
 const char* const unsaved_answers[] = {"save", "discard", "cancel"};
 const char* const scrolled_panels[] = {"controls", "parameters", "log"};
@@ -84,7 +85,7 @@ std::string expected_word(const ScriptCommand& command) {
   if (command.words.empty()) return {};
   const std::string& word = command.words[0];
   if (command.kind == Kind::mode && !is_one_of(word, modes))
-    return "vertex, face, border, border-partial or edge";
+    return "vertex, face, border, border-partial, edge or instance";
   if (command.kind == Kind::action && !find_action(word)) return "an action (" + action_names() + ")";
   if (command.kind == Kind::recover && !is_one_of(word, recovery_answers)) return "restore or discard";
   if (command.kind == Kind::prompt && !is_one_of(word, unsaved_answers)) return "save, discard or cancel";
@@ -97,7 +98,8 @@ std::string expected_word(const ScriptCommand& command) {
 const char* script_synopsis() {
   return "script commands, one a line (# comments):\n"
          "  set BANK_PARAM VALUE      move a slider\n"
-         "  mode vertex|face|border|border-partial\n"
+         "  mode vertex|face|border|border-partial|edge|instance\n"
+         "  color R G B               give the selected instances this colour (0..1 each)\n"
          "  click X Y                 left click at window pixel (X, Y), origin top-left\n"
          "  double-click X Y          move the orbit centre to the surface under pixel (X, Y)\n"
          "  key LABEL                 press a key of the help overlay (W, S, X, Ctrl+Z, ...)\n"
@@ -136,7 +138,7 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
       if (words[0].text == s.word) syntax = &s;
     if (!syntax) {
       fail(words[0].column,
-           "expected a command (set, mode, click, double-click, key, action, subdiv, offset, view, "
+           "expected a command (set, mode, color, click, double-click, key, action, subdiv, offset, view, "
            "screenshot, save, export, recover, drop, prompt, layout, scroll, quit), found '" +
                words[0].text + "'");
       continue;

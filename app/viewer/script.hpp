@@ -15,6 +15,7 @@ struct ScriptCommand {
     double_click,
     key,
     action,
+    color,
     subdiv,
     offset,
     view,

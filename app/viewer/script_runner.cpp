@@ -10,6 +10,7 @@ SelectionMode mode_named(const std::string& word) {
   if (word == "border") return SelectionMode::border;
   if (word == "border-partial") return SelectionMode::border_partial;
   if (word == "edge") return SelectionMode::edge;
+  if (word == "instance") return SelectionMode::instance;
   return SelectionMode::vertex;
 }
 
@@ -53,6 +54,8 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::click:
       host.click(pixel);
       return true;
+    case Kind::color:
+      return host.color_instances(glm::vec3(c.numbers[0], c.numbers[1], c.numbers[2]));
     case Kind::double_click:
       return host.double_click(pixel);
     case Kind::drop:

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "viewer/actions.hpp"
 #include "viewer/message_log.hpp"
@@ -22,6 +23,8 @@ class ScriptHost {
   virtual ~ScriptHost() = default;
   virtual void set_mode(SelectionMode mode) = 0;
   virtual void click(glm::dvec2 pixel) = 0;
+  // Gives the selected instances a colour; false when refused (logged).
+  virtual bool color_instances(glm::vec3 color) = 0;
   // False when no surface is under the pixel.
   virtual bool double_click(glm::dvec2 pixel) = 0;
   virtual bool drop(const std::vector<std::filesystem::path>& paths) = 0;

@@ -30,6 +30,8 @@ const char* to_string(SelectionMode mode) {
       return "border-partial";
     case SelectionMode::edge:
       return "edge";
+    case SelectionMode::instance:
+      return "instance";
   }
   return "vertex";
 }
@@ -51,12 +53,17 @@ void Selection::click_edge(Index e) {
   toggle(edges_, e);
 }
 
+void Selection::click_instance(const std::string& path) {
+  toggle(instances_, path);
+}
+
 void Selection::clear() {
   vertices_.clear();
   faces_.clear();
   edges_.clear();
   borders_.clear();
   pending_.clear();
+  instances_.clear();
 }
 
 std::string Selection::click_border_vertex(const BorderLookup& lookup, Index v) {
@@ -70,7 +77,7 @@ std::string Selection::click_border_vertex(const BorderLookup& lookup, Index v) 
     }
   }
   if (mode_ == SelectionMode::border) {
-    borders_.push_back({lookup.whole_loop_from(v), true});
+    borders_.push_back({lookup.whole_loop_from(v), lookup.is_closed(lookup.loop_of(v))});
     return {};
   }
   return click_partial(lookup, v);
@@ -89,7 +96,11 @@ std::string Selection::click_partial(const BorderLookup& lookup, Index v) {
     // Neighbouring ends leave no choice of side (report 7.3.2).
     if (!lookup.are_adjacent(pending_[0], pending_[1]))
       return "partial border: pick a vertex on the side to keep";
-    borders_.push_back({{pending_[0], pending_[1]}, false});
+    // An open rim line has one path between two of its vertices.
+    const bool is_open = !lookup.is_closed(lookup.loop_of(pending_[0]));
+    borders_.push_back({is_open ? *lookup.segment(pending_[0], pending_[1], no_index)
+                                : std::vector<Index>{pending_[0], pending_[1]},
+                        false});
     pending_.clear();
     return {};
   }

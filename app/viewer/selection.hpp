@@ -7,7 +7,7 @@
 
 namespace nome::viewer {
 
-enum class SelectionMode { vertex, face, border, border_partial, edge };
+enum class SelectionMode { vertex, face, border, border_partial, edge, instance };
 
 const char* to_string(SelectionMode mode);
 
@@ -24,18 +24,22 @@ class Selection {
   void click_vertex(Index v);
   void click_face(Index f);
   void click_edge(Index e);
+  // Instance mode (report 8.4): a click on a face selects the instance that placed it, by path.
+  void click_instance(const std::string& path);
   // Border modes act on border vertices only; returns a hint for the status bar when the click did
   // nothing or needs a follow-up ("pick the other end").
   std::string click_border_vertex(const BorderLookup& borders, Index v);
 
   void clear();
   bool is_empty() const {
-    return vertices_.empty() && faces_.empty() && edges_.empty() && borders_.empty() && pending_.empty();
+    return vertices_.empty() && faces_.empty() && edges_.empty() && borders_.empty() && pending_.empty() &&
+           instances_.empty();
   }
 
   const std::vector<Index>& vertices() const { return vertices_; }
   const std::vector<Index>& faces() const { return faces_; }
   const std::vector<Index>& edges() const { return edges_; }
+  const std::vector<std::string>& instances() const { return instances_; }
   // Whole loops (closed, from the clicked vertex) and partial segments (open, end to end).
   struct Border {
     std::vector<Index> vertices;
@@ -54,6 +58,7 @@ class Selection {
   std::vector<Index> edges_;
   std::vector<Border> borders_;
   std::vector<Index> pending_;
+  std::vector<std::string> instances_;
 };
 
 }  // namespace nome::viewer

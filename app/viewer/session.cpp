@@ -69,6 +69,15 @@ EditOutcome Session::add_polygon(const Mesh& displayed, std::span<const Index> v
   return changed(document_.edits().add_polygon(names));
 }
 
+EditOutcome Session::add_polygon(const std::vector<std::string>& vertex_names) {
+  return changed(document_.edits().add_polygon(vertex_names));
+}
+
+EditOutcome Session::zip_chains(const std::vector<std::string>& a, const std::vector<std::string>& b,
+                                const ZipperOptions& options) {
+  return changed(document_.edits().zip_chains(a, b, options));
+}
+
 EditOutcome Session::accept_temporary() {
   return changed(document_.edits().accept_temporary());
 }
@@ -120,6 +129,18 @@ void Session::set_parameter(Index parameter, double value) {
 void Session::set_parameter(const std::string& name, double value) {
   if (!scene()) throw InvalidInputError("set: " + path_.filename().string() + " has no sliders");
   document_.set_parameter(name, value);
+  is_modified_ = true;
+  update_input();
+}
+
+void Session::set_instance_color(const std::string& path, Color color) {
+  document_.set_instance_color(path, color);
+  is_modified_ = true;
+  update_input();
+}
+
+void Session::set_instance_surface(const std::string& path, const std::optional<std::string>& surface) {
+  document_.set_instance_surface(path, surface);
   is_modified_ = true;
   update_input();
 }

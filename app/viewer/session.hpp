@@ -5,6 +5,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "nome/edit/scene_document.hpp"
 #include "nome/ops/zipper.hpp"
@@ -49,6 +50,11 @@ class Session {
   void set_parameter(Index parameter, double value);
   void set_parameter(const std::string& name, double value);
 
+  // Gives the instance (a placement path) a colour or names its surface again (undo); throws
+  // InvalidInputError for flat geometry or an unknown instance.
+  void set_instance_color(const std::string& path, Color color);
+  void set_instance_surface(const std::string& path, const std::optional<std::string>& surface);
+
   // Saves the scene with its slider values and the consolidated faces and deletions as .nome
   // (atomically); the saved file becomes the session's file. Temporary faces are not saved. While an
   // accepted edit's vertices or face are gone at the current slider values the file could not hold it:
@@ -60,11 +66,16 @@ class Session {
   // Edits of report 7.3.3, on vertices and faces of `displayed` (the scene or merged stage). Each returns
   // what happened; a refused edit changes nothing.
   EditOutcome add_polygon(const Mesh& displayed, std::span<const Index> vertices);
+  // The same by the vertices' names (rim vertices have no id in the displayed mesh).
+  EditOutcome add_polygon(const std::vector<std::string>& vertex_names);
   EditOutcome accept_temporary();
   EditOutcome clear_temporary();
   EditOutcome delete_faces(const Mesh& displayed, std::span<const Index> faces);
   EditOutcome zipper(const Mesh& displayed, const BorderSelection& a, const BorderSelection& b,
                      const ZipperOptions& options);
+  // Zips chains of named vertices: rim lines (report 6.3) or borders, in any mix (Document::zip_chains).
+  EditOutcome zip_chains(const std::vector<std::string>& a, const std::vector<std::string>& b,
+                         const ZipperOptions& options);
   // Marks the edges of `displayed` sharp (or smooth), by their vertices' names.
   EditOutcome set_sharp(const Mesh& displayed, std::span<const Index> edges, bool is_sharp);
   bool undo();

@@ -181,7 +181,7 @@ void SessionController::move_sliders(const std::vector<std::pair<Index, double>>
 }
 
 bool SessionController::edit(Action action, const StageResult* shown, const Selection& selection,
-                             const ZipperOptions& zipper) {
+                             const ZipperOptions& zipper, const PickableRims& rims) {
   const std::string name = action_name(action);
   EditOutcome outcome{false, {}};
   if (action == Action::undo || action == Action::redo) {
@@ -193,7 +193,9 @@ bool SessionController::edit(Action action, const StageResult* shown, const Sele
   } else if (action == Action::clear_temporary) {
     outcome = session_->clear_temporary();
   } else if (action == Action::add_polygon) {
-    outcome = session_->add_polygon(*shown->mesh, selection.vertices());
+    std::vector<std::string> names;
+    for (Index v : selection.vertices()) names.push_back(rims.name(*shown->mesh, v));
+    outcome = session_->add_polygon(names);
   } else if (action == Action::toggle_sharp) {
     // Smooth when every selected edge is sharp already, sharp otherwise.
     const auto& edges = selection.edges();
@@ -204,8 +206,12 @@ bool SessionController::edit(Action action, const StageResult* shown, const Sele
     outcome = session_->delete_faces(*shown->mesh, selection.faces());
   } else if (action == Action::zip) {
     const auto& borders = selection.borders();
-    outcome = session_->zipper(*shown->mesh, zipper_border(*shown->borders, borders[0]),
-                               zipper_border(*shown->borders, borders[1]), zipper);
+    if (touches_rim(rims, borders[0]) || touches_rim(rims, borders[1]))
+      outcome = session_->zip_chains(chain_names(*shown->mesh, rims, borders[0]),
+                                     chain_names(*shown->mesh, rims, borders[1]), zipper);
+    else
+      outcome = session_->zipper(*shown->mesh, zipper_border(*shown->borders, borders[0]),
+                                 zipper_border(*shown->borders, borders[1]), zipper);
   }
   if (!outcome.applied) {
     log_.error(name + ": " + outcome.message);

@@ -10,6 +10,7 @@
 #include "viewer/autosave.hpp"
 #include "viewer/message_log.hpp"
 #include "viewer/recent_files.hpp"
+#include "viewer/rim_picking.hpp"
 #include "viewer/selection.hpp"
 #include "viewer/session.hpp"
 #include "viewer/stage_pipeline.hpp"
@@ -76,8 +77,14 @@ class SessionController {
 
   // An edit action (undo, redo, accept, clear, and on the shown scene or merged stage with the selection
   // on it: add-polygon, delete, zip with two borders); needs a session. Undo and redo go through the
-  // one history of edits and slider moves. The log says what happened. Returns whether it applied.
-  bool edit(Action action, const StageResult* shown, const Selection& selection, const ZipperOptions& zipper);
+  // one history of edits and slider moves. The log says what happened. Returns whether it applied. Rim
+  // vertices in the selection are named through `rims`.
+  // Gives the instances (placement paths) a colour as one step of the history (report 8.4); logs and
+  // returns false when refused (nothing selected, flat geometry).
+  bool color_instances(const std::vector<std::string>& paths, Color color);
+
+  bool edit(Action action, const StageResult* shown, const Selection& selection, const ZipperOptions& zipper,
+            const PickableRims& rims = {});
 
   // Once a frame: reloads the file when it changed on disk (every half second at most) and keeps the
   // recovery file of unsaved changes.
@@ -103,6 +110,9 @@ class SessionController {
   bool pair_sif_triangles_ = true;
 
   bool apply_moves(const std::vector<std::pair<Index, double>>& moves);
+  // session_colors.cpp: names the instances' surfaces (an undo or redo of colours).
+  using InstanceSurfaces = std::vector<std::pair<std::string, std::optional<std::string>>>;
+  bool set_instance_surfaces(const InstanceSurfaces& surfaces);
   // Logs the edits a slider move left without their vertices (kept, hidden) and those it brought back.
   void report_unresolved(const std::vector<UnresolvedEdit>& before);
   UndoHistory::Step slider_step(std::vector<std::pair<Index, double>> before,

@@ -57,20 +57,4 @@ void StageView::take_picking_bvh(std::chrono::milliseconds patience) {
     picking_bvh_ = done->bvh;
 }
 
-RimLines rim_lines(const Session& session) {
-  RimLines lines;
-  const scene::Scene* scene = session.scene();
-  if (!scene) return lines;
-  for (const scene::SceneInstance& instance : scene->instances())
-    for (const scene::RimLine& rim : instance.geometry.rims) {
-      const auto first = std::uint32_t(lines.points.size());
-      const auto n = std::uint32_t(rim.vertices.size());
-      for (Index v : rim.vertices) lines.points.push_back(instance.geometry.soup.positions[v]);
-      for (std::uint32_t i = 0; i + 1 < n; ++i)
-        lines.segments.insert(lines.segments.end(), {first + i, first + i + 1});
-      if (rim.is_loop && n > 2) lines.segments.insert(lines.segments.end(), {first + n - 1, first});
-    }
-  return lines;
-}
-
 }  // namespace nome::viewer

@@ -64,11 +64,4 @@ class StageView {
   std::shared_ptr<const TriangleBvh> picking_bvh_;  // of shown_, once built
 };
 
-// The scene's rim lines (`polyline`, `circle`): drawn over every stage, as they have no faces.
-struct RimLines {
-  std::vector<Vec3> points;
-  std::vector<std::uint32_t> segments;  // two indices into points each
-};
-RimLines rim_lines(const Session& session);
-
 }  // namespace nome::viewer

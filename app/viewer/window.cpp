@@ -6,6 +6,7 @@
 
 #include "nome/error.hpp"
 #include "nome/io/read_scene.hpp"
+#include "nome/scene/scene_rim_lines.hpp"
 #include "render/bounding_box.hpp"
 #include "render/image.hpp"
 
@@ -233,12 +234,8 @@ void Window::answer_recovery(bool restore) {
 void Window::update_stage() {
   const Session* session = sessions_.session();
   if (!session) return;
-  if (stage_.request(*session)) {
-    RimLines rims = rim_lines(*session);
-    const std::vector<glm::vec3> points(rims.points.begin(), rims.points.end());
-    renderer_.set_lines(render::Overlay::rim, points, rims.segments);
-    rim_points_ = std::move(rims.points);
-  }
+  if (stage_.request(*session))
+    show_rim_lines(session->scene() ? scene::scene_rim_lines(*session->scene()) : RimLines{});
   // Short work shows in the frame that asked for it; longer work leaves the last picture up meanwhile.
   try {
     if (auto result = stage_.take(std::chrono::milliseconds(30))) show_result(std::move(*result));
@@ -270,15 +267,38 @@ void Window::show_result(StageResult result) {
   shown_size_ = box.is_empty() ? glm::dvec3(0.0) : box.max - box.min;
   renderer_.set_mesh(result.display);
   stage_.show(std::move(result), platform_.now());
+  rims_ = pickable_rims(rim_lines_, mesh, stage_.shown()->borders);
   show_face_colors(renderer_, *stage_.shown(), edit_colors_);
   refresh_selection();
 }
 
 void Window::refresh_selection() {
   if (const Mesh* mesh = stage_.shown_mesh()) {
-    show_selection(renderer_, *mesh, selection_, display_.selection_color);
+    show_selection(renderer_, *mesh, rims_, selection_, display_.selection_color, rim_color_);
     show_sharp_edges(renderer_, *mesh);
   }
+}
+
+void Window::show_rim_lines(RimLines lines) {
+  // Rim vertex ids follow the mesh's: other lines make other ids.
+  if (lines.offsets != rim_lines_.offsets && !selection_.is_empty()) {
+    selection_.clear();
+    log_.info("selection cleared: the rim lines changed");
+  }
+  std::vector<glm::vec3> points;
+  std::vector<std::uint32_t> segments;
+  for (Index l = 0; l < lines.num_lines(); ++l) {
+    const auto first = std::uint32_t(points.size()), n = lines.offsets[l + 1] - lines.offsets[l];
+    for (Index v = lines.offsets[l]; v < lines.offsets[l + 1]; ++v)
+      points.push_back(glm::vec3(lines.positions[v]));
+    for (std::uint32_t i = 0; i + 1 < n; ++i) segments.insert(segments.end(), {first + i, first + i + 1});
+    if (lines.is_closed[l] && n > 2) segments.insert(segments.end(), {first + n - 1, first});
+  }
+  renderer_.set_lines(render::Overlay::rim, points, segments);
+  rim_lines_ = std::move(lines);
+  if (const StageResult* shown = stage_.shown())
+    rims_ = pickable_rims(rim_lines_, *shown->mesh, shown->borders);
+  refresh_selection();
 }
 
 void Window::frame_all() {
@@ -286,7 +306,8 @@ void Window::frame_all() {
     is_framing_pending_ = true;
     return;
   }
-  if (const Mesh* mesh = stage_.shown_mesh()) view_.frame(mesh->positions(), rim_points_, layout_.viewport);
+  if (const Mesh* mesh = stage_.shown_mesh())
+    view_.frame(mesh->positions(), rim_lines_.positions, layout_.viewport);
 }
 
 void Window::draw_prompts() {

@@ -94,6 +94,7 @@ class Window : private ScriptHost {
   void update_stage();
   void show_result(StageResult result);
   void refresh_selection();
+  void show_rim_lines(RimLines lines);
   void frame_all();
   void draw_prompts();
   // window_history.cpp
@@ -122,6 +123,7 @@ class Window : private ScriptHost {
   // ScriptHost (window_actions.cpp)
   void set_mode(SelectionMode mode) override { selection_.set_mode(mode); }
   void click(glm::dvec2 pixel) override;
+  bool color_instances(glm::vec3 color) override;
   bool double_click(glm::dvec2 pixel) override;
   void answer_unsaved(UnsavedAnswer answer) override;
   bool press_key(const std::string& label) override { return actions_.press(label); }
@@ -155,9 +157,11 @@ class Window : private ScriptHost {
   render::DisplaySettings display_;
   glm::vec3 rim_color_{0.05f, 0.45f, 0.55f};
   EditColors edit_colors_;
+  glm::vec3 instance_color_{0.9f, 0.45f, 0.1f};
   ZipperOptions zipper_options_;
-  std::vector<Vec3> rim_points_;  // framed with the mesh
-  glm::dvec3 shown_size_{0.0};    // the shown stage's bounding box
+  RimLines rim_lines_;          // the scene's, drawn over every stage and framed with the mesh
+  PickableRims rims_;           // rim_lines_ numbered after the shown mesh's vertices
+  glm::dvec3 shown_size_{0.0};  // the shown stage's bounding box
   PanelVisibility panels_;
   ParameterPanelState parameters_;
 

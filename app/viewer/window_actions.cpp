@@ -157,7 +157,7 @@ bool Window::edit(Action action) {
                std::to_string(selection_.borders().size()));
     return false;
   }
-  if (!sessions_.edit(action, stage_.shown(), selection_, zipper_options_)) return false;
+  if (!sessions_.edit(action, stage_.shown(), selection_, zipper_options_, rims_)) return false;
   // The picked elements went into the edit (or went away with it).
   if (is_on_selection) actions_.run(Action::clear_selection);
   return true;
@@ -168,10 +168,20 @@ bool Window::edit(Action action) {
 void Window::click(glm::dvec2 pixel) {
   const StageResult* shown = stage_.shown();
   if (!shown) return;
+  const ScreenProjection projection = view_.projection(layout_.viewport);
   const std::string hint =
-      select_at(selection_, *shown, stage_.picking_bvh(), view_.projection(layout_.viewport), pixel);
+      selection_.mode() == SelectionMode::instance
+          ? select_instance(selection_, *shown, stage_.picking_bvh(), sessions_.scene(), projection, pixel)
+          : select_at(selection_, *shown, stage_.picking_bvh(), rims_, projection, pixel);
   if (!hint.empty()) log_.info(hint);
   refresh_selection();
+}
+
+bool Window::color_instances(glm::vec3 color) {
+  instance_color_ = color;
+  if (!sessions_.color_instances(selection_.instances(), color)) return false;
+  refresh_selection();
+  return true;
 }
 
 bool Window::double_click(glm::dvec2 pixel) {

@@ -72,8 +72,8 @@ std::vector<Index> Window::selection_parameters(const scene::Scene& scene) const
   const auto& names = mesh->vertex_names();
   std::vector<Index> parameters;
   for (Index v : vertices)
-    if (v < names.size())
-      for (Index p : scene.parameters_of_vertex(names[v])) parameters.push_back(p);
+    if (v < names.size() || rims_.is_rim(v))
+      for (Index p : scene.parameters_of_vertex(rims_.name(*mesh, v))) parameters.push_back(p);
   return parameters;
 }
 
@@ -109,9 +109,11 @@ void Window::draw_sidebars() {
   if (layout_settings_.is_left_shown) {
     report_.panels.push_back({"controls", layout_.left});
     if (begin_docked_panel("Controls", layout_.left, &width, take_scroll(ScrolledPanel::controls))) {
-      const ControlPanelChanges changes = draw_control_panel(
-          actions_, {selection_, stage_.settings(), zipper_options_, display_, rim_color_, edit_colors_,
-                     sessions_.document(), can_edit(), sessions_.is_parameter_lock_on(), sif_pairing()});
+      const ControlPanelChanges changes =
+          draw_control_panel(actions_, {selection_, stage_.settings(), zipper_options_, display_, rim_color_,
+                                        edit_colors_, sessions_.document(), can_edit(),
+                                        sessions_.is_parameter_lock_on(), sif_pairing(), instance_color_});
+      if (changes.is_instance_color_applied) color_instances(instance_color_);
       if (changes.is_selection_changed) refresh_selection();
       if (changes.is_edit_color_changed && stage_.shown())
         show_face_colors(renderer_, *stage_.shown(), edit_colors_);
@@ -152,7 +154,11 @@ void Window::draw_status() {
                         shown->mesh->num_vertices(),
                         shown->mesh->num_faces(),
                         selection_.mode(),
-                        shown_size_};
+                        shown_size_,
+                        {}};
+  if (status)
+    for (const std::string& path : selection_.instances())
+      status->instances += (status->instances.empty() ? "" : ", ") + path;
   draw_status_bar(status, log_);
 }
 

@@ -137,6 +137,10 @@ CommandResult run_window(const std::string& arguments, const viewer::ViewerStore
 }
 
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation) {
+  return viewer_projection(std::span(mesh.positions().data(), mesh.positions().size()), azimuth, elevation);
+}
+
+ScreenProjection viewer_projection(std::span<const Vec3> points, double azimuth, double elevation) {
   // The viewport of a window with no file, as a scripted session lays it out (the same every time).
   static const viewer::ScreenRect viewport = [] {
     ImGuiContext* const current = ImGui::GetCurrentContext();
@@ -153,7 +157,7 @@ ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elev
   }();
   render::Camera camera;
   camera.set_view(azimuth, elevation);
-  camera.fit(mesh.positions(), viewport.size.x / viewport.size.y);
+  camera.fit(points, viewport.size.x / viewport.size.y);
   return camera.screen_projection(viewport.size, viewport.origin);
 }
 

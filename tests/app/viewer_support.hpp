@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 #include <glm/vec2.hpp>
@@ -112,6 +113,8 @@ CommandResult run_window(const std::string& arguments,
 // The camera of the viewer after the script command `view AZ EL` (framed to the mesh in the viewport of
 // a scripted session's window, between its panels).
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation);
+// The same framed to any points (a scene with rim lines frames them with its mesh).
+ScreenProjection viewer_projection(std::span<const Vec3> points, double azimuth, double elevation);
 
 // A window pixel where clicking in vertex mode picks vertex v (checked with the kernel's own pick),
 // if v is visible there.

@@ -109,8 +109,8 @@ std::vector<Document::EdgeUse> Document::uses_of(Index u, Index w) const {
   return uses;
 }
 
-std::string Document::check_face(EditedFace& face, const std::vector<EditedFace>& pending,
-                                 bool orient) const {
+std::string Document::check_face(EditedFace& face, const std::vector<EditedFace>& pending, bool orient,
+                                 int* votes_out) const {
   const size_t n = face.vertices.size();
   if (n < 3) return "a polygon needs at least 3 vertices, " + std::to_string(n) + " selected";
   std::vector<Index> ids;
@@ -137,6 +137,7 @@ std::string Document::check_face(EditedFace& face, const std::vector<EditedFace>
     if (uses.size() == 1) votes += uses[0].runs_up == (u < w) ? -1 : 1;
   }
   if (orient && votes < 0) std::reverse(face.vertices.begin(), face.vertices.end());
+  if (votes_out) *votes_out = votes;
   return {};
 }
 
@@ -146,29 +147,6 @@ EditOutcome Document::add_polygon(const std::vector<std::string>& vertex_names) 
   face.name = next_face_name();
   const std::string message = "added " + face.name + " to the temporary mesh";
   execute(AddTemporary{{std::move(face)}});
-  return {true, message};
-}
-
-EditOutcome Document::zipper(const Mesh& displayed, const BorderSelection& a, const BorderSelection& b,
-                             const ZipperOptions& options) {
-  if (displayed.vertex_names().empty()) return {false, "the mesh has no vertex names to refer to"};
-  ZipperFaces strip;
-  try {
-    strip = zipper_borders(displayed, a, b, options);
-  } catch (const InvalidInputError& e) {
-    return {false, e.what()};
-  }
-  std::vector<EditedFace> faces;
-  for (const auto& polygon : strip.faces) {
-    EditedFace face;
-    for (Index v : polygon) face.vertices.push_back(displayed.vertex_names()[v]);
-    if (std::string refused = check_face(face, faces, false); !refused.empty()) return {false, refused};
-    face.name = next_face_name();
-    faces.push_back(std::move(face));
-  }
-  const std::string message = "zipper: " + std::to_string(strip.quads) + " quads and " +
-                              std::to_string(strip.triangles) + " triangles added to the temporary mesh";
-  execute(AddTemporary{std::move(faces)});
   return {true, message};
 }
 

@@ -59,6 +59,18 @@ std::vector<Index> SceneDocument::set_parameter(const std::string& name, double 
   return set_parameter(*id, value);
 }
 
+void SceneDocument::set_instance_color(const std::string& path, Color color) {
+  if (!scene_) throw InvalidInputError("colour: flat geometry has no instances");
+  scene_->set_instance_color(path, color);
+  document_.set_scene_geometry(scene_->combined_soup());
+}
+
+void SceneDocument::set_instance_surface(const std::string& path, const std::optional<std::string>& surface) {
+  if (!scene_) throw InvalidInputError("colour: flat geometry has no instances");
+  scene_->set_instance_surface(path, surface);
+  document_.set_scene_geometry(scene_->combined_soup());
+}
+
 void SceneDocument::apply_anom(std::string_view text, const std::string& file) {
   if (!scene_)
     throw InvalidInputError(file + ": an .anom file applies to an open scene: open its .nome first");

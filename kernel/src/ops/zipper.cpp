@@ -121,14 +121,7 @@ std::vector<Index> border_chain(const Mesh& mesh, const BorderSelection& selecti
                           " is not on a border");
 }
 
-ZipperFaces zipper_borders(const Mesh& mesh, const BorderSelection& a, const BorderSelection& b,
-                           const ZipperOptions& options) {
-  const std::vector<Index> chain_a = border_chain(mesh, a), chain_b = border_chain(mesh, b);
-  const bool a_closed = a.start == a.end, b_closed = b.start == b.end;
-  if (a_closed != b_closed)
-    throw InvalidInputError(
-        "zipper_borders: zip a whole border with a whole border, or a segment with a segment");
-  // The chains may share their end vertices (closing a slit), never anything else.
+Index chains_overlap(std::span<const Index> chain_a, std::span<const Index> chain_b) {
   std::vector<Index> inner_a(chain_a.begin() + 1, chain_a.end() - 1);
   std::sort(inner_a.begin(), inner_a.end());
   for (size_t k = 0; k < chain_b.size(); ++k) {
@@ -136,21 +129,24 @@ ZipperFaces zipper_borders(const Mesh& mesh, const BorderSelection& a, const Bor
                             (chain_b[k] == chain_a.front() || chain_b[k] == chain_a.back());
     if (std::binary_search(inner_a.begin(), inner_a.end(), chain_b[k]) ||
         (!shared_end && (chain_b[k] == chain_a.front() || chain_b[k] == chain_a.back())))
-      throw InvalidInputError("zipper_borders: the two borders overlap at " + mesh.vertex_label(chain_b[k]));
+      return chain_b[k];
   }
+  return no_index;
+}
 
+ZipperFaces zipper_chains(std::span<const Vec3> positions, std::span<const Index> chain_a,
+                          std::span<const Index> chain_b, const ZipperOptions& options) {
+  if (chain_a.size() < 2 || chain_b.size() < 2)
+    throw InvalidInputError("zipper_chains: a chain needs two vertices at least");
+  const bool a_closed = chain_a.front() == chain_a.back(), b_closed = chain_b.front() == chain_b.back();
+  if (a_closed != b_closed)
+    throw InvalidInputError("zipper_chains: zip a whole loop with a whole loop, or a segment with a segment");
+  if (const Index v = chains_overlap(chain_a, chain_b); v != no_index)
+    throw InvalidInputError("zipper_chains: the two chains overlap at vertex " + std::to_string(v));
   std::vector<Vec3> points_a, points_b;
-  for (Index v : chain_a) points_a.push_back(mesh.position(v));
-  for (Index v : chain_b) points_b.push_back(mesh.position(v));
+  for (Index v : chain_a) points_a.push_back(positions[v]);
+  for (Index v : chain_b) points_b.push_back(positions[v]);
   const ZipperStrip strip = zipper_strip(points_a, points_b, options);
-
-  // The strip runs along A forwards; it agrees with A's faces where they run along A backwards.
-  int agree = 0;
-  for (size_t k = 0; k + 1 < chain_a.size(); ++k)
-    for (Index e : mesh.vertex_edges(chain_a[k]))
-      if (mesh.edge(e).is_boundary() && mesh.edge(e).other_vertex(chain_a[k]) == chain_a[k + 1])
-        agree += mesh.edge(e).vertices[0] == chain_a[k] ? -1 : 1;
-
   ZipperFaces out;
   out.cost = strip.cost;
   for (Index f = 0; f < strip.num_faces(); ++f) {
@@ -163,10 +159,30 @@ ZipperFaces zipper_borders(const Mesh& mesh, const BorderSelection& a, const Bor
     // Where the chains share an end vertex the first or last face loses a corner.
     if (face.size() > 1 && face.front() == face.back()) face.pop_back();
     if (face.size() < 3) continue;
-    if (agree < 0) std::reverse(face.begin(), face.end());
     ++(face.size() == 3 ? out.triangles : out.quads);
     out.faces.push_back(std::move(face));
   }
+  return out;
+}
+
+ZipperFaces zipper_borders(const Mesh& mesh, const BorderSelection& a, const BorderSelection& b,
+                           const ZipperOptions& options) {
+  const std::vector<Index> chain_a = border_chain(mesh, a), chain_b = border_chain(mesh, b);
+  if ((a.start == a.end) != (b.start == b.end))
+    throw InvalidInputError(
+        "zipper_borders: zip a whole border with a whole border, or a segment with a segment");
+  if (const Index v = chains_overlap(chain_a, chain_b); v != no_index)
+    throw InvalidInputError("zipper_borders: the two borders overlap at " + mesh.vertex_label(v));
+  ZipperFaces out =
+      zipper_chains(std::span(mesh.positions().data(), mesh.positions().size()), chain_a, chain_b, options);
+  // The strip runs along A forwards; it agrees with A's faces where they run along A backwards.
+  int agree = 0;
+  for (size_t k = 0; k + 1 < chain_a.size(); ++k)
+    for (Index e : mesh.vertex_edges(chain_a[k]))
+      if (mesh.edge(e).is_boundary() && mesh.edge(e).other_vertex(chain_a[k]) == chain_a[k + 1])
+        agree += mesh.edge(e).vertices[0] == chain_a[k] ? -1 : 1;
+  if (agree < 0)
+    for (auto& face : out.faces) std::reverse(face.begin(), face.end());
   return out;
 }
 

@@ -52,7 +52,8 @@ TEST_CASE("every bad line of a script is reported with its line and column", "[a
     CHECK_THAT(message, Catch::Contains("s.txt:1:9: expected 'click X Y"));
     CHECK_THAT(
         message,
-        Catch::Contains("s.txt:2:6: expected vertex, face, border, border-partial or edge, found 'edges'"));
+        Catch::Contains(
+            "s.txt:2:6: expected vertex, face, border, border-partial, edge or instance, found 'edges'"));
     CHECK_THAT(message, Catch::Contains("s.txt:3:1: expected a command"));
     CHECK_THAT(message, Catch::Contains("s.txt:4:7: expected a number"));
     CHECK_THAT(message, Catch::Contains("s.txt:5:8: expected an action (") &&

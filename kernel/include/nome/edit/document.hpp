@@ -67,6 +67,14 @@ class Document {
   EditOutcome zipper(const Mesh& displayed, const BorderSelection& a, const BorderSelection& b,
                      const ZipperOptions& options = {});
 
+  // Zips two chains of named vertices into the temporary mesh: rim lines (report 6.3, vertices no face
+  // uses) or borders, in any mix. A whole loop is given from its start with the start repeated at the
+  // end; both are loops or both segments. Chain B is taken in the direction that gives the cheaper strip
+  // (a loop from the same start). The strip is oriented to agree with the faces already along the chains
+  // (either way when there are none).
+  EditOutcome zip_chains(const std::vector<std::string>& chain_a, const std::vector<std::string>& chain_b,
+                         const ZipperOptions& options = {});
+
   // Marks (or unmarks) the edges between the named vertex pairs sharp: infinitely sharp creases for
   // subdivision. Refused when a pair is no edge of the scene's faces, or, unmarking, when the edge is sharp
   // in the scene's own text (its `sharp` is changed there).
@@ -127,7 +135,12 @@ class Document {
   std::vector<EdgeUse> uses_of(Index u, Index w) const;
   // Why a new face cannot be added next to the current faces plus `pending` (faces of the same edit),
   // or empty; with `orient`, reverses it where its neighbours disagree with it.
-  std::string check_face(EditedFace& face, const std::vector<EditedFace>& pending, bool orient) const;
+  // `votes`, when given, receives how many of its edges shared with a face agree minus disagree.
+  std::string check_face(EditedFace& face, const std::vector<EditedFace>& pending, bool orient,
+                         int* votes = nullptr) const;
+  // Adds a zipper strip (faces by vertex names, counted in `strip`) to the temporary mesh, reversed first
+  // when `orient` and most of the existing faces along it disagree with it; refused with the reason.
+  EditOutcome add_strip(std::vector<EditedFace> faces, const ZipperFaces& strip, bool orient);
   Index vertex_id(const std::string& name) const;
   PolygonSoup edited_soup(const std::vector<EditedFace>& faces) const;
   std::string next_face_name() { return "edit" + std::to_string(++face_counter_); }

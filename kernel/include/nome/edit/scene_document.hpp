@@ -46,6 +46,12 @@ class SceneDocument {
   std::vector<Index> set_parameter(Index parameter, double value);
   std::vector<Index> set_parameter(const std::string& name, double value);
 
+  // Gives the instance (a placement path, `sh_tun1`) a colour, or names its surface again (an undo),
+  // as Scene::set_instance_color and set_instance_surface do; the faces take the colour at once. Throws
+  // InvalidInputError for flat geometry or an unknown instance.
+  void set_instance_color(const std::string& path, Color color);
+  void set_instance_surface(const std::string& path, const std::optional<std::string>& surface);
+
   // Applies an .anom text (the original program's saved slider values and working mesh, which replaces
   // the consolidated faces). Throws InvalidInputError for flat geometry, SceneError (nothing changes)
   // when its names or values do not fit the scene.

@@ -80,4 +80,16 @@ struct ZipperFaces {
 ZipperFaces zipper_borders(const Mesh& mesh, const BorderSelection& a, const BorderSelection& b,
                            const ZipperOptions& options = {});
 
+// The first vertex of chain B that chain A holds too, other than a shared end (closing a slit); no_index
+// when there is none.
+Index chains_overlap(std::span<const Index> chain_a, std::span<const Index> chain_b);
+
+// The strip between two chains of vertex ids into `positions`, faces running along A forwards (the
+// caller orients them). A whole loop is passed from its start with the start repeated at the end; both
+// chains are loops or both are segments. Throws InvalidInputError if the chains share a vertex other than
+// their ends (closing a slit) or only one is a loop. zipper_borders and the document's zipper along rim
+// lines (report 6.3) both build on it.
+ZipperFaces zipper_chains(std::span<const Vec3> positions, std::span<const Index> chain_a,
+                          std::span<const Index> chain_b, const ZipperOptions& options = {});
+
 }  // namespace nome

@@ -146,6 +146,18 @@ class Scene {
   // ambiguous name. The viewer lists the banks a selection depends on first.
   std::vector<Index> parameters_of_vertex(const std::string& name) const;
 
+  // Instance colours (report 8.4: colours given to selected instances). An instance is named by its
+  // placement's path (`sh_tun1`); the path of the instance that placed a face (the longest placement path
+  // its name starts with), none for a face no placement made.
+  std::optional<std::string> instance_of_face(const std::string& face_name) const;
+  // The surface the instance statement of that placement names, if any.
+  std::optional<std::string> instance_surface(const std::string& path) const;
+  // Names a surface in the instance statement (none: takes it out) and re-evaluates. A statement inside a
+  // group is every placement of that group. Throws InvalidInputError for an unknown path or surface.
+  void set_instance_surface(const std::string& path, const std::optional<std::string>& surface);
+  // Gives the instance a colour: a surface named for the colour (`rgb_ff8000`), added when missing.
+  void set_instance_color(const std::string& path, Color color);
+
   // How many placements have been evaluated since the scene was built (tests and status lines).
   std::size_t placement_evaluations() const { return placement_evaluations_; }
   // How many times a slider moved a placement's vertices without evaluating it whole.
@@ -184,6 +196,8 @@ class Scene {
   };
 
   Scene() = default;
+  // instance_colors.cpp: the placement of an instance path (throws InvalidInputError for none).
+  Index placement_of_instance(const std::string& path) const;
   // scene.cpp: the sliders and the names of definitions, then the whole evaluation.
   void register_parameters(std::vector<Diagnostic>& errors);
   Index add_parameter(Parameter p);

@@ -1,0 +1,57 @@
+// Colours given to instances (report 8.4), as the viewer gives them: a surface in the instance statement.
+#include <catch2/catch.hpp>
+
+#include "nome/scene/save_nome.hpp"
+#include "scene/scene_support.hpp"
+
+using namespace nome;
+using namespace nome::scene;
+
+namespace {
+
+const char* const two_funnels = R"(surface R color (1 0 0) endsurface
+funnel fun (6 1 0.5 1) endfunnel
+group pair
+  instance a fun endinstance
+  instance b fun translate (3 0 0) surface R endinstance
+endgroup
+instance p pair endinstance
+)";
+
+std::vector<Color> colors_of(const Scene& scene, const std::string& prefix) {
+  std::vector<Color> out;
+  const PolygonSoup soup = scene.combined_soup();
+  for (Index f = 0; f < soup.num_faces(); ++f)
+    if (soup.face_names[f].starts_with(prefix)) out.push_back(soup.face_colors[f]);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("an instance coloured by path keeps its colour through saving, and the surface can be put back",
+          "[scene]") {
+  Scene scene = Scene::from_text(two_funnels, "pair.nome");
+  const PolygonSoup soup = scene.combined_soup();
+  REQUIRE(scene.instance_of_face(soup.face_names[0]) == "p_a");
+  CHECK_FALSE(scene.instance_of_face("nothing_f0"));
+  CHECK(scene.instance_surface("p_b") == "R");
+  scene.set_instance_color("p_a", {0.0f, 0.5f, 1.0f});
+  CHECK(scene.instance_surface("p_a") == "rgb_0080ff");
+  for (const Color& c : colors_of(scene, "p_a_")) CHECK(c == Color(0.0f, 0.5f, 1.0f));
+  for (const Color& c : colors_of(scene, "p_b_")) CHECK(c == Color(1.0f, 0.0f, 0.0f));
+
+  const Scene saved = Scene::from_text(to_nome_text(scene), "saved.nome");
+  CHECK(saved.instance_surface("p_a") == "rgb_0080ff");
+  CHECK(colors_of(saved, "p_a_") == colors_of(scene, "p_a_"));
+  CHECK(saved.combined_soup().num_faces() == soup.num_faces());
+
+  // The same colour again reuses its surface; the old surface comes back as an undo would put it.
+  scene.set_instance_color("p_b", {0.0f, 0.5f, 1.0f});
+  CHECK(scene.instance_surface("p_b") == "rgb_0080ff");
+  scene.set_instance_surface("p_b", std::string("R"));
+  for (const Color& c : colors_of(scene, "p_b_")) CHECK(c == Color(1.0f, 0.0f, 0.0f));
+  scene.set_instance_surface("p_a", std::nullopt);
+  CHECK_FALSE(scene.instance_surface("p_a"));
+  CHECK_THROWS_AS(scene.set_instance_color("p_c", {1, 1, 1}), InvalidInputError);
+  CHECK_THROWS_AS(scene.set_instance_surface("p_a", std::string("Q")), InvalidInputError);
+}
