@@ -124,6 +124,11 @@ void Session::set_parameter(const std::string& name, double value) {
   update_input();
 }
 
+void Session::set_print_setup(std::optional<PrintPlacementOptions> setup) {
+  document_.set_print_setup(setup);
+  is_modified_ = true;
+}
+
 void Session::save(const std::filesystem::path& path) {
   std::vector<std::string> left_out;
   const scene::Scene saved = document_.scene_for_saving(&left_out);

@@ -48,6 +48,9 @@ class Session {
   // value (nothing changes then).
   void set_parameter(Index parameter, double value);
   void set_parameter(const std::string& name, double value);
+  // The print preparation saved with the scene, an unsaved change. Throws InvalidInputError for flat
+  // geometry.
+  void set_print_setup(std::optional<PrintPlacementOptions> setup);
 
   // Saves the scene with its slider values and the consolidated faces and deletions as .nome
   // (atomically); the saved file becomes the session's file. Temporary faces are not saved. While an

@@ -45,6 +45,9 @@ class SceneDocument {
   // (nothing changes then).
   std::vector<Index> set_parameter(Index parameter, double value);
   std::vector<Index> set_parameter(const std::string& name, double value);
+  // The print preparation saved with the scene (Scene::print_setup). Throws InvalidInputError for flat
+  // geometry.
+  void set_print_setup(std::optional<PrintPlacementOptions> setup);
 
   // Applies an .anom text (the original program's saved slider values and working mesh, which replaces
   // the consolidated faces). Throws InvalidInputError for flat geometry, SceneError (nothing changes)
