@@ -130,8 +130,8 @@ std::vector<OptionSpec> render_options() {
 }
 
 // --section x|y|z[=AT]: the plane, and the fill when the picture is of a solid (an offset stage).
-void apply_section(const Arguments& parsed, const Mesh& mesh, const PipelineSettings& settings,
-                   render::DisplaySettings& display) {
+void apply_section_argument(const Arguments& parsed, const Mesh& mesh, const PipelineSettings& settings,
+                            render::DisplaySettings& display) {
   const auto text = parsed.value("--section");
   if (!text) return;
   const std::size_t equals = text->find('=');
@@ -199,7 +199,7 @@ int render_command(const std::vector<std::string>& args) {
                         : loaded.pipeline.take_result();
   bar.finish();
   apply_render_defaults(loaded.scenes, parsed, options.display);
-  apply_section(parsed, mesh, loaded.settings, options.display);
+  apply_section_argument(parsed, mesh, loaded.settings, options.display);
   const double load_ms = milliseconds(start);
   const auto context_start = Clock::now();
   const render::OffscreenContext context(backend);

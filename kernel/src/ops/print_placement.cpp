@@ -37,7 +37,7 @@ double mesh_diagonal(const Mesh& mesh) {
   return mesh.num_vertices() == 0 ? 0.0 : glm::length(b.high - b.low);
 }
 
-Vec3 face_centroid(const Mesh& mesh, Index f) {
+Vec3 placement_face_centre(const Mesh& mesh, Index f) {
   Vec3 c(0.0);
   for (Index v : mesh.face_vertices(f)) c += mesh.position(v);
   return c / double(mesh.face_degree(f));
@@ -63,7 +63,7 @@ int supporting_side(const Mesh& mesh, const Vec3& n, const Vec3& at, double tol)
 Vec3 outward_normal(const Mesh& mesh, Index f, double tol) {
   const Vec3 area = face_area_normal(mesh, f);
   const Vec3 n = area / glm::length(area);
-  const Vec3 at = face_centroid(mesh, f);
+  const Vec3 at = placement_face_centre(mesh, f);
   if (const int side = supporting_side(mesh, n, at, tol); side != 0) return double(side) * n;
   Vec3 centre(0.0);
   for (const Vec3& p : mesh.positions()) centre += p;
@@ -100,7 +100,7 @@ Index flattest_face(const Mesh& mesh) {
     if (!(area > 1e-12 * size * size)) continue;
     Vec3 n = area_normal / (2.0 * area);
     if (n.x < 0 || (n.x == 0 && (n.y < 0 || (n.y == 0 && n.z < 0)))) n = -n;
-    const double d = glm::dot(n, face_centroid(mesh, f)) / size;
+    const double d = glm::dot(n, placement_face_centre(mesh, f)) / size;
     const auto q = [](double x) { return long(std::lround(x * 1e4)); };
     PlaneGroup& g = planes[{q(n.x), q(n.y), q(n.z), q(d)}];
     g.area += area;
@@ -115,7 +115,8 @@ Index flattest_face(const Mesh& mesh) {
   const double tol = 1e-5 * size;
   for (const PlaneGroup& g : by_area) {
     const Vec3 area_normal = face_area_normal(mesh, g.largest_face);
-    if (supporting_side(mesh, glm::normalize(area_normal), face_centroid(mesh, g.largest_face), tol) != 0)
+    if (supporting_side(mesh, glm::normalize(area_normal), placement_face_centre(mesh, g.largest_face),
+                        tol) != 0)
       return g.largest_face;
   }
   // No plane touches the hull (nothing flat outside): the largest plane still gives a steady direction.

@@ -46,10 +46,12 @@ TEST_CASE("measuring in the viewer: Shift+M gives the wall of the offset box, M 
   viewer::ViewerOptions options;
   options.file = dir + "/box.nome";
   test::TestViewer viewer(options);
-  for (int i = 0; i < 600 && !(viewer.window().shown() && viewer.window().shown()->stage >= Stage::offset);
-       ++i)
-    viewer.frame();
-  REQUIRE(viewer.window().shown()->stage >= Stage::offset);
+  const auto is_solid = [&] {
+    const viewer::StageResult* shown = viewer.window().shown();
+    return shown && shown->stage >= Stage::offset;
+  };
+  for (int i = 0; i < 600 && !is_solid(); ++i) viewer.frame();
+  REQUIRE(is_solid());
 
   measure_key(viewer, GLFW_KEY_M, viewer::KeyModifier::shift);
   REQUIRE(viewer.window().measure().mode() == viewer::MeasureMode::wall);
@@ -57,8 +59,10 @@ TEST_CASE("measuring in the viewer: Shift+M gives the wall of the offset box, M 
   const auto& wall = viewer.window().measure().last();
   REQUIRE(wall);
   CHECK(wall->is_wall);
-  // A cube's corner normals are diagonal: each face moves d / sqrt(3) out and in.
-  CHECK(wall->length == Approx(2 * 0.05 / std::sqrt(3.0)).epsilon(0.01));
+  // The viewer subdivides the box before the offset (a rounded box): its wall is the slab, 2d, to a few
+  // percent (the kernel's test holds a smooth solid to 1 %).
+  CHECK(wall->length == Approx(2 * 0.05).epsilon(0.05));
+  CHECK(wall->length == Approx(glm::distance(wall->from, wall->to)));
   CHECK(viewer.window().selection().is_empty());  // measuring does not select
 
   measure_key(viewer, GLFW_KEY_M, viewer::KeyModifier::none);
