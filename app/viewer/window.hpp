@@ -90,6 +90,7 @@ class Window : private ScriptHost {
  private:
   // window_actions.cpp: what each action does here
   void bind_actions();
+  void bind_workbench_actions();
   void open_browser(Action action);
   bool edit(Action action);
   bool can_edit() const;

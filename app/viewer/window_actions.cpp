@@ -41,6 +41,14 @@ ActionRegistry::Handler always(F f) {
 
 }  // namespace
 
+// The workbench's keys: turntable, measuring, section.
+void Window::bind_workbench_actions() {
+  actions_.bind(Action::toggle_turntable, always([this] { turntable_.toggle(platform_.now()); }));
+  actions_.bind(Action::measure_distance, always([this] { measure_.toggle(MeasureMode::distance); }));
+  actions_.bind(Action::measure_wall, always([this] { measure_.toggle(MeasureMode::wall); }));
+  actions_.bind(Action::toggle_section, always([this] { section_.is_on = !section_.is_on; }));
+}
+
 void Window::bind_actions() {
   actions_.bind(Action::toggle_help, always([this] { panels_.is_help_shown = !panels_.is_help_shown; }));
   LayoutSettings& layout = layout_settings_;
@@ -78,10 +86,7 @@ void Window::bind_actions() {
                       is_culled ? render::BackFacePolicy::different : render::BackFacePolicy::cull;
                 }));
   actions_.bind(Action::frame_all, always([this] { frame_all(); }));
-  actions_.bind(Action::toggle_turntable, always([this] { turntable_.toggle(platform_.now()); }));
-  actions_.bind(Action::measure_distance, always([this] { measure_.toggle(MeasureMode::distance); }));
-  actions_.bind(Action::measure_wall, always([this] { measure_.toggle(MeasureMode::wall); }));
-  actions_.bind(Action::toggle_section, always([this] { section_.is_on = !section_.is_on; }));
+  bind_workbench_actions();
   actions_.bind(Action::reset_view, always([this] {
                   set_view(ViewController::default_azimuth, ViewController::default_elevation);
                 }));
