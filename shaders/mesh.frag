@@ -13,6 +13,8 @@ uniform bool use_face_colors;
 uniform samplerBuffer face_colors;  // RGBA per face; alpha 0 = the front colour
 uniform usamplerBuffer face_flags;  // bit 0: selected
 uniform float opacity;
+uniform bool fills_section;
+uniform vec3 section_color;
 
 out vec4 fragment;
 
@@ -28,6 +30,13 @@ void main() {
     if (own.a > 0.0) base = own.rgb;
   }
   if (!gl_FrontFacing && different_back_color) base = back_color;
+  // Through a section of a closed solid the only back faces in sight are the far walls of its inside:
+  // flat, in the section's colour, they fill the cut.
+  if (fills_section && !gl_FrontFacing) {
+    fragment = vec4(section_color, opacity);
+    gl_FragDepth = gl_FragCoord.z + 2.0 * fwidth(gl_FragCoord.z) + 1e-6;
+    return;
+  }
   if ((texelFetch(face_flags, int(face_id)).r & 1u) != 0u) base = mix(base, selection_color, 0.65);
   fragment = vec4(shade(base, n, view_position), opacity);
   // Back faces lose depth ties: along a silhouette the front and back triangles meet at equal depth,

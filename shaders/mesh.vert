@@ -7,6 +7,7 @@ layout(location = 3) in uint face;
 uniform mat4 model_view;
 uniform mat4 projection;
 uniform bool use_flat_normals;
+uniform vec4 section_plane;  // world space; zero: no section
 
 out vec3 view_position;
 out vec3 view_normal;
@@ -19,4 +20,5 @@ void main() {
   view_normal = mat3(model_view) * (use_flat_normals ? flat_normal : smooth_normal);
   face_id = face;
   gl_Position = projection * p;
+  gl_ClipDistance[0] = -dot(section_plane, vec4(position, 1.0));
 }

@@ -1,4 +1,5 @@
 #include <iostream>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -6,9 +7,12 @@
 #include "cli/commands.hpp"
 #include "cli/input.hpp"
 #include "cli/print_check_input.hpp"
+#include "cli/print_setup_arguments.hpp"
 #include "cli/progress_bar.hpp"
 #include "io/three_mf.hpp"
+#include "nome/io/gltf.hpp"
 #include "nome/io/obj.hpp"
+#include "nome/io/ply.hpp"
 #include "nome/io/stl.hpp"
 #include "nome/scene/save_nome.hpp"
 
@@ -21,15 +25,55 @@ constexpr std::uint64_t check_limit = 2'000'000;
 std::vector<OptionSpec> export_options() {
   std::vector<OptionSpec> specs = {
       {"--output", "-o", "OUT",
-       "output file: .obj, .stl, .3mf, or .nome (saves the scene with its slider values)"},
+       "output file: .obj, .stl, .3mf, .glb (glTF with colours), .ply (vertex colours), or .nome (saves the "
+       "scene with its slider values)"},
       {"--ascii", "", "", "write ASCII STL instead of binary"},
       {"--unit", "", "mm|cm|in|m", "the length one model unit stands for in a .3mf (default mm)"},
       {"--scale", "", "S", "multiply every position by S (.stl and .3mf)"},
       {"--check", "", "", "run the print check whatever the size (.stl, .3mf)"},
       {"--no-check", "", "", "skip the print check"},
       {"--min-wall", "", "D", "the print check's minimum wall (default: 2 x the offset distance)"}};
+  for (OptionSpec& s : print_setup_options()) specs.push_back(std::move(s));
   for (OptionSpec& s : input_options()) specs.push_back(std::move(s));
   return specs;
+}
+
+// The scene's kept print preparation: that of the one scene read, if any.
+std::optional<PrintPlacementOptions> kept_print_setup(const LoadedInput& loaded) {
+  if (loaded.scenes.size() != 1) return std::nullopt;
+  return loaded.scenes.front().print_setup();
+}
+
+// Writes the mesh (placed for printing) as OBJ, STL or 3MF.
+void write_export(const std::filesystem::path& path, const Mesh& mesh, const LoadedInput& loaded,
+                  const Arguments& parsed, const ThreeMfOptions& three_mf, const Progress& progress) {
+  const std::string ext = path.extension().string();
+  if (ext == ".obj")
+    write_obj(path, mesh, loaded.kept_tags);
+  else if (ext == ".glb")
+    write_glb(path, mesh);
+  else if (ext == ".ply")
+    write_ply(path, mesh);
+  else if (ext == ".3mf")
+    write_3mf(path, mesh, three_mf);
+  else if (three_mf.scale != 1.0)
+    write_stl(path, transformed(mesh, glm::scale(glm::dmat4(1.0), Vec3(three_mf.scale))),
+              parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary, progress);
+  else
+    write_stl(path, mesh, parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary, progress);
+}
+
+// `-o OUT.nome`: the scene with its slider values and the print preparation asked for.
+void save_scene(LoadedInput& loaded, const Arguments& parsed, const std::filesystem::path& path) {
+  if (loaded.scenes.size() != 1 || parsed.positionals().size() != 1)
+    throw UsageError("-o OUT.nome saves one scene: give exactly one .nome, .nom or .slf file");
+  scene::Scene& scene = loaded.scenes.front();
+  const PrintPlacementOptions setup =
+      print_setup_argument(parsed, scene.print_setup(), LengthUnit::millimeter);
+  if (!setup.is_identity()) scene.set_print_setup(setup);
+  scene::write_nome(scene, path);
+  std::cerr << "nome: wrote " << path.string() << " (" << scene.parameters().size() << " sliders, "
+            << scene.instances().size() << " top-level instances)\n";
 }
 
 // The print check after writing a solid for a printer: a line for every outcome, never silence.
@@ -48,35 +92,8 @@ void report_check(LoadedInput& loaded, const Arguments& parsed, std::uint64_t tr
             << (check.is_printable() ? "\n" : "; 'nome check' lists the places\n");
 }
 
-}  // namespace
-
-int export_command(const std::vector<std::string>& args) {
-  Arguments parsed("export",
-                   "nome export FILE... -o OUT.obj|OUT.stl|OUT.3mf [--ascii] [--unit U] [--scale S] "
-                   "[--check|--no-check] [pipeline options]",
-                   export_options());
-  parsed.parse(args);
-  if (parsed.has("--help")) {
-    std::cout
-        << "Writes the result of the pipeline as OBJ (exact positions), STL (binary by default) or 3MF\n"
-           "(one object per part, the scene's colours, a unit). STL and 3MF output is followed by the\n"
-           "print check of 'nome check' (a warning when the solid is not printable), up to "
-        << check_limit << "\ntriangles unless --check or --no-check says otherwise.\n\n"
-        << "Subdivision follows OpenSubdiv's Catmull-Clark: --boundary none|edge-only|edge-and-corner\n"
-           "as its boundary interpolation (default edge-only), crease weights with its meaning:\n"
-           "`sharp W (a b ...) endsharp` in a scene, OpenSubdiv's `t crease`/`t corner` tags in an OBJ;\n"
-           "a weight w keeps an edge a crease for floor(w) levels and blends the rest, 10 or none is\n"
-           "infinitely sharp. An OBJ's `t hole`, `t interpolateboundary`, `t creasemethod chaikin` and\n"
-           "`t smoothtriangles` apply; an OBJ written without subdivision keeps all of them.\n\n"
-        << parsed.help();
-    return 0;
-  }
-  const auto out = parsed.value("--output");
-  if (!out) throw UsageError("export needs -o OUT.obj, -o OUT.stl or -o OUT.3mf");
-  const std::filesystem::path path(*out);
-  const std::string ext = path.extension().string();
-  if (ext != ".obj" && ext != ".stl" && ext != ".3mf" && ext != ".nome")
-    throw UsageError("output must end in .obj, .stl, .3mf or .nome, found '" + *out + "'");
+// The output options, checked against each other and the output's kind.
+ThreeMfOptions checked_output_options(const Arguments& parsed, const std::string& ext) {
   if (parsed.has("--ascii") && ext != ".stl") throw UsageError("--ascii applies to .stl output only");
   if (parsed.has("--unit") && ext != ".3mf") throw UsageError("--unit applies to .3mf output only");
   if (parsed.has("--scale") && ext != ".stl" && ext != ".3mf")
@@ -92,31 +109,64 @@ int export_command(const std::vector<std::string>& args) {
   three_mf.scale = parsed.double_value("--scale", 1.0);
   if (!(three_mf.scale > 0.0))
     throw UsageError("--scale expects a positive factor, found " + *parsed.value("--scale"));
+  return three_mf;
+}
+
+}  // namespace
+
+int export_command(const std::vector<std::string>& args) {
+  Arguments parsed(
+      "export",
+      "nome export FILE... -o OUT.obj|.stl|.3mf|.glb|.ply|.nome [--ascii] [--unit U] [--scale S] "
+      "[--check|--no-check] [pipeline options]",
+      export_options());
+  parsed.parse(args);
+  if (parsed.has("--help")) {
+    std::cout
+        << "Writes the result of the pipeline as OBJ (exact positions), STL (binary by default), 3MF\n"
+           "(one object per part, the scene's colours, a unit), binary glTF (.glb: a material per colour,\n"
+           "smooth normals) or PLY (polygons, vertex colours). STL and 3MF output is followed by the\n"
+           "print check of 'nome check' (a warning when the solid is not printable), up to "
+        << check_limit << "\ntriangles unless --check or --no-check says otherwise.\n\n"
+        << "Subdivision follows OpenSubdiv's Catmull-Clark: --boundary none|edge-only|edge-and-corner\n"
+           "as its boundary interpolation (default edge-only), crease weights with its meaning:\n"
+           "`sharp W (a b ...) endsharp` in a scene, OpenSubdiv's `t crease`/`t corner` tags in an OBJ;\n"
+           "a weight w keeps an edge a crease for floor(w) levels and blends the rest, 10 or none is\n"
+           "infinitely sharp. An OBJ's `t hole`, `t interpolateboundary`, `t creasemethod chaikin` and\n"
+           "`t smoothtriangles` apply; an OBJ written without subdivision keeps all of them.\n\n"
+           "Print preparation (--fit-height, --fit-size, --rest-on; a scene's `printsetup` statement\n"
+           "keeps them, and -o OUT.nome writes the options into it) scales the solid and stands it on a\n"
+           "face, its lowest point at z = 0, before writing.\n\n"
+        << parsed.help();
+    return 0;
+  }
+  const auto out = parsed.value("--output");
+  if (!out) throw UsageError("export needs -o OUT.obj, .stl, .3mf, .glb, .ply or .nome");
+  const std::filesystem::path path(*out);
+  const std::string ext = path.extension().string();
+  if (ext != ".obj" && ext != ".stl" && ext != ".3mf" && ext != ".glb" && ext != ".ply" && ext != ".nome")
+    throw UsageError("output must end in .obj, .stl, .3mf, .glb, .ply or .nome, found '" + *out + "'");
+  const ThreeMfOptions three_mf = checked_output_options(parsed, ext);
   ProgressBar bar(parsed.has("--quiet"));
   LoadedInput loaded = run_input(parsed, Stage::subdivided_offset, bar.sink());
   const Mesh& mesh = loaded.pipeline.run(loaded.settings);
   if (ext == ".nome") {
-    if (loaded.scenes.size() != 1 || parsed.positionals().size() != 1)
-      throw UsageError("-o OUT.nome saves one scene: give exactly one .nome, .nom or .slf file");
-    scene::write_nome(loaded.scenes.front(), path);
-    std::cerr << "nome: wrote " << *out << " (" << loaded.scenes.front().parameters().size() << " sliders, "
-              << loaded.scenes.front().instances().size() << " top-level instances)\n";
+    save_scene(loaded, parsed, path);
     return 0;
   }
-  if (ext == ".obj")
-    write_obj(path, mesh, loaded.kept_tags);
-  else if (ext == ".3mf")
-    write_3mf(path, mesh, three_mf);
-  else if (three_mf.scale != 1.0)
-    write_stl(path, transformed(mesh, glm::scale(glm::dmat4(1.0), Vec3(three_mf.scale))),
-              parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary, bar.sink());
-  else
-    write_stl(path, mesh, parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary, bar.sink());
+  const PrintPlacementOptions setup = print_setup_argument(parsed, kept_print_setup(loaded), three_mf.unit);
+  if (!setup.is_identity() && parsed.has("--scale"))
+    throw UsageError(
+        "--scale and print preparation (--fit-height, --fit-size, --rest-on, a printsetup) "
+        "exclude each other");
+  std::optional<Mesh> placed;
+  if (!setup.is_identity()) placed = placed_for_print(mesh, setup);
+  write_export(path, placed ? *placed : mesh, loaded, parsed, three_mf, bar.sink());
   bar.finish();
   const std::uint64_t triangles = triangle_count(mesh);
   std::cerr << "nome: wrote " << *out << " (" << mesh.num_vertices() << " vertices, " << mesh.num_faces()
             << " faces)\n";
-  if (ext != ".obj") report_check(loaded, parsed, triangles);
+  if (ext == ".stl" || ext == ".3mf") report_check(loaded, parsed, triangles);
   return 0;
 }
 

@@ -8,8 +8,10 @@
 #include "cli/input.hpp"
 #include "cli/print_check_input.hpp"
 #include "cli/progress_bar.hpp"
+#include "cli/turntable_output.hpp"
 #include "nome/error.hpp"
 #include "render/offscreen_context.hpp"
+#include "render/section_plane.hpp"
 #include "render/snapshot.hpp"
 
 namespace nome::cli {
@@ -116,12 +118,36 @@ std::vector<OptionSpec> render_options() {
       {"--backface-color", "", "COLOR", "back face colour; 'same' as the front, 'cull' to hide back faces"},
       {"--background", "", "COLOR", "background colour (default white)"},
       {"--transparent", "", "", "transparent background (PNG alpha)"},
+      {"--section", "", "x|y|z[=AT]",
+       "cut away what lies beyond the plane axis = AT (default: the middle); a solid's cut is filled red"},
       {"--backend", "", "egl|egl-device|osmesa",
        "force the offscreen GL backend (default: EGL surfaceless, else an EGL device, else OSMesa)"},
       {"--verbose", "-v", "", "print the GL backend, vendor, renderer and timings"},
       {"--time", "", "T", "the scenes' $time (default 0)"}};
+  for (OptionSpec& s : turntable_options()) specs.push_back(std::move(s));
   for (OptionSpec& s : input_options()) specs.push_back(std::move(s));
   return specs;
+}
+
+// --section x|y|z[=AT]: the plane, and the fill when the picture is of a solid (an offset stage).
+void apply_section_argument(const Arguments& parsed, const Mesh& mesh, const PipelineSettings& settings,
+                            render::DisplaySettings& display) {
+  const auto text = parsed.value("--section");
+  if (!text) return;
+  const std::size_t equals = text->find('=');
+  const auto axis = render::parse_section_axis(text->substr(0, equals));
+  double at = 0.0;
+  if (axis && equals != std::string::npos) {
+    std::istringstream in(text->substr(equals + 1));
+    if (!(in >> at) || !(in >> std::ws).eof() || !std::isfinite(at))
+      throw UsageError("--section expects x, y or z with an optional =AT (z=0.5), found '" + *text + "'");
+  } else if (axis) {
+    at = render::section_centre(mesh, *axis);
+  }
+  if (!axis)
+    throw UsageError("--section expects x, y or z with an optional =AT (z=0.5), found '" + *text + "'");
+  display.section_plane = render::section_plane(*axis, at);
+  display.fills_section = settings.distance() > 0.0 && !parsed.has("--print-check");
 }
 
 render::Backend backend_argument(const Arguments& parsed) {
@@ -137,10 +163,11 @@ render::Backend backend_argument(const Arguments& parsed) {
 }  // namespace
 
 int render_command(const std::vector<std::string>& args) {
-  Arguments parsed("render",
-                   "nome render FILE... -o OUT.png [--size WxH] [--view AZ,EL] [--wire] [--flat] "
-                   "[--backend egl|egl-device|osmesa] [pipeline options]",
-                   render_options());
+  Arguments parsed(
+      "render",
+      "nome render FILE... -o OUT.png|OUT.gif [--size WxH] [--view AZ,EL] [--turntable N] [--wire] [--flat] "
+      "[--backend egl|egl-device|osmesa] [pipeline options]",
+      render_options());
   parsed.parse(args);
   if (parsed.has("--help")) {
     std::cout
@@ -151,8 +178,9 @@ int render_command(const std::vector<std::string>& args) {
   }
   const auto out = parsed.value("--output");
   if (!out) throw UsageError("render needs -o OUT.png");
-  if (std::filesystem::path(*out).extension() != ".png")
-    throw UsageError("output must end in .png, found '" + *out + "'");
+  if (std::filesystem::path(*out).extension() != ".png" && std::filesystem::path(*out).extension() != ".gif")
+    throw UsageError("output must end in .png (or .gif with --turntable), found '" + *out + "'");
+  check_turntable_arguments(parsed, *out);
   render::SnapshotOptions options = snapshot_options(parsed);
   const render::Backend backend = backend_argument(parsed);
   const Stage stage =
@@ -171,11 +199,17 @@ int render_command(const std::vector<std::string>& args) {
                         : loaded.pipeline.take_result();
   bar.finish();
   apply_render_defaults(loaded.scenes, parsed, options.display);
+  apply_section_argument(parsed, mesh, loaded.settings, options.display);
   const double load_ms = milliseconds(start);
   const auto context_start = Clock::now();
   const render::OffscreenContext context(backend);
   const double context_ms = milliseconds(context_start);
   if (verbose) std::cerr << "nome: " << context.platform() << ": " << context.description() << "\n";
+  if (parsed.has("--turntable")) {
+    std::cerr << "nome: wrote " << write_turntable(mesh, options, parsed, *out) << ", " << mesh.num_faces()
+              << " faces, " << context.platform() << "\n";
+    return 0;
+  }
   const auto draw_start = Clock::now();
   const render::Image image = render::render_snapshot(mesh, options);
   const double draw_ms = milliseconds(draw_start);

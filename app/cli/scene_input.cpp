@@ -92,12 +92,13 @@ InputFiles read_input_files(const Arguments& args) {
       flat.emplace_back(file, read_sif(file, {args.has("--quads"), SifOptions{}.max_fold_degrees}));
     } else if (ext == ".3mf") {
       flat.emplace_back(file, three_mf_polygons(read_3mf(file)));
-    } else if (ext == ".obj" || ext == ".stl") {
+    } else if (ext == ".obj" || ext == ".stl" || ext == ".glb" || ext == ".gltf" || ext == ".ply") {
       flat.emplace_back(file, read_polygons(file));
       if (ext == ".obj") merge_obj_tags(input.obj_tags, read_obj_subdivision_tags(file));
     } else {
       throw IoError(file + ": unknown file type '" + ext +
-                    "' (Nome reads .nome, .nom, .slf, .sif, .obj, .stl and .3mf, and .anom after its scene)");
+                    "' (Nome reads .nome, .nom, .slf, .sif, .obj, .stl, .3mf, .glb, .gltf and .ply, and "
+                    ".anom after its scene)");
     }
   }
   for (const scene::Scene& s : input.scenes)

@@ -20,6 +20,12 @@ struct DisplaySettings {
   bool draws_mobius_edges = false;
   bool draws_borders = false;
   bool uses_face_colors = true;
+  // A section: the faces on the positive side of the plane (a, b, c, d: a x + b y + c z + d > 0) are cut
+  // away; all zero shows everything. On a closed solid (`fills_section`) the inside seen through the cut
+  // is painted flat in section_color, so the wall reads as a band.
+  glm::vec4 section_plane{0.0f};
+  bool fills_section = false;
+  glm::vec3 section_color{0.86f, 0.16f, 0.20f};
 
   glm::vec3 front_color{0.80f, 0.62f, 0.25f};  // warm gold
   glm::vec3 back_color{0.25f, 0.45f, 0.80f};   // blue: the other side

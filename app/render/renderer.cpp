@@ -77,6 +77,9 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     p.set("different_back_color", settings.back_faces == BackFacePolicy::different ? 1 : 0);
     p.set("use_face_colors", settings.uses_face_colors ? 1 : 0);
     p.set("opacity", 1.0f);
+    p.set("section_plane", settings.section_plane);
+    p.set("fills_section", settings.fills_section && settings.section_plane != glm::vec4(0.0f) ? 1 : 0);
+    p.set("section_color", settings.section_color);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_BUFFER, mesh.face_color_texture());
     p.set("face_colors", 0);
@@ -93,7 +96,9 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
     glBindVertexArray(mesh.surface_vao());
+    glEnable(GL_CLIP_DISTANCE0);
     glDrawElements(GL_TRIANGLES, mesh.triangle_index_count(), GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_CLIP_DISTANCE0);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
   }

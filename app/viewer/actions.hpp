@@ -55,6 +55,10 @@ enum class Action {
   toggle_parameter_lock,
   toggle_sif_pairing,
   toggle_sharp,
+  toggle_turntable,
+  measure_distance,
+  measure_wall,
+  toggle_section,
 };
 
 // One row of the table every binding is read from: the script's name, a shortcut (key 0: none; an

@@ -24,7 +24,7 @@ std::optional<std::filesystem::path> draw_file_menu(const ActionRegistry& action
   }
   action_item(actions, "Save", Action::save, context.has_scene);
   action_item(actions, "Save As...", Action::save_as, context.has_scene);
-  action_item(actions, "Export STL / OBJ...", Action::export_mesh, context.has_document);
+  action_item(actions, "Export STL / OBJ / glTF / PLY...", Action::export_mesh, context.has_document);
   action_item(actions, "Screenshot", Action::screenshot);
   ImGui::Separator();
   action_item(actions, "Quit", Action::quit);
@@ -51,7 +51,9 @@ void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& disp
   ImGui::MenuItem("Instance colours", nullptr, &display.uses_face_colors);
   ImGui::Separator();
   action_item(actions, "Frame all", Action::frame_all);
+  action_item(actions, "Section plane", Action::toggle_section);
   action_item(actions, "Reset view", Action::reset_view);
+  action_item(actions, "Turntable", Action::toggle_turntable);
   action_item(actions, "Front", Action::view_front);
   action_item(actions, "Right", Action::view_right);
   action_item(actions, "Top", Action::view_top);

@@ -58,7 +58,7 @@ const Syntax syntaxes[] = {
     {"view", ScriptCommand::Kind::view, 0, 2, "view AZIMUTH ELEVATION (degrees)"},
     {"screenshot", ScriptCommand::Kind::screenshot, 1, 0, "screenshot PATH.png"},
     {"save", ScriptCommand::Kind::save, 1, 0, "save PATH.nome"},
-    {"export", ScriptCommand::Kind::export_file, 1, 0, "export PATH.stl|PATH.obj"},
+    {"export", ScriptCommand::Kind::export_file, 1, 0, "export PATH.stl|.obj|.glb|.ply"},
     {"recover", ScriptCommand::Kind::recover, 1, 0, "recover restore|discard"},
     {"drop", ScriptCommand::Kind::drop, 1, 0, "drop PATH"},
     {"prompt", ScriptCommand::Kind::prompt, 1, 0, "prompt save|discard|cancel"},
@@ -110,7 +110,7 @@ const char* script_synopsis() {
          "  view AZ EL                look from azimuth AZ and elevation EL (degrees), framed\n"
          "  screenshot PATH.png       save the window as a PNG\n"
          "  save PATH.nome            save the scene, slider values and edits\n"
-         "  export PATH.stl|.obj      write the stage on screen\n"
+         "  export PATH.stl|.obj|...  write the stage on screen (.glb, .ply too)\n"
          "  recover restore|discard   answer the offer to restore unsaved changes after a crash\n"
          "  drop PATH                 open PATH as if dropped on the window\n"
          "  prompt save|discard|cancel  answer the question about unsaved changes (quit, open)\n"

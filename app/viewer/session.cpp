@@ -145,6 +145,11 @@ void Session::set_instance_surface(const std::string& path, const std::optional<
   update_input();
 }
 
+void Session::set_print_setup(std::optional<PrintPlacementOptions> setup) {
+  document_.set_print_setup(setup);
+  is_modified_ = true;
+}
+
 void Session::save(const std::filesystem::path& path) {
   std::vector<std::string> left_out;
   const scene::Scene saved = document_.scene_for_saving(&left_out);

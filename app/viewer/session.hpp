@@ -49,6 +49,9 @@ class Session {
   // value (nothing changes then).
   void set_parameter(Index parameter, double value);
   void set_parameter(const std::string& name, double value);
+  // The print preparation saved with the scene, an unsaved change. Throws InvalidInputError for flat
+  // geometry.
+  void set_print_setup(std::optional<PrintPlacementOptions> setup);
 
   // Gives the instance (a placement path) a colour or names its surface again (undo); throws
   // InvalidInputError for flat geometry or an unknown instance.

@@ -127,6 +127,15 @@ void SessionController::report_unresolved(const std::vector<UnresolvedEdit>& bef
     log_.info(std::to_string(count) + " edits back with their vertices: " + back);
 }
 
+void SessionController::set_print_setup(const PrintPlacementOptions& setup) {
+  if (!session_) return;
+  try {
+    session_->set_print_setup(setup);
+  } catch (const Error& e) {
+    log_.error(e.what());
+  }
+}
+
 void SessionController::set_parameter(const std::string& name, double value) {
   if (!session_) throw InvalidInputError("set: no file is open");
   if (are_parameters_locked())

@@ -62,6 +62,8 @@ class SessionController {
   // Moves a slider (a step of the undo history); throws InvalidInputError for an unknown name, a value
   // out of range, or while the sliders are locked.
   void set_parameter(const std::string& name, double value);
+  // The print preparation saved with the open scene (logged when refused).
+  void set_print_setup(const PrintPlacementOptions& setup);
   // The report's lock, as an option: "lock generator parameters while editing". While it is on and the
   // document has edits, slider moves are refused (with a log line) so that no edit can lose its vertices.
   void set_parameter_lock(bool is_on) { is_parameter_lock_on_ = is_on; }

@@ -44,6 +44,10 @@ class ViewController {
   void zoom_at(double factor, glm::dvec2 pixel, const ScreenRect& viewport);
   // Looks from these angles (degrees); frame() then fits the picture.
   void set_angles(double azimuth, double elevation) { camera_.set_view(azimuth, elevation); }
+  // Turns the view about the world's vertical axis through the target (the turntable).
+  void turn(double radians) {
+    camera_.orientation = glm::angleAxis(radians, glm::dvec3(0.0, 1.0, 0.0)) * camera_.orientation;
+  }
   // Fits the camera to the points (the mesh, then the rim lines' points) in the viewport.
   void frame(std::span<const Vec3> mesh, std::span<const Vec3> more, const ScreenRect& viewport);
   // The orbit centre moves to the point; the eye stays where it is.

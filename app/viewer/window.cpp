@@ -57,6 +57,7 @@ bool Window::frame(const InputFrame& input) {
   arrange_layout();
   sessions_.update(platform_.now());
   handle_mouse(input);
+  view_.turn(turntable_.advance(platform_.now()));
   for (const KeyPress& key : input.keys)
     if (actions_.press(key.key, key.modifiers)) break;
   update_stage();
@@ -66,6 +67,8 @@ bool Window::frame(const InputFrame& input) {
     script_.step(*this, log_);
   if (script_.has_failed()) exit_status_ = 1;
   arrange_layout();
+  apply_section(section_, view_.camera(), 0.5 * (shown_low_ + shown_high_),
+                stage_.shown() && stage_.shown()->stage >= Stage::offset, display_);
   renderer_.draw(view_.camera(), platform_.framebuffer_size(), viewport_pixels(), display_, rim_color_);
   draw_panels();
   draw_prompts();
@@ -83,7 +86,7 @@ bool Window::frame(const InputFrame& input) {
 
 bool Window::is_animating() const {
   return stage_.is_busy() || !script_.is_done() || pending_screenshot_ || view_.is_pressed() ||
-         frames_drawn_ < 3 || settle_frames_ > 0;
+         frames_drawn_ < 3 || settle_frames_ > 0 || turntable_.is_on();
 }
 
 void Window::after_draw() {
@@ -265,6 +268,8 @@ void Window::show_result(StageResult result) {
   for (const std::string& note : result.notes) log_.info(note);
   const render::BoundingBox box = render::BoundingBox::of(mesh.positions());
   shown_size_ = box.is_empty() ? glm::dvec3(0.0) : box.max - box.min;
+  shown_low_ = box.is_empty() ? glm::dvec3(0.0) : box.min;
+  shown_high_ = box.is_empty() ? glm::dvec3(0.0) : box.max;
   renderer_.set_mesh(result.display);
   stage_.show(std::move(result), platform_.now());
   rims_ = pickable_rims(rim_lines_, mesh, stage_.shown()->borders);

@@ -11,6 +11,7 @@
 #include "viewer/actions.hpp"
 #include "viewer/file_browser.hpp"
 #include "viewer/layout.hpp"
+#include "viewer/measure_tool.hpp"
 #include "viewer/message_log.hpp"
 #include "viewer/panels.hpp"
 #include "viewer/parameter_panel.hpp"
@@ -18,9 +19,11 @@
 #include "viewer/platform.hpp"
 #include "viewer/prompts.hpp"
 #include "viewer/script_runner.hpp"
+#include "viewer/section_panel.hpp"
 #include "viewer/selection.hpp"
 #include "viewer/session_controller.hpp"
 #include "viewer/stage_view.hpp"
+#include "viewer/turntable_mode.hpp"
 #include "viewer/view_controller.hpp"
 #include "viewer/viewer.hpp"
 
@@ -76,6 +79,9 @@ class Window : private ScriptHost {
   const render::Camera& camera() const { return view_.camera(); }
   const render::DisplaySettings& display() const { return display_; }
   const PanelVisibility& panels() const { return panels_; }
+  bool is_turntable_on() const { return turntable_.is_on(); }
+  const MeasureTool& measure() const { return measure_; }
+  const SectionState& section() const { return section_; }
   const LayoutSettings& layout_settings() const { return layout_settings_; }
   // Where the panels and the viewport are this frame, and what the last frame drew where.
   const ScreenLayout& layout() const { return layout_; }
@@ -84,6 +90,7 @@ class Window : private ScriptHost {
  private:
   // window_actions.cpp: what each action does here
   void bind_actions();
+  void bind_workbench_actions();
   void open_browser(Action action);
   bool edit(Action action);
   bool can_edit() const;
@@ -163,6 +170,10 @@ class Window : private ScriptHost {
   PickableRims rims_;           // rim_lines_ numbered after the shown mesh's vertices
   glm::dvec3 shown_size_{0.0};  // the shown stage's bounding box
   PanelVisibility panels_;
+  TurntableMode turntable_;
+  MeasureTool measure_;
+  SectionState section_;
+  glm::dvec3 shown_low_{0.0}, shown_high_{0.0};  // the shown stage's bounding box
   ParameterPanelState parameters_;
 
   LayoutSettings layout_settings_;

@@ -4,8 +4,11 @@
 #include <cstdio>
 
 #include "nome/error.hpp"
+#include "nome/io/gltf.hpp"
 #include "nome/io/obj.hpp"
+#include "nome/io/ply.hpp"
 #include "nome/io/stl.hpp"
+#include "nome/ops/print_placement.hpp"
 #include "nome/query/pick.hpp"
 #include "viewer/window.hpp"
 
@@ -37,6 +40,14 @@ ActionRegistry::Handler always(F f) {
 }
 
 }  // namespace
+
+// The workbench's keys: turntable, measuring, section.
+void Window::bind_workbench_actions() {
+  actions_.bind(Action::toggle_turntable, always([this] { turntable_.toggle(platform_.now()); }));
+  actions_.bind(Action::measure_distance, always([this] { measure_.toggle(MeasureMode::distance); }));
+  actions_.bind(Action::measure_wall, always([this] { measure_.toggle(MeasureMode::wall); }));
+  actions_.bind(Action::toggle_section, always([this] { section_.is_on = !section_.is_on; }));
+}
 
 void Window::bind_actions() {
   actions_.bind(Action::toggle_help, always([this] { panels_.is_help_shown = !panels_.is_help_shown; }));
@@ -75,6 +86,7 @@ void Window::bind_actions() {
                       is_culled ? render::BackFacePolicy::different : render::BackFacePolicy::cull;
                 }));
   actions_.bind(Action::frame_all, always([this] { frame_all(); }));
+  bind_workbench_actions();
   actions_.bind(Action::reset_view, always([this] {
                   set_view(ViewController::default_azimuth, ViewController::default_elevation);
                 }));
@@ -114,13 +126,13 @@ void Window::open_browser(Action action) {
   const std::filesystem::path path = sessions_.path();
   const std::filesystem::path folder = path.parent_path();
   if (action == Action::open) {
-    browser_.open("Open", folder, {".nome", ".anom", ".sif", ".slf", ".obj", ".stl"}, "Open");
+    browser_.open("Open", folder, {".nome", ".anom", ".sif", ".slf", ".obj", ".stl", ".glb", ".ply"}, "Open");
   } else if (action == Action::save_as) {
     if (!sessions_.has_scene()) return;
     browser_.open("Save As", folder, {".nome"}, "Save", path.filename().string());
   } else {
     if (!sessions_.has_session()) return;
-    browser_.open("Export", folder, {".stl", ".obj"}, "Save", path.stem().string() + ".stl");
+    browser_.open("Export", folder, {".stl", ".obj", ".glb", ".ply"}, "Save", path.stem().string() + ".stl");
   }
   browser_purpose_ = action;
 }
@@ -168,6 +180,11 @@ bool Window::edit(Action action) {
 void Window::click(glm::dvec2 pixel) {
   const StageResult* shown = stage_.shown();
   if (!shown) return;
+  if (measure_.mode() != MeasureMode::off) {
+    log_.info(measure_.click(*shown->mesh, stage_.picking_bvh(),
+                             ray_through_pixel(view_.projection(layout_.viewport), pixel)));
+    return;
+  }
   const ScreenProjection projection = view_.projection(layout_.viewport);
   const std::string hint =
       selection_.mode() == SelectionMode::instance
@@ -209,12 +226,22 @@ void Window::export_mesh(const std::filesystem::path& path) {
   const Mesh* mesh = stage_.shown_mesh();
   if (!mesh) throw InvalidInputError("export: nothing is shown");
   const std::string ext = lower_extension(path);
+  // The scene's print preparation, as `nome export` applies it.
+  std::optional<Mesh> placed;
+  if (const scene::Scene* scene = sessions_.scene(); scene && scene->print_setup())
+    placed = placed_for_print(*mesh, *scene->print_setup());
+  if (placed) mesh = &*placed;
   if (ext == ".obj")
     write_obj(path, *mesh);
   else if (ext == ".stl")
     write_stl(path, *mesh);
+  else if (ext == ".glb")
+    write_glb(path, *mesh);
+  else if (ext == ".ply")
+    write_ply(path, *mesh);
   else
-    throw InvalidInputError("export: the file must end in .stl or .obj, found '" + path.string() + "'");
+    throw InvalidInputError("export: the file must end in .stl, .obj, .glb or .ply, found '" + path.string() +
+                            "'");
   log_.info("exported " + path.string());
 }
 

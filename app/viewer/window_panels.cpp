@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include "viewer/print_setup_panel.hpp"
 #include "viewer/window.hpp"
 
 // The panels in their places: the style for the screen, the layout of the sidebars, the log and the
@@ -94,6 +95,7 @@ void Window::draw_panels() {
                          sessions_.can_undo(), sessions_.can_redo()};
   if (const auto chosen = draw_main_menu(actions_, menu, display_, layout_settings_)) request_open(*chosen);
   draw_sidebars();
+  measure_.draw_overlay(view_.projection(layout_.viewport));
   draw_log_panel(log_, layout_.log, layout_settings_.is_log_open, take_scroll(ScrolledPanel::log));
   report_.panels.push_back({"log", layout_.log});
   draw_status();
@@ -129,6 +131,16 @@ void Window::draw_sidebars() {
     if (const StageResult* shown = stage_.shown())
       if (ImGui::CollapsingHeader("Topology", ImGuiTreeNodeFlags_DefaultOpen))
         draw_topology_section(shown->topology, shown_size_);
+    if (const scene::Scene* scene = sessions_.scene();
+        scene && ImGui::CollapsingHeader("Print preparation")) {
+      const std::optional<Index> face =
+          selection_.faces().size() == 1 ? std::optional(selection_.faces().front()) : std::nullopt;
+      if (const auto changed =
+              draw_print_setup_section(scene->print_setup().value_or(PrintPlacementOptions{}), face))
+        sessions_.set_print_setup(*changed);
+    }
+    if (ImGui::CollapsingHeader("Measure")) measure_.draw_section();
+    if (ImGui::CollapsingHeader("Section")) draw_section_panel(section_, shown_low_, shown_high_);
     if (const scene::Scene* scene = sessions_.scene()) {
       const bool is_locked = sessions_.are_parameters_locked();
       if (is_locked) ImGui::TextDisabled("locked while editing (Controls > Edit)");

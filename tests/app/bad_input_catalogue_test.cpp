@@ -137,7 +137,7 @@ TEST_CASE("bad OBJ files are refused with one located message", "[app]") {
 }
 
 TEST_CASE("bad STL files and unknown formats are refused with one located message", "[app]") {
-  check_catalogue({".stl", ".dae", ".OFF", ""});
+  check_catalogue({".stl", ".ply", ".dae", ".OFF", ""});
 }
 
 TEST_CASE("bad scene files (.nome, .slf, .sif) are refused with located messages", "[app]") {

@@ -34,17 +34,20 @@ bool is_same_mesh(const nome::Mesh& a, const nome::Mesh& b) {
 
 }  // namespace
 
-// The caching pipeline under random settings and slider moves: after every move the pipeline that was
-// fed only what changed (moved vertices, or new polygons) gives the same result as a new pipeline run on
-// the scene from scratch. A slider value the scene refuses is a located refusal.
+// The caching pipeline under random settings and slider moves: after every move (and change of levels)
+// the pipeline that was fed only what changed (moved vertices, or new polygons) gives the same result as a
+// new pipeline run on the scene from scratch. A slider value the scene refuses is a located refusal.
 NOME_FUZZ_TARGET(pipeline) {
   if (size < 3) return 0;
-  const nome::PipelineSettings settings = settings_from(data);
+  nome::PipelineSettings settings = settings_from(data);
   nome::scene::Scene scene = nome::scene::Scene::from_text(nome::fuzz::funnel_cube_scene, "fuzz.nome");
   nome::Pipeline live;
   live.set_input(nome::PipelineInput{scene.combined_soup(), {}, nome::Joining::manifold});
   live.run(settings);
-  for (size_t i = 3; i + 1 < size; i += 2) {
+  for (size_t i = 3; i + 2 < size; i += 3) {
+    // Each step: a slider and its value, and the subdivision levels before and after the offset.
+    settings.subdivision_levels = data[i + 2] % 3;
+    settings.subdivision_after = settings.offset_distance > 0 ? (data[i + 2] >> 2) % 2 : 0;
     const nome::Index id = data[i] % nome::Index(scene.parameters().size());
     const nome::scene::Parameter& p = scene.parameters()[id];
     // Odd bytes: anywhere in the range; even ones: on the slider's steps (whole counts among them).

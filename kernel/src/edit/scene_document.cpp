@@ -38,6 +38,12 @@ void SceneDocument::set_scene(scene::Scene scene) {
   document_.load_edits(consolidated, std::move(deleted), std::move(sharp));
 }
 
+void SceneDocument::set_print_setup(std::optional<PrintPlacementOptions> setup) {
+  if (!scene_)
+    throw InvalidInputError("print setup: only scene files keep one (export applies it to others)");
+  scene_->set_print_setup(setup);
+}
+
 std::vector<Index> SceneDocument::set_parameter(Index parameter, double value) {
   if (!scene_) throw InvalidInputError("set: flat geometry has no sliders");
   std::vector<Index> changed = scene_->set_parameter(parameter, value);

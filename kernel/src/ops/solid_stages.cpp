@@ -52,6 +52,9 @@ const Mesh& SolidStages::run_stages(const Mesh& input, const PipelineSettings& s
     has_new_positions_ = has_new_positions_ || s.rule != previous.rule;
     current = result_ = &subdivide_stage(before_, *current, s.levels_before(), s);
   } else {
+    // The offset now starts from the input itself, no longer from the subdivision's result.
+    has_new_topology_ = has_new_topology_ || previous.levels_before() > 0;
+    has_new_positions_ = has_new_positions_ || has_new_topology_;
     before_ = {};
   }
   if (s.distance() > 0) {

@@ -42,6 +42,7 @@ StatementKind include_statement();
 StatementKind subdivision_statement();
 StatementKind offset_statement();
 StatementKind boundary_statement();
+StatementKind print_setup_statement();
 StatementKind camera_statement();
 StatementKind light_statement();
 StatementKind window_statement();
@@ -96,6 +97,7 @@ std::span<const StatementKind> statement_kinds() {
       subdivision_statement(),   // successor: root instances and the subdivision levels
       offset_statement(),        // successor: root instances and the offset distance
       boundary_statement(),      // subdivision at the border (both dialects)
+      print_setup_statement(),   // print preparation kept with the scene: size and rest face
       camera_statement(),        // successor: render defaults
       light_statement(), window_statement(), viewport_statement(), frontcolor_statement(),
       backcolor_statement(), backgroundcolor_statement(), backface_statement(),

@@ -210,3 +210,22 @@ TEST_CASE("a part that may touch at vertices is split there with a warning, othe
   CHECK_THROWS_WITH(Pipeline().set_input(PipelineInput{fin, {{"fin.nome", 4, true}}, Joining::manifold}),
                     Catch::Contains("fin.nome") && Catch::Contains("has a third face"));
 }
+
+TEST_CASE("every sequence of settings gives what a new pipeline gives for the last one", "[kernel]") {
+  // The offset's input is the subdivision's result or the scene itself: a change of levels between runs
+  // changes the topology under the offset (turning subdivision off once kept the old solid's topology).
+  const Mesh band = build_mesh(test::mobius_band(12, 2));
+  const int levels_sequence[][2] = {{1, 0}, {0, 0}, {2, 1}, {0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  Pipeline live;
+  for (const auto& [before, after] : levels_sequence) {
+    INFO("levels before " << before << ", after " << after);
+    PipelineSettings s = full_options();
+    s.subdivision_levels = before;
+    s.subdivision_after = after;
+    const Mesh& result = live.run(band, s);
+    Pipeline fresh;
+    const Mesh& expected = fresh.run(band, s);
+    CHECK(result.positions() == expected.positions());
+    CHECK(result.corner_vertices() == expected.corner_vertices());
+  }
+}

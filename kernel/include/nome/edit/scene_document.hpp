@@ -45,6 +45,9 @@ class SceneDocument {
   // (nothing changes then).
   std::vector<Index> set_parameter(Index parameter, double value);
   std::vector<Index> set_parameter(const std::string& name, double value);
+  // The print preparation saved with the scene (Scene::print_setup). Throws InvalidInputError for flat
+  // geometry.
+  void set_print_setup(std::optional<PrintPlacementOptions> setup);
 
   // Gives the instance (a placement path, `sh_tun1`) a colour, or names its surface again (an undo),
   // as Scene::set_instance_color and set_instance_surface do; the faces take the colour at once. Throws

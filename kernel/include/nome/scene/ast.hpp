@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "nome/ops/print_placement.hpp"
 #include "nome/scene/expression.hpp"
 
 namespace nome::scene {
@@ -233,7 +234,8 @@ struct SceneAst {
   std::vector<NamedFace> consolidated_faces;
   std::vector<NamedFace> sharp_edges;  // `sharpedges (a b) ... endsharpedges`: two vertices each
   std::vector<StageDecl> stages;
-  std::vector<Name> boundary_modes;  // `boundary MODE endboundary`: subdivision at the border
+  std::vector<Name> boundary_modes;                  // `boundary MODE endboundary`: subdivision at the border
+  std::optional<PrintPlacementOptions> print_setup;  // `printsetup ... endprintsetup`: print preparation
   std::vector<RenderDecl> render;
   std::vector<InstanceDecl> render_instances;  // top-level instances of a camera, light, window or viewport
   std::vector<std::string> included_files;     // every file read by `include`, in reading order

@@ -104,6 +104,10 @@ class Scene {
   const DialectChoice& dialect() const { return ast_.dialect; }
   StageSettings stage_settings() const;
   RenderDefaults render_defaults() const;
+  // The print preparation kept with the scene (`printsetup ... endprintsetup`), if any: exports apply it
+  // unless told otherwise. Setting it changes no geometry; saving writes it.
+  const std::optional<PrintPlacementOptions>& print_setup() const { return ast_.print_setup; }
+  void set_print_setup(std::optional<PrintPlacementOptions> setup) { ast_.print_setup = setup; }
 
   const std::vector<Bank>& banks() const { return banks_; }
   const std::vector<Parameter>& parameters() const { return parameters_; }
