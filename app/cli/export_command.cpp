@@ -1,15 +1,11 @@
 #include <iostream>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "cli/check_format.hpp"
 #include "cli/commands.hpp"
+#include "cli/export_result.hpp"
 #include "cli/input.hpp"
 #include "cli/print_check_input.hpp"
 #include "cli/progress_bar.hpp"
-#include "io/three_mf.hpp"
-#include "nome/io/obj.hpp"
-#include "nome/io/stl.hpp"
 #include "nome/scene/save_nome.hpp"
 
 namespace nome::cli {
@@ -48,6 +44,28 @@ void report_check(LoadedInput& loaded, const Arguments& parsed, std::uint64_t tr
             << (check.is_printable() ? "\n" : "; 'nome check' lists the places\n");
 }
 
+// The output format's options, checked against the output's extension.
+ExportFormat export_format(const Arguments& parsed, const std::string& ext) {
+  if (parsed.has("--ascii") && ext != ".stl") throw UsageError("--ascii applies to .stl output only");
+  if (parsed.has("--unit") && ext != ".3mf") throw UsageError("--unit applies to .3mf output only");
+  if (parsed.has("--scale") && ext != ".stl" && ext != ".3mf")
+    throw UsageError("--scale applies to .stl and .3mf");
+  if (parsed.has("--check") && parsed.has("--no-check"))
+    throw UsageError("--check and --no-check exclude each other");
+  ExportFormat format;
+  format.stl = parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary;
+  ThreeMfOptions& three_mf = format.three_mf;
+  if (const auto unit = parsed.value("--unit")) {
+    const auto parsed_unit = parse_length_unit(*unit);
+    if (!parsed_unit) throw UsageError("--unit expects mm, cm, in or m, found '" + *unit + "'");
+    three_mf.unit = *parsed_unit;
+  }
+  three_mf.scale = parsed.double_value("--scale", 1.0);
+  if (!(three_mf.scale > 0.0))
+    throw UsageError("--scale expects a positive factor, found " + *parsed.value("--scale"));
+  return format;
+}
+
 }  // namespace
 
 int export_command(const std::vector<std::string>& args) {
@@ -77,24 +95,10 @@ int export_command(const std::vector<std::string>& args) {
   const std::string ext = path.extension().string();
   if (ext != ".obj" && ext != ".stl" && ext != ".3mf" && ext != ".nome")
     throw UsageError("output must end in .obj, .stl, .3mf or .nome, found '" + *out + "'");
-  if (parsed.has("--ascii") && ext != ".stl") throw UsageError("--ascii applies to .stl output only");
-  if (parsed.has("--unit") && ext != ".3mf") throw UsageError("--unit applies to .3mf output only");
-  if (parsed.has("--scale") && ext != ".stl" && ext != ".3mf")
-    throw UsageError("--scale applies to .stl and .3mf");
-  if (parsed.has("--check") && parsed.has("--no-check"))
-    throw UsageError("--check and --no-check exclude each other");
-  ThreeMfOptions three_mf;
-  if (const auto unit = parsed.value("--unit")) {
-    const auto parsed_unit = parse_length_unit(*unit);
-    if (!parsed_unit) throw UsageError("--unit expects mm, cm, in or m, found '" + *unit + "'");
-    three_mf.unit = *parsed_unit;
-  }
-  three_mf.scale = parsed.double_value("--scale", 1.0);
-  if (!(three_mf.scale > 0.0))
-    throw UsageError("--scale expects a positive factor, found " + *parsed.value("--scale"));
+  const ExportFormat format = export_format(parsed, ext);
   ProgressBar bar(parsed.has("--quiet"));
-  LoadedInput loaded = run_input(parsed, Stage::subdivided_offset, bar.sink());
-  const Mesh& mesh = loaded.pipeline.run(loaded.settings);
+  LoadedInput loaded = run_input(parsed, Stage::subdivided_offset, bar.sink(),
+                                 ext == ".nome" || !streams_last_level(path, format));
   if (ext == ".nome") {
     if (loaded.scenes.size() != 1 || parsed.positionals().size() != 1)
       throw UsageError("-o OUT.nome saves one scene: give exactly one .nome, .nom or .slf file");
@@ -103,20 +107,11 @@ int export_command(const std::vector<std::string>& args) {
               << loaded.scenes.front().instances().size() << " top-level instances)\n";
     return 0;
   }
-  if (ext == ".obj")
-    write_obj(path, mesh, loaded.kept_tags);
-  else if (ext == ".3mf")
-    write_3mf(path, mesh, three_mf);
-  else if (three_mf.scale != 1.0)
-    write_stl(path, transformed(mesh, glm::scale(glm::dmat4(1.0), Vec3(three_mf.scale))),
-              parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary, bar.sink());
-  else
-    write_stl(path, mesh, parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary, bar.sink());
+  const ExportCounts counts = write_result(loaded, path, format, bar.sink());
   bar.finish();
-  const std::uint64_t triangles = triangle_count(mesh);
-  std::cerr << "nome: wrote " << *out << " (" << mesh.num_vertices() << " vertices, " << mesh.num_faces()
+  std::cerr << "nome: wrote " << *out << " (" << counts.vertices << " vertices, " << counts.faces
             << " faces)\n";
-  if (ext != ".obj") report_check(loaded, parsed, triangles);
+  if (ext != ".obj") report_check(loaded, parsed, counts.triangles);
   return 0;
 }
 
