@@ -2,7 +2,7 @@
 # The package list lives here and only here.
 PACKAGES := build-essential cmake pkg-config clang-format lib3mf-dev libglfw3-dev libimgui-dev libstb-dev libglm-dev \
             python3-glad libtinyobjloader-dev libtinygltf-dev libgif-dev catch2 libegl-dev libgl1-mesa-dri libosmesa6-dev xvfb xauth \
-            libbenchmark-dev libopenmesh-dev libosd-dev clang-14 libclang-rt-14-dev clang-tidy \
+            libbenchmark-dev libopenmesh-dev libcgal-dev libosd-dev clang-14 libclang-rt-14-dev clang-tidy \
             file desktop-file-utils shared-mime-info
 
 JOBS    ?= 2

@@ -1,19 +1,13 @@
 #include <iostream>
 #include <optional>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "cli/check_format.hpp"
 #include "cli/commands.hpp"
+#include "cli/export_result.hpp"
 #include "cli/input.hpp"
 #include "cli/print_check_input.hpp"
 #include "cli/print_setup_arguments.hpp"
 #include "cli/progress_bar.hpp"
-#include "io/three_mf.hpp"
-#include "nome/io/gltf.hpp"
-#include "nome/io/obj.hpp"
-#include "nome/io/ply.hpp"
-#include "nome/io/stl.hpp"
 #include "nome/scene/save_nome.hpp"
 
 namespace nome::cli {
@@ -42,25 +36,6 @@ std::vector<OptionSpec> export_options() {
 std::optional<PrintPlacementOptions> kept_print_setup(const LoadedInput& loaded) {
   if (loaded.scenes.size() != 1) return std::nullopt;
   return loaded.scenes.front().print_setup();
-}
-
-// Writes the mesh (placed for printing) as OBJ, STL or 3MF.
-void write_export(const std::filesystem::path& path, const Mesh& mesh, const LoadedInput& loaded,
-                  const Arguments& parsed, const ThreeMfOptions& three_mf, const Progress& progress) {
-  const std::string ext = path.extension().string();
-  if (ext == ".obj")
-    write_obj(path, mesh, loaded.kept_tags);
-  else if (ext == ".glb")
-    write_glb(path, mesh);
-  else if (ext == ".ply")
-    write_ply(path, mesh);
-  else if (ext == ".3mf")
-    write_3mf(path, mesh, three_mf);
-  else if (three_mf.scale != 1.0)
-    write_stl(path, transformed(mesh, glm::scale(glm::dmat4(1.0), Vec3(three_mf.scale))),
-              parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary, progress);
-  else
-    write_stl(path, mesh, parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary, progress);
 }
 
 // `-o OUT.nome`: the scene with its slider values and the print preparation asked for.
@@ -92,15 +67,17 @@ void report_check(LoadedInput& loaded, const Arguments& parsed, std::uint64_t tr
             << (check.is_printable() ? "\n" : "; 'nome check' lists the places\n");
 }
 
-// The output options, checked against each other and the output's kind.
-ThreeMfOptions checked_output_options(const Arguments& parsed, const std::string& ext) {
+// The output format's options, checked against each other and the output's kind.
+ExportFormat export_format(const Arguments& parsed, const std::string& ext) {
   if (parsed.has("--ascii") && ext != ".stl") throw UsageError("--ascii applies to .stl output only");
   if (parsed.has("--unit") && ext != ".3mf") throw UsageError("--unit applies to .3mf output only");
   if (parsed.has("--scale") && ext != ".stl" && ext != ".3mf")
     throw UsageError("--scale applies to .stl and .3mf");
   if (parsed.has("--check") && parsed.has("--no-check"))
     throw UsageError("--check and --no-check exclude each other");
-  ThreeMfOptions three_mf;
+  ExportFormat format;
+  format.stl = parsed.has("--ascii") ? StlFormat::ascii : StlFormat::binary;
+  ThreeMfOptions& three_mf = format.three_mf;
   if (const auto unit = parsed.value("--unit")) {
     const auto parsed_unit = parse_length_unit(*unit);
     if (!parsed_unit) throw UsageError("--unit expects mm, cm, in or m, found '" + *unit + "'");
@@ -109,7 +86,7 @@ ThreeMfOptions checked_output_options(const Arguments& parsed, const std::string
   three_mf.scale = parsed.double_value("--scale", 1.0);
   if (!(three_mf.scale > 0.0))
     throw UsageError("--scale expects a positive factor, found " + *parsed.value("--scale"));
-  return three_mf;
+  return format;
 }
 
 }  // namespace
@@ -146,27 +123,25 @@ int export_command(const std::vector<std::string>& args) {
   const std::string ext = path.extension().string();
   if (ext != ".obj" && ext != ".stl" && ext != ".3mf" && ext != ".glb" && ext != ".ply" && ext != ".nome")
     throw UsageError("output must end in .obj, .stl, .3mf, .glb, .ply or .nome, found '" + *out + "'");
-  const ThreeMfOptions three_mf = checked_output_options(parsed, ext);
+  ExportFormat format = export_format(parsed, ext);
   ProgressBar bar(parsed.has("--quiet"));
-  LoadedInput loaded = run_input(parsed, Stage::subdivided_offset, bar.sink());
-  const Mesh& mesh = loaded.pipeline.run(loaded.settings);
   if (ext == ".nome") {
+    LoadedInput loaded = run_input(parsed, Stage::subdivided_offset, bar.sink());
     save_scene(loaded, parsed, path);
     return 0;
   }
-  const PrintPlacementOptions setup = print_setup_argument(parsed, kept_print_setup(loaded), three_mf.unit);
-  if (!setup.is_identity() && parsed.has("--scale"))
+  // The last subdivision level is left to write_result: it may go from its quads straight to the file.
+  LoadedInput loaded = run_input(parsed, Stage::subdivided_offset, bar.sink(), false);
+  format.placement = print_setup_argument(parsed, kept_print_setup(loaded), format.three_mf.unit);
+  if (!format.placement.is_identity() && parsed.has("--scale"))
     throw UsageError(
         "--scale and print preparation (--fit-height, --fit-size, --rest-on, a printsetup) "
         "exclude each other");
-  std::optional<Mesh> placed;
-  if (!setup.is_identity()) placed = placed_for_print(mesh, setup);
-  write_export(path, placed ? *placed : mesh, loaded, parsed, three_mf, bar.sink());
+  const ExportCounts counts = write_result(loaded, path, format, bar.sink());
   bar.finish();
-  const std::uint64_t triangles = triangle_count(mesh);
-  std::cerr << "nome: wrote " << *out << " (" << mesh.num_vertices() << " vertices, " << mesh.num_faces()
+  std::cerr << "nome: wrote " << *out << " (" << counts.vertices << " vertices, " << counts.faces
             << " faces)\n";
-  if (ext == ".stl" || ext == ".3mf") report_check(loaded, parsed, triangles);
+  if (ext == ".stl" || ext == ".3mf") report_check(loaded, parsed, counts.triangles);
   return 0;
 }
 

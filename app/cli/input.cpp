@@ -43,7 +43,7 @@ Stage stage_argument(const std::string& name) {
                    "'");
 }
 
-LoadedInput run_input(const Arguments& args, Stage last, const Progress& progress) {
+LoadedInput run_input(const Arguments& args, Stage last, const Progress& progress, bool builds_last_level) {
   if (args.positionals().empty()) throw UsageError("no input FILE given");
   InputFiles input = read_input_files(args);
   LoadedInput loaded;
@@ -61,7 +61,10 @@ LoadedInput run_input(const Arguments& args, Stage last, const Progress& progres
   loaded.pipeline.set_input(std::move(input.geometry));
   loaded.pipeline.set_progress(progress);
   try {
-    loaded.pipeline.run(loaded.settings);
+    if (builds_last_level)
+      loaded.pipeline.run(loaded.settings);
+    else
+      loaded.pipeline.run_to_last_subdivision(loaded.settings);
   } catch (const BudgetError& e) {
     throw BudgetError(std::string(e.what()) + "; use --force to compute it anyway");
   }

@@ -29,8 +29,10 @@ struct LoadedInput {
 };
 
 // Reads the FILE arguments and runs the pipeline up to `last`, printing its warnings; its stages report
-// to `progress` (also in later runs of the returned pipeline).
-LoadedInput run_input(const Arguments& args, Stage last, const Progress& progress = {});
+// to `progress` (also in later runs of the returned pipeline). Unless `builds_last_level`, a last stage
+// that is a subdivision is left to the caller (Pipeline::run_surface, run_to_last_subdivision).
+LoadedInput run_input(const Arguments& args, Stage last, const Progress& progress = {},
+                      bool builds_last_level = true);
 
 // Reads the FILE arguments (several become parts of one mesh) and runs the kernel's pipeline up to
 // `last` with the options' settings; the scenes read (.nome, .slf) come back through `scenes`.

@@ -30,7 +30,12 @@ TEST_CASE("nome info reports the pipeline's result", "[app]") {
     const auto r = run_nome("info " + assets + "cube.obj --json --subdiv 2 --rule " + rule);
     CHECK(r.status == 0);
     CHECK_THAT(r.out, Catch::Contains("\"vertices\": 98, \"edges\": 192, \"faces\": 96, \"chi\": 2"));
+    // Counted on the cube itself, and said so.
+    CHECK_THAT(r.out, Catch::Contains("\"derived_over_levels\": 2"));
   }
+  const auto text = run_nome("info " + assets + "cube.obj --subdiv 2");
+  CHECK_THAT(text.out, Catch::Contains("counted on the mesh before the last 2 subdivision levels") &&
+                           Catch::Contains("vertices 98, edges 192, faces 96"));
   // A disk thickens into a sphere; subdivision after keeps it one.
   const auto disk = run_nome("info " + assets + "grid.obj --json --offset 0.1 --subdiv-after 1");
   CHECK(disk.status == 0);

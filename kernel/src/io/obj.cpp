@@ -210,22 +210,4 @@ PolygonSoup read_obj(const std::filesystem::path& path) {
   return soup;
 }
 
-void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSubdivisionTags& tags) {
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << "# written by nome: " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces\n";
-    char buf[96];
-    for (Index v = 0; v < mesh.num_vertices(); ++v) {
-      const Vec3& p = mesh.position(v);
-      std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
-      out << buf;
-    }
-    for (Index f = 0; f < mesh.num_faces(); ++f) {
-      out << 'f';
-      for (Index v : mesh.face_vertices(f)) out << ' ' << (v + 1);
-      out << '\n';
-    }
-    write_obj_tags(out, mesh, tags);
-  });
-}
-
 }  // namespace nome

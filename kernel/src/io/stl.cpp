@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -12,16 +13,74 @@
 namespace nome {
 namespace {
 
-void put_float(std::ostream& out, double value) {
-  const float f = static_cast<float>(value);
-  char bytes[4];
-  std::memcpy(bytes, &f, 4);  // STL is little-endian, as is every machine we target
-  out.write(bytes, 4);
-}
-
 Vec3 unit_or_zero(const Vec3& n) {
   const double len = glm::length(n);
   return len > 0.0 ? n / len : Vec3(0.0);
+}
+
+// Binary records gathered into blocks of this many bytes: one stream write per block, not twelve per
+// triangle (the stream's per-call cost was most of the writer's time).
+constexpr std::size_t stl_block = std::size_t(1) << 20;
+constexpr std::size_t record_bytes = 50;
+
+char* put_vec(char* at, const Vec3& v) {
+  const float f[3] = {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+  std::memcpy(at, f, 12);  // STL is little-endian, as is every machine we target
+  return at + 12;
+}
+
+void put_ascii_facet(std::ostream& out, const Vec3& n, const Vec3* const (&corners)[3]) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "  facet normal %.9g %.9g %.9g\n    outer loop\n", n.x, n.y, n.z);
+  out << buf;
+  for (const Vec3* p : corners) {
+    std::snprintf(buf, sizeof buf, "      vertex %.9g %.9g %.9g\n", p->x, p->y, p->z);
+    out << buf;
+  }
+  out << "    endloop\n  endfacet\n";
+}
+
+// Any surface with num_faces(), face_vertices(f), position(v) and positions: a Mesh or a QuadSurface.
+template <class Surface>
+void write_stl_surface(std::ostream& out, const Surface& surface, StlFormat format,
+                       const Progress& progress) {
+  std::uint32_t triangles = 0;
+  for (Index f = 0; f < surface.num_faces(); ++f) triangles += surface.face_degree(f) - 2;
+  std::vector<char> block;
+  if (format == StlFormat::binary) {
+    block.resize(stl_block + record_bytes);
+    std::memset(block.data(), 0, 84);
+    std::snprintf(block.data(), 80, "nome binary STL");
+    std::memcpy(block.data() + 80, &triangles, 4);
+  } else {
+    out << "solid nome\n";
+  }
+  char* at = block.data() + (block.empty() ? 0 : 84);
+  for (Index f = 0; f < surface.num_faces(); ++f) {
+    if (f % (Index(1) << 16) == 0) progress("writing STL", double(f) / surface.num_faces());
+    const auto vs = surface.face_vertices(f);
+    const Vec3 n = unit_or_zero(polygon_area_normal(vs, surface.positions));
+    for (size_t i = 1; i + 1 < vs.size(); ++i) {
+      const Vec3* const corners[3] = {&surface.position(vs[0]), &surface.position(vs[i]),
+                                      &surface.position(vs[i + 1])};
+      if (format == StlFormat::ascii) {
+        put_ascii_facet(out, n, corners);
+        continue;
+      }
+      at = put_vec(at, n);
+      for (const Vec3* p : corners) at = put_vec(at, *p);
+      *at++ = 0;
+      *at++ = 0;
+      if (size_t(at - block.data()) >= stl_block) {
+        out.write(block.data(), at - block.data());
+        at = block.data();
+      }
+    }
+  }
+  if (format == StlFormat::binary)
+    out.write(block.data(), at - block.data());
+  else
+    out << "endsolid nome\n";
 }
 
 }  // namespace
@@ -29,41 +88,21 @@ Vec3 unit_or_zero(const Vec3& n) {
 void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat format,
                const Progress& progress) {
   write_file_atomically(path, [&](std::ostream& out) {
-    std::uint32_t triangles = 0;
-    for (Index f = 0; f < mesh.num_faces(); ++f) triangles += mesh.face_degree(f) - 2;
-    if (format == StlFormat::binary) {
-      char header[80] = {};
-      std::snprintf(header, sizeof header, "nome binary STL");
-      out.write(header, 80);
-      out.write(reinterpret_cast<const char*>(&triangles), 4);
-    } else {
-      out << "solid nome\n";
-    }
-    char buf[160];
-    for (Index f = 0; f < mesh.num_faces(); ++f) {
-      if (f % (Index(1) << 16) == 0) progress("writing STL", double(f) / mesh.num_faces());
-      const Vec3 n = unit_or_zero(face_area_normal(mesh, f));
-      const auto vs = mesh.face_vertices(f);
-      for (size_t i = 1; i + 1 < vs.size(); ++i) {
-        const Vec3* corners[3] = {&mesh.position(vs[0]), &mesh.position(vs[i]), &mesh.position(vs[i + 1])};
-        if (format == StlFormat::binary) {
-          for (int k = 0; k < 3; ++k) put_float(out, n[k]);
-          for (const Vec3* p : corners)
-            for (int k = 0; k < 3; ++k) put_float(out, (*p)[k]);
-          out.write("\0\0", 2);
-        } else {
-          std::snprintf(buf, sizeof buf, "  facet normal %.9g %.9g %.9g\n    outer loop\n", n.x, n.y, n.z);
-          out << buf;
-          for (const Vec3* p : corners) {
-            std::snprintf(buf, sizeof buf, "      vertex %.9g %.9g %.9g\n", p->x, p->y, p->z);
-            out << buf;
-          }
-          out << "    endloop\n  endfacet\n";
-        }
-      }
-    }
-    if (format == StlFormat::ascii) out << "endsolid nome\n";
+    struct MeshSurface {
+      const Mesh& mesh;
+      std::span<const Vec3> positions;
+      Index num_faces() const { return mesh.num_faces(); }
+      Index face_degree(Index f) const { return mesh.face_degree(f); }
+      std::span<const Index> face_vertices(Index f) const { return mesh.face_vertices(f); }
+      const Vec3& position(Index v) const { return positions[v]; }
+    };
+    write_stl_surface(out, MeshSurface{mesh, mesh.positions()}, format, progress);
   });
+}
+
+void write_stl(const std::filesystem::path& path, const QuadSurface& surface, StlFormat format,
+               const Progress& progress) {
+  write_file_atomically(path, [&](std::ostream& out) { write_stl_surface(out, surface, format, progress); });
 }
 
 }  // namespace nome

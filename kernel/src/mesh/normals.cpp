@@ -15,15 +15,18 @@ Vec3 newell_term(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-Vec3 face_area_normal(const Mesh& mesh, Index f) {
-  const auto vs = mesh.face_vertices(f);
+Vec3 polygon_area_normal(std::span<const Index> vertices, std::span<const Vec3> positions) {
   Vec3 n(0.0);
-  const Vec3* a = &mesh.position(vs.back());
-  for (Index v : vs) {
-    n += newell_term(*a, mesh.position(v));
-    a = &mesh.position(v);
+  const Vec3* a = &positions[vertices.back()];
+  for (Index v : vertices) {
+    n += newell_term(*a, positions[v]);
+    a = &positions[v];
   }
   return n;
+}
+
+Vec3 face_area_normal(const Mesh& mesh, Index f) {
+  return polygon_area_normal(mesh.face_vertices(f), mesh.positions());
 }
 
 Normals compute_normals(const Mesh& mesh) {

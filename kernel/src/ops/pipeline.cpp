@@ -15,6 +15,8 @@ namespace {
 // Bytes a cached quad-mesh stage holds per face: the Mesh with its adjacency (positions, corners,
 // edges, fans, about 180) plus the refinement's previous level and level positions (about 40).
 constexpr double bytes_per_face = 220.0;
+// A last level kept as quads: its corners (16) and positions (about 24), plus the level before it (8).
+constexpr double quad_bytes_per_face = 48.0;
 
 std::string gigabytes(double bytes) {
   char text[32];
@@ -22,8 +24,8 @@ std::string gigabytes(double bytes) {
   return text;
 }
 
-void check_budget(const Mesh& input, const PipelineSettings& s) {
-  const PipelineEstimate estimate = estimate_pipeline(input, s);
+void check_budget(const Mesh& input, const PipelineSettings& s, bool streams_last_level) {
+  const PipelineEstimate estimate = estimate_pipeline(input, s, streams_last_level);
   if (!s.force && estimate.bytes > double(s.memory_budget))
     throw BudgetError("pipeline: the result would have about " +
                       std::to_string(std::llround(estimate.faces)) + " faces and need about " +
@@ -33,23 +35,23 @@ void check_budget(const Mesh& input, const PipelineSettings& s) {
 
 }  // namespace
 
-PipelineEstimate estimate_pipeline(const Mesh& input, const PipelineSettings& s) {
+PipelineEstimate estimate_pipeline(const Mesh& input, const PipelineSettings& s, bool streams_last_level) {
   double faces = input.num_faces(), corners = input.num_corners(), border = 0, bytes = 0;
   for (const Edge& e : input.edges()) border += e.is_boundary() ? 1 : 0;
-  auto subdivide_counts = [&](int levels) {
+  auto subdivide_counts = [&](int levels, bool is_last) {
     if (levels == 0) return;
     faces = corners * std::pow(4.0, levels - 1);
     corners = 4 * faces;
     border *= std::pow(2.0, levels);
-    bytes += faces * bytes_per_face;
+    bytes += faces * (is_last && streams_last_level ? quad_bytes_per_face : bytes_per_face);
   };
-  subdivide_counts(s.levels_before());
+  subdivide_counts(s.levels_before(), s.distance() == 0);
   if (s.distance() > 0) {
     faces = 2 * faces + border;
     corners = 2 * corners + 4 * border;
     border = 0;
     bytes += faces * bytes_per_face;
-    subdivide_counts(s.levels_after());
+    subdivide_counts(s.levels_after(), true);
   }
   return {faces, bytes};
 }
@@ -83,6 +85,7 @@ void Pipeline::set_input(const Mesh& scene_mesh) {
 }
 
 void Pipeline::set_progress(Progress progress) {
+  progress_ = progress;
   solid_->set_progress(std::move(progress));
 }
 
@@ -92,6 +95,12 @@ const Mesh& Pipeline::run(const Mesh& scene_mesh, const PipelineSettings& settin
 }
 
 const Mesh& Pipeline::run(const PipelineSettings& s) {
+  return run(s, s, false);
+}
+
+const Mesh& Pipeline::run(const PipelineSettings& s, const PipelineSettings& budgeted,
+                          bool streams_last_level) {
+  last_level_.reset();
   warnings_ = std::move(input_warnings_);
   input_warnings_.clear();
   const Mesh* current = &scene_->mesh();
@@ -107,7 +116,7 @@ const Mesh& Pipeline::run(const PipelineSettings& s) {
     source = int(Stage::merged);
   }
   if (s.stage <= Stage::merged) return *(result_ = current);
-  check_budget(*current, s);
+  check_budget(*current, budgeted, streams_last_level);
   if (source != solid_source_) solid_change_ = int(InputChange::topology);
   const InputChange change = InputChange(solid_change_);
   solid_source_ = -1;  // until the solid stages have run on it
@@ -116,6 +125,33 @@ const Mesh& Pipeline::run(const PipelineSettings& s) {
   solid_change_ = 0;
   for (const std::string& w : solid_->warnings()) warnings_.push_back(w);
   return *result_;
+}
+
+LastSubdivision Pipeline::run_to_last_subdivision(const PipelineSettings& s, bool needs_creases) {
+  const bool is_after_offset = s.levels_after() > 0;
+  const int levels = is_after_offset ? s.levels_after() : s.distance() > 0 ? 0 : s.levels_before();
+  if (levels == 0) return {&run(s), 0};
+  PipelineSettings before = s;
+  (is_after_offset ? before.subdivision_after : before.subdivision_levels) = 0;
+  const Mesh& input = run(before, s, true);
+  bool has_sharp_edge = input.has_sharpness_weights();
+  for (const Edge& e : input.edges()) has_sharp_edge = has_sharp_edge || e.is_sharp;
+  // Holes and BoundaryMode::none drop faces and renumber vertices: only the Mesh has that.
+  const bool drops_faces =
+      input.has_holes() || (s.boundary == BoundaryMode::none && input.num_boundary_loops() > 0);
+  if (drops_faces || (needs_creases && has_sharp_edge)) return {&run(s), 0};
+  return {&input, levels};
+}
+
+PipelineSurface Pipeline::run_surface(const PipelineSettings& s, bool needs_creases) {
+  const LastSubdivision last = run_to_last_subdivision(s, needs_creases);
+  if (last.levels == 0) return {last.input, std::nullopt};
+  progress_("subdivision", 0.0);
+  last_level_.emplace(*last.input, last.levels, s.boundary, s.threads, s.creases);
+  progress_("subdivision", 0.5);
+  const std::span<const Vec3> positions = last_level_->refine_positions(*last.input, s.rule, s.threads);
+  progress_("subdivision", 1.0);
+  return {nullptr, QuadSurface{positions, last_level_->quad_vertices()}};
 }
 
 Mesh Pipeline::take_result() {

@@ -5,6 +5,7 @@
 #include "nome/io/obj_tags.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/polygon_soup.hpp"
+#include "nome/mesh/quad_surface.hpp"
 
 namespace nome {
 
@@ -18,5 +19,8 @@ PolygonSoup read_obj(const std::filesystem::path& path);
 // their orientation. Vertex names become comments. Atomic (see write_file_atomically).
 // OpenSubdiv's tag lines follow the faces: the mesh's crease and corner weights and holes, and `tags`.
 void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSubdivisionTags& tags = {});
+// The same bytes from the last level of a subdivision, without its Mesh (Pipeline::run_quads with
+// creases: the surface's mesh would have no tags to write).
+void write_obj(const std::filesystem::path& path, const QuadSurface& surface);
 
 }  // namespace nome

@@ -4,6 +4,7 @@
 
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/polygon_soup.hpp"
+#include "nome/mesh/quad_surface.hpp"
 #include "nome/progress.hpp"
 
 namespace nome {
@@ -14,6 +15,9 @@ enum class StlFormat { binary, ascii };
 // orientation (Newell). Atomic (see write_file_atomically).
 void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat format = StlFormat::binary,
                const Progress& progress = {});
+// The same bytes from the last level of a subdivision, without its Mesh (Pipeline::run_quads).
+void write_stl(const std::filesystem::path& path, const QuadSurface& surface,
+               StlFormat format = StlFormat::binary, const Progress& progress = {});
 
 }  // namespace nome
 

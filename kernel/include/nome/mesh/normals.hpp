@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,8 @@ namespace nome {
 // Newell's normal of face f (unnormalized: its length is twice the polygon's area), robust for
 // non-planar and non-convex polygons.
 Vec3 face_area_normal(const Mesh& mesh, Index f);
+// The same for the polygon `vertices` (indices into `positions`), with the same arithmetic.
+Vec3 polygon_area_normal(std::span<const Index> vertices, std::span<const Vec3> positions);
 
 struct Normals {
   Buffer<Vec3> faces;     // unit face normals (zero for a degenerate face)

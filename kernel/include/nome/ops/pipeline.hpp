@@ -2,10 +2,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/mesh/quad_surface.hpp"
 #include "nome/ops/merge.hpp"
 #include "nome/ops/pipeline_input.hpp"
 #include "nome/ops/pipeline_settings.hpp"
@@ -19,8 +21,10 @@ struct PipelineEstimate {
   double bytes = 0;  // every cached stage together
 };
 
-// The estimate for the stages after the merge, from the mesh they start from.
-PipelineEstimate estimate_pipeline(const Mesh& input, const PipelineSettings& settings);
+// The estimate for the stages after the merge, from the mesh they start from. `streams_last_level`: the
+// last stage, a subdivision, is kept as quads (Pipeline::run_surface), not as a Mesh.
+PipelineEstimate estimate_pipeline(const Mesh& input, const PipelineSettings& settings,
+                                   bool streams_last_level = false);
 
 // What a stage did in the last run.
 enum class StageWork { skipped, cached, positions, rebuilt };
@@ -30,6 +34,21 @@ struct MergeSummary {
   Index glued_edges = 0;  // pairs of boundary edges that became one edge
   double tolerance = 0;   // the absolute tolerance used
   std::vector<SkippedMerge> skipped;
+};
+
+// The input of the settings' last stage when that stage is a subdivision whose every face is output (no
+// holes, no border dropped by BoundaryMode::none), with its level count; otherwise the whole result with
+// levels = 0.
+struct LastSubdivision {
+  const Mesh* input = nullptr;
+  int levels = 0;
+};
+
+// The result of Pipeline::run_surface: the last subdivision's quads, or the Mesh when they cannot stand
+// for it.
+struct PipelineSurface {
+  const Mesh* mesh = nullptr;
+  std::optional<QuadSurface> quads;
 };
 
 class SceneStage;
@@ -64,6 +83,14 @@ class Pipeline {
   const Mesh& run(const PipelineSettings& settings);
   // The same, with the scene mesh given (set_input, then run).
   const Mesh& run(const Mesh& scene_mesh, const PipelineSettings& settings);
+  // Runs the stages before the last subdivision (see LastSubdivision), checking the budget of the whole
+  // run with that level as quads. `needs_creases`: the caller reads the result's sharp edges, so a last
+  // level that would have some is run as a Mesh.
+  LastSubdivision run_to_last_subdivision(const PipelineSettings& settings, bool needs_creases = false);
+  // The result of run() for a writer: the last subdivision level as positions and quads straight from its
+  // Refinement (the same positions and quads in the same order as run()'s Mesh, at about a fifth of the
+  // memory), or run()'s Mesh when the last stage is not such a subdivision. Valid until the next run.
+  PipelineSurface run_surface(const PipelineSettings& settings, bool needs_creases = false);
   // Moves the last result out (for a one-shot caller such as the command line); the caches start over.
   Mesh take_result();
 
@@ -79,6 +106,9 @@ class Pipeline {
 
  private:
   void input_changed(int change);
+  // run(), with the budget checked for `budgeted` (the last level as quads when `streams_last_level`).
+  const Mesh& run(const PipelineSettings& settings, const PipelineSettings& budgeted,
+                  bool streams_last_level);
 
   std::unique_ptr<SceneStage> scene_;
   std::unique_ptr<MergeStage> merged_;
@@ -88,6 +118,8 @@ class Pipeline {
   int merge_change_ = 0, solid_change_ = 0;
   int solid_source_ = -1;  // the stage the solid stages last started from
   const Mesh* result_ = nullptr;
+  std::optional<Refinement> last_level_;  // run_surface's: the last level's quads and positions
+  Progress progress_;
   std::vector<std::string> input_warnings_;
   std::vector<std::string> warnings_;
 };

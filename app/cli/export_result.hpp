@@ -1,0 +1,36 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+
+#include "cli/input.hpp"
+#include "io/three_mf.hpp"
+#include "nome/io/stl.hpp"
+#include "nome/ops/print_placement.hpp"
+
+namespace nome::cli {
+
+// How `nome export` writes a .obj, .stl, .3mf, .glb or .ply.
+struct ExportFormat {
+  StlFormat stl = StlFormat::binary;
+  ThreeMfOptions three_mf;
+  PrintPlacementOptions placement;  // scaled and stood on a face before writing, unless the identity
+};
+
+// What was written, for the command's summary line and its print check.
+struct ExportCounts {
+  std::uint64_t vertices = 0, faces = 0, triangles = 0;
+};
+
+// True when an export to `path` can write the last subdivision level from its quads (.stl or .obj, not
+// scaled or placed): run_input need not build that level's Mesh.
+bool streams_last_level(const std::filesystem::path& path, const ExportFormat& format);
+
+// Writes the result of `loaded`'s settings to `path` (.obj, .stl, .3mf, .glb or .ply), placed for printing
+// when format.placement says so. Where streams_last_level says
+// so, the last subdivision level goes from its quads to the file (Pipeline::run_surface: the same bytes
+// at about a fifth of the memory); otherwise from the pipeline's Mesh.
+ExportCounts write_result(LoadedInput& loaded, const std::filesystem::path& path, const ExportFormat& format,
+                          const Progress& progress);
+
+}  // namespace nome::cli

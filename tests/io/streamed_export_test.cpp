@@ -1,0 +1,124 @@
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "nome/io/obj.hpp"
+#include "nome/io/stl.hpp"
+#include "nome/ops/pipeline.hpp"
+#include "support/shapes.hpp"
+
+using namespace nome;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path streamed_scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("nome_streamed_tests_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+std::string file_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+PipelineSettings streamed_settings(int levels, double distance = 0.0, int after = 0) {
+  PipelineSettings s;
+  s.subdivision_levels = levels;
+  s.offset_distance = distance;
+  s.subdivision_after = after;
+  return s;
+}
+
+// Writes `ext` once from the pipeline's Mesh and once from its quads (a pipeline each) and returns both.
+std::pair<std::string, std::string> both_ways(const Mesh& mesh, const PipelineSettings& s,
+                                              const std::string& ext, StlFormat format = StlFormat::binary) {
+  const fs::path from_mesh = streamed_scratch("mesh" + ext), from_quads = streamed_scratch("quads" + ext);
+  Pipeline whole;
+  if (ext == ".obj")
+    write_obj(from_mesh, whole.run(mesh, s));
+  else
+    write_stl(from_mesh, whole.run(mesh, s), format);
+  Pipeline streamed;
+  streamed.set_input(mesh);
+  const PipelineSurface surface = streamed.run_surface(s, ext == ".obj");
+  REQUIRE(surface.quads);
+  if (ext == ".obj")
+    write_obj(from_quads, *surface.quads);
+  else
+    write_stl(from_quads, *surface.quads, format);
+  return {file_bytes(from_mesh), file_bytes(from_quads)};
+}
+
+}  // namespace
+
+TEST_CASE("STL and OBJ from the last level's quads are the bytes of the Mesh's", "[io]") {
+  const Mesh torus = build_mesh(test::torus(8, 4));
+  const Mesh band = build_mesh(test::mobius_band(12, 2));
+  for (const Mesh* mesh : {&torus, &band})
+    for (int levels : {1, 2, 3}) {
+      CAPTURE(mesh->num_faces(), levels);
+      for (const char* ext : {".stl", ".obj"}) {
+        const auto [expected, streamed] = both_ways(*mesh, streamed_settings(levels), ext);
+        CHECK(expected.size() > 84);
+        CHECK(expected == streamed);
+      }
+      const auto [ascii, streamed_ascii] =
+          both_ways(*mesh, streamed_settings(levels), ".stl", StlFormat::ascii);
+      CHECK(ascii == streamed_ascii);
+    }
+  // The last subdivision after the offset: a Möbius band's solid (a torus) rounded.
+  for (const char* ext : {".stl", ".obj"}) {
+    const auto [expected, streamed] = both_ways(band, streamed_settings(1, 0.05, 2), ext);
+    CHECK(expected == streamed);
+  }
+}
+
+TEST_CASE("OBJ positions are written as printf's %.17g", "[io]") {
+  const Mesh band = build_mesh(test::mobius_band(12, 2));
+  const fs::path p = streamed_scratch("band.obj");
+  write_obj(p, band);
+  std::ifstream in(p);
+  std::string line;
+  std::getline(in, line);  // the comment
+  for (Index v = 0; v < band.num_vertices(); ++v) {
+    std::getline(in, line);
+    char expected[96];
+    const Vec3& q = band.position(v);
+    std::snprintf(expected, sizeof expected, "v %.17g %.17g %.17g", q.x, q.y, q.z);
+    REQUIRE(line == expected);
+  }
+  std::string face = "f";
+  for (Index v : band.face_vertices(0)) face += " " + std::to_string(v + 1);
+  std::getline(in, line);
+  CHECK(line == face);
+}
+
+TEST_CASE("run_surface gives the Mesh where the quads cannot stand for it", "[io]") {
+  Mesh band = build_mesh(test::mobius_band(12, 2));
+  Pipeline pipeline;
+  pipeline.set_input(band);
+  PipelineSettings none = streamed_settings(2);
+  none.boundary = BoundaryMode::none;  // drops the faces at the border
+  const PipelineSurface dropped = pipeline.run_surface(none);
+  CHECK_FALSE(dropped.quads);
+  REQUIRE(dropped.mesh);
+  CHECK(dropped.mesh->num_faces() < 4 * 4 * band.num_faces());
+  // Sharp edges: an OBJ writes them as tags, an STL has none to write.
+  band.set_sharp(0, true);
+  pipeline.set_input(band);
+  CHECK_FALSE(pipeline.run_surface(streamed_settings(2), true).quads);
+  CHECK(pipeline.run_surface(streamed_settings(2), false).quads);
+  // No subdivision last: the offset's Mesh.
+  const PipelineSurface offset = pipeline.run_surface(streamed_settings(1, 0.05));
+  CHECK_FALSE(offset.quads);
+  CHECK(offset.mesh);
+}
