@@ -55,6 +55,8 @@ enum class Action {
   toggle_parameter_lock,
   toggle_sif_pairing,
   toggle_sharp,
+  print_check,
+  next_print_place,
 };
 
 // One row of the table every binding is read from: the script's name, a shortcut (key 0: none; an
