@@ -7,9 +7,9 @@
 #include "cli/input.hpp"
 #include "cli/print_check_input.hpp"
 #include "cli/progress_bar.hpp"
-#include "io/three_mf.hpp"
 #include "nome/io/obj.hpp"
 #include "nome/io/stl.hpp"
+#include "nome/io/three_mf.hpp"
 #include "nome/scene/save_nome.hpp"
 
 namespace nome::cli {
