@@ -41,7 +41,7 @@ Patches make_patches(const Mesh& surface, const VertexGraph& graph, double radiu
 
 // A triangle near a patch that the patch's shared search cannot place inside the neighbourhood of every
 // vertex of the patch, with its distance from the seed (along the edges, through its nearest corner).
-struct Candidate {
+struct PatchCandidate {
   Index triangle;
   double from_seed;
   Vec3 lower, upper;  // the triangle's box: most candidates are too far from a vertex to need more
@@ -146,7 +146,7 @@ class PatchWorker {
     NearMiss best;
     best.distance = options_.min_wall;
     open_.clear();
-    for (const Candidate& c : candidates_) {
+    for (const PatchCandidate& c : candidates_) {
       if (c.from_seed + from_seed < limit) continue;
       if (squared_box_distance(p, c.lower, c.upper) >= best.distance * best.distance) continue;
       const Triangle tri{bvh_.triangle_point(c.triangle, 0), bvh_.triangle_point(c.triangle, 1),
@@ -199,7 +199,7 @@ class PatchWorker {
   std::vector<Index> stamp_;
   Index current_ = 0;
   std::vector<Index> near_;
-  std::vector<Candidate> candidates_;
+  std::vector<PatchCandidate> candidates_;
   std::vector<OpenCandidate> open_;
 };
 
