@@ -16,6 +16,19 @@ PipelineSettings checked_settings(PipelineSettings settings) {
   return settings;
 }
 
+// A copy of the surface the offset thickens (the subdivided stage) for these settings, from the check's
+// own pipeline: running the stage pipeline to another stage would drop the offset it caches for the next
+// slider move. None when a newer check was asked for before it began.
+std::shared_ptr<const Mesh> surface_to_check(CheckPipeline& check, const PipelineInput& input,
+                                             const PipelineSettings& settings, std::stop_token stop) {
+  std::lock_guard lock(check.mutex);
+  if (stop.stop_requested()) return nullptr;
+  PipelineSettings surface = settings;
+  surface.stage = Stage::subdivided;
+  check.pipeline.set_input(input);
+  return std::make_shared<const Mesh>(check.pipeline.run(surface));
+}
+
 // Thrown from the check's progress to give up once a newer request superseded it.
 struct Superseded {};
 
@@ -63,17 +76,16 @@ std::vector<std::array<Index, 2>> shown_faces_of(const Mesh& surface, Index f, S
   return {{Index(first), Index(end)}, {Index(other), Index(other_end)}};
 }
 
-void PrintCheckView::request(StageView& stage, const Session& session, const PipelineSettings& settings) {
-  StagePipeline& pipeline = stage.pipeline();
+void PrintCheckView::request(const Session& session, const PipelineSettings& settings) {
   {
     std::lock_guard lock(progress_->mutex);
     progress_->fraction = 0.0;
   }
-  job_.submit([&pipeline, input = session.pipeline_input(), version = session.version(),
+  job_.submit([pipeline = pipeline_, input = session.pipeline_input(), version = session.version(),
                settings = checked_settings(settings), wall = min_wall,
                progress = progress_](std::stop_token stop) -> std::optional<PrintCheckRun> {
     const auto start = std::chrono::steady_clock::now();
-    PrintCheckRun run{version, settings, wall, pipeline.checked_surface(input, settings, stop), {}, 0.0};
+    PrintCheckRun run{version, settings, wall, surface_to_check(*pipeline, input, settings, stop), {}, 0.0};
     if (!run.surface) return std::nullopt;
     PrintCheckOptions options;
     options.offset_distance = settings.offset_distance;
@@ -118,7 +130,7 @@ bool PrintCheckView::update(StageView& stage, const Session& session, double now
   // in the background for a check nobody asked for.
   const bool is_offset_shown = stage.settings().stage >= Stage::offset;
   if (is_automatic && is_offset_shown && !is_seen_checked_ && now - changed_at_ >= rest_seconds)
-    request(stage, session, stage.settings());
+    request(session, stage.settings());
   return has_arrived;
 }
 

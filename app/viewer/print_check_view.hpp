@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "nome/ops/pipeline.hpp"
 #include "nome/query/print_check.hpp"
 #include "render/cube_set.hpp"
 #include "viewer/background_job.hpp"
@@ -18,6 +19,12 @@ namespace nome::viewer {
 
 // A face of the shown mesh and the RGBA colour painted over its own.
 using FacePaint = std::pair<Index, std::array<std::uint8_t, 4>>;
+
+// The check's own pipeline, its runs serialised (a superseded check may still be running).
+struct CheckPipeline {
+  std::mutex mutex;
+  Pipeline pipeline;
+};
 
 // One finished print check, and what it was run on.
 struct PrintCheckRun {
@@ -38,7 +45,7 @@ class PrintCheckView {
   double min_wall = 0.0;     // 0: 2 x the offset distance
 
   // Starts a check of the session's polygons under `settings` now (a newer request supersedes one in flight).
-  void request(StageView& stage, const Session& session, const PipelineSettings& settings);
+  void request(const Session& session, const PipelineSettings& settings);
   // Once a frame: takes a finished check (true when one arrived; rethrows its errors) and, when automatic
   // and an offset stage is shown, starts one after the polygons, the settings or the wall changed and no
   // stage has been computed for `rest_seconds`.
@@ -72,6 +79,7 @@ class PrintCheckView {
            last_->requested_wall == seen_wall_;
   }
 
+  std::shared_ptr<CheckPipeline> pipeline_ = std::make_shared<CheckPipeline>();
   BackgroundJob<std::optional<PrintCheckRun>> job_;
   std::optional<PrintCheckRun> last_;
   // What the automatic check last saw: it starts when this changes.

@@ -58,15 +58,4 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
   return result;
 }
 
-std::shared_ptr<const Mesh> StagePipeline::checked_surface(const PipelineInput& input,
-                                                           const PipelineSettings& settings,
-                                                           std::stop_token stop) {
-  std::lock_guard lock(mutex_);
-  if (stop.stop_requested()) return nullptr;
-  PipelineSettings surface = settings;
-  surface.stage = Stage::subdivided;
-  pipeline_.set_input(input);
-  return std::make_shared<const Mesh>(pipeline_.run(surface));
-}
-
 }  // namespace nome::viewer

@@ -50,10 +50,6 @@ class StagePipeline {
   // Throws the kernel's errors (TopologyError naming the elements, BudgetError).
   std::optional<StageResult> run(const PipelineInput& input, const PipelineSettings& settings,
                                  std::stop_token stop);
-  // A copy of the surface the print check reads for these settings: the subdivided stage, which the
-  // offset thickens (the pipeline's cached stage, so usually no work). None when stopped before it began.
-  std::shared_ptr<const Mesh> checked_surface(const PipelineInput& input, const PipelineSettings& settings,
-                                              std::stop_token stop);
   // The progress of the run in flight (an empty task before the first report), for the status overlay.
   WorkProgress progress() const;
 

@@ -37,8 +37,6 @@ class StageView {
   bool is_busy() const { return job_.is_busy(); }
   double seconds_running() const { return job_.seconds_running(); }
   WorkProgress progress() const { return pipeline_.progress(); }
-  // For other jobs that read the pipeline's stages (the print check); its runs are serialised.
-  StagePipeline& pipeline() { return pipeline_; }
 
   // The BVH of the shown mesh, for picks: built off the UI thread once the geometry has rested for a
   // moment (a slider drag never starts one), or at a pick that comes sooner (waiting for a build in

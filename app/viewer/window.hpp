@@ -153,7 +153,7 @@ class Window : private ScriptHost {
   MessageLog log_;
   SessionController sessions_;
   StageView stage_;
-  PrintCheckView print_check_;  // after stage_: its job reads the stage pipeline
+  PrintCheckView print_check_;
   ViewController view_;
   Selection selection_;
   ActionRegistry actions_;

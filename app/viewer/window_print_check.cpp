@@ -12,7 +12,7 @@ void Window::bind_print_check_actions() {
       log_.warning("print check: open a scene or mesh first");
       return false;
     }
-    print_check_.request(stage_, *session, stage_.settings());
+    print_check_.request(*session, stage_.settings());
     return true;
   });
   actions_.bind(Action::next_print_place, [this] {
