@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
+#include <string_view>
 #include <vector>
 
 #include "nome/query/print_check.hpp"
@@ -25,15 +27,26 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-void measure(const nome::Mesh& surface, double distance, int threads) {
+void measure(const nome::Mesh& surface, double distance, int threads, int repetitions) {
   nome::PrintCheckOptions options;
   options.offset_distance = distance;
   options.threads = threads;
   std::vector<double> times, cpu;
+  // The phases' CPU times (all threads), from the check's progress reports (fold-overs, BVH, crossings,
+  // near misses): what each costs whatever else the shared machine runs.
+  std::vector<std::vector<double>> phases(4);
   nome::PrintCheck check;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < repetitions; ++i) {
     const auto start = Clock::now();
     const double cpu_start = process_cpu_ms();
+    double last = cpu_start;
+    int phase = 0;
+    options.progress = {[&](std::string_view, double fraction) {
+      if (fraction == 0.0) return;
+      const double now = process_cpu_ms();
+      if (phase < 4) phases[std::size_t(phase++)].push_back(now - last);
+      last = now;
+    }};
     check = nome::check_printability(surface, options);
     times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     cpu.push_back(process_cpu_ms() - cpu_start);
@@ -43,20 +56,24 @@ void measure(const nome::Mesh& surface, double distance, int threads) {
       "crossing pairs %zu, near misses %zu)\n",
       distance, check.min_wall, threads, median(times), median(cpu), check.fold_over_faces.size(),
       check.crossings.pairs.size(), check.near_misses.size());
+  std::printf("    phases (median ms CPU): fold-overs %.1f, BVH %.1f, crossings %.1f, near misses %.1f\n",
+              median(phases[0]), median(phases[1]), median(phases[2]), median(phases[3]));
 }
 
 }  // namespace
 
-int main() {
+// Optional argument: repetitions per figure (default 3; the median is printed).
+int main(int argc, char** argv) {
+  const int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
   // 708 x 708 quads: 1,002,528 triangles; its offset solid has twice as many.
   const nome::Mesh surface = nome::bench::torus(708, 708);
   std::printf("print check: torus surface of %u quads (%u triangles)   (target < 1000 ms on 2 threads)\n",
               surface.num_faces(), 2 * surface.num_faces());
   for (const double distance : {0.01, 0.03})
-    for (const int threads : {1, 2}) measure(surface, distance, threads);
+    for (const int threads : {1, 2}) measure(surface, distance, threads, repetitions);
   // A surface whose offset solid has 1,000,000 triangles, checked with that offset.
   const nome::Mesh half = nome::bench::torus(500, 500);
   std::printf("print check: torus surface of %u quads whose offset solid has %u triangles\n",
               half.num_faces(), 4 * half.num_faces());
-  measure(half, 0.01, 2);
+  measure(half, 0.01, 2, repetitions);
 }

@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "cli/input.hpp"
-#include "io/three_mf.hpp"
 #include "nome/io/stl.hpp"
+#include "nome/io/three_mf.hpp"
 #include "nome/ops/print_placement.hpp"
 
 namespace nome::cli {

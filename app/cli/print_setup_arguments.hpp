@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "cli/arguments.hpp"
-#include "io/three_mf.hpp"
+#include "nome/io/three_mf.hpp"
 #include "nome/ops/print_placement.hpp"
 
 namespace nome::cli {

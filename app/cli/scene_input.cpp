@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <iostream>
 
-#include "io/three_mf.hpp"
 #include "nome/error.hpp"
 #include "nome/io/face_location.hpp"
 #include "nome/io/file_extension.hpp"
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
 #include "nome/io/sif.hpp"
+#include "nome/io/three_mf.hpp"
 
 namespace nome::cli {
 

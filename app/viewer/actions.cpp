@@ -57,6 +57,8 @@ const ActionInfo table[] = {
     {merge, "merge", 0, none, "show the merged stage"},
     {toggle_parameter_lock, "lock-parameters", 0, none, "lock generator parameters while editing (on / off)"},
     {toggle_sif_pairing, "pair-triangles", 0, none, "pair a .sif file's triangles into quads (on / off)"},
+    {print_check, "print-check", 0, none, "check the offset for printing now (Print check section)"},
+    {next_print_place, "next-print-place", 0, none, "frame the next place the print check lists"},
 };
 
 std::string lower(std::string s) {

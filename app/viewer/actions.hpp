@@ -59,6 +59,8 @@ enum class Action {
   measure_distance,
   measure_wall,
   toggle_section,
+  print_check,
+  next_print_place,
 };
 
 // One row of the table every binding is read from: the script's name, a shortcut (key 0: none; an

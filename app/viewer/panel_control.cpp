@@ -29,6 +29,21 @@ bool draw_selection_section(const ActionRegistry& actions, Selection& selection,
   return is_applied;
 }
 
+// The crease method and the smooth-triangle rule (OpenSubdiv's `t creasemethod`, `t smoothtriangles`).
+void draw_crease_controls(CreaseOptions& creases) {
+  int method = int(creases.method);
+  const char* methods[] = {to_string(CreaseMethod::uniform), to_string(CreaseMethod::chaikin)};
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::Combo("creases", &method, methods, IM_ARRAYSIZE(methods))) creases.method = CreaseMethod(method);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "how semi-sharp weights decay: uniform (1 per level) or Chaikin (evened out along a crease)");
+  ImGui::SameLine();
+  ImGui::Checkbox("smooth triangles", &creases.smooth_triangles);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("OpenSubdiv's smooth triangle rule: edge points beside a triangle lean to its centre");
+}
+
 void draw_stage_section(const ActionRegistry& actions, PipelineSettings& settings) {
   int stage = int(settings.stage);
   const char* stages[] = {to_string(Stage::scene), to_string(Stage::merged), to_string(Stage::subdivided),
@@ -62,6 +77,7 @@ void draw_stage_section(const ActionRegistry& actions, PipelineSettings& setting
     ImGui::SetTooltip(
         "edge-only: a vertex of one face follows the border; edge-and-corner: it stays put;\n"
         "none: faces touching the border shape their neighbours but are not shown");
+  draw_crease_controls(settings.creases);
   float distance = float(settings.offset_distance);
   ImGui::SetNextItemWidth(120);
   if (ImGui::SliderFloat("offset", &distance, 0.001f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic))

@@ -100,7 +100,8 @@ BorderSelection zipper_border(const BorderLookup& borders, const Selection::Bord
 }
 
 void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const PickableRims& rims,
-                    const Selection& selection, const glm::vec3& color, const glm::vec3& rim_color) {
+                    const Selection& selection, const glm::vec3& color, const glm::vec3& rim_color,
+                    std::span<const render::CubeMarker> more) {
   // Selected instances show as their faces selected.
   std::vector<Index> faces = selection.faces();
   const auto& face_names = mesh.face_names();
@@ -126,6 +127,7 @@ void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Pic
     if (!rims.is_rim(v)) pending.push_back(v);
   for (const render::CubeMarker& m : render::vertex_markers(mesh, pending, {0.1f, 0.7f, 0.3f}))
     markers.push_back(m);
+  markers.insert(markers.end(), more.begin(), more.end());
   renderer.set_markers(markers);
   std::vector<glm::vec3> points;
   std::vector<std::uint32_t> segments;
@@ -154,7 +156,8 @@ void show_sharp_edges(render::SceneRenderer& renderer, const Mesh& mesh) {
   renderer.set_lines(render::Overlay::sharp, points, segments);
 }
 
-void show_face_colors(render::SceneRenderer& renderer, const StageResult& shown, const EditColors& colors) {
+void show_face_colors(render::SceneRenderer& renderer, const StageResult& shown, const EditColors& colors,
+                      std::span<const std::pair<Index, std::array<std::uint8_t, 4>>> paints) {
   // Faces keep their order through the scene and merged stages: the edited ones take their colours.
   auto face_colors = shown.display.face_colors;
   const FaceParts& parts = shown.parts;
@@ -168,6 +171,8 @@ void show_face_colors(render::SceneRenderer& renderer, const StageResult& shown,
     paint(parts.scene, parts.consolidated, colors.consolidated);
     paint(parts.scene + parts.consolidated, parts.temporary, colors.temporary);
   }
+  for (const auto& [face, color] : paints)
+    if (face < face_colors.size()) face_colors[face] = color;
   renderer.set_face_colors(face_colors);
 }
 

@@ -1,6 +1,10 @@
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <span>
 #include <string>
+#include <utility>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -35,9 +39,10 @@ std::string select_instance(Selection& selection, const StageResult& shown, cons
 BorderSelection zipper_border(const BorderLookup& borders, const Selection::Border& border);
 
 // The selection's markers (vertex cubes, the first vertex of each whole border), the rim vertices'
-// cubes, and border lines.
+// cubes, and border lines. `more` markers (the print check's places) are drawn with them.
 void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const PickableRims& rims,
-                    const Selection& selection, const glm::vec3& color, const glm::vec3& rim_color);
+                    const Selection& selection, const glm::vec3& color, const glm::vec3& rim_color,
+                    std::span<const render::CubeMarker> more = {});
 
 // The shown mesh's sharp edges, drawn in the display's sharp colour.
 void show_sharp_edges(render::SceneRenderer& renderer, const Mesh& mesh);
@@ -47,6 +52,8 @@ struct EditColors {
   glm::vec3 consolidated{0.62f, 0.42f, 0.86f};
   glm::vec3 temporary{0.30f, 0.76f, 0.42f};
 };
-void show_face_colors(render::SceneRenderer& renderer, const StageResult& shown, const EditColors& colors);
+// `paints` (face, RGBA) go over both (the print check's findings).
+void show_face_colors(render::SceneRenderer& renderer, const StageResult& shown, const EditColors& colors,
+                      std::span<const std::pair<Index, std::array<std::uint8_t, 4>>> paints = {});
 
 }  // namespace nome::viewer

@@ -62,8 +62,9 @@ bool Window::frame(const InputFrame& input) {
     if (actions_.press(key.key, key.modifiers)) break;
   update_stage();
   // The first frames lay out the panels; a screenshot taken then would show them half-built. Each
-  // command sees the result of the one before: the stage being computed is awaited.
-  if (frames_drawn_ >= 3 && !pending_screenshot_ && !stage_.is_busy() && settle_frames_ == 0)
+  // command sees the result of the one before: the stage and the print check being computed are awaited.
+  if (frames_drawn_ >= 3 && !pending_screenshot_ && !stage_.is_busy() && !print_check_.is_busy() &&
+      settle_frames_ == 0)
     script_.step(*this, log_);
   if (script_.has_failed()) exit_status_ = 1;
   arrange_layout();
@@ -85,8 +86,8 @@ bool Window::frame(const InputFrame& input) {
 }
 
 bool Window::is_animating() const {
-  return stage_.is_busy() || !script_.is_done() || pending_screenshot_ || view_.is_pressed() ||
-         frames_drawn_ < 3 || settle_frames_ > 0 || turntable_.is_on();
+  return stage_.is_busy() || print_check_.is_busy() || !script_.is_done() || pending_screenshot_ ||
+         view_.is_pressed() || frames_drawn_ < 3 || settle_frames_ > 0 || turntable_.is_on();
 }
 
 void Window::after_draw() {
@@ -252,6 +253,7 @@ void Window::update_stage() {
     // The next pick builds it on the UI thread instead.
     log_.warning("picking structure: " + std::string(e.what()));
   }
+  update_print_check();
 }
 
 void Window::show_result(StageResult result) {
@@ -273,13 +275,14 @@ void Window::show_result(StageResult result) {
   renderer_.set_mesh(result.display);
   stage_.show(std::move(result), platform_.now());
   rims_ = pickable_rims(rim_lines_, mesh, stage_.shown()->borders);
-  show_face_colors(renderer_, *stage_.shown(), edit_colors_);
+  paint_faces();
   refresh_selection();
 }
 
 void Window::refresh_selection() {
   if (const Mesh* mesh = stage_.shown_mesh()) {
-    show_selection(renderer_, *mesh, rims_, selection_, display_.selection_color, rim_color_);
+    show_selection(renderer_, *mesh, rims_, selection_, display_.selection_color, rim_color_,
+                   print_check_.markers());
     show_sharp_edges(renderer_, *mesh);
   }
 }

@@ -17,6 +17,7 @@
 #include "viewer/parameter_panel.hpp"
 #include "viewer/picking.hpp"
 #include "viewer/platform.hpp"
+#include "viewer/print_check_view.hpp"
 #include "viewer/prompts.hpp"
 #include "viewer/script_runner.hpp"
 #include "viewer/section_panel.hpp"
@@ -76,6 +77,7 @@ class Window : private ScriptHost {
   const Selection& selection() const { return selection_; }
   const SessionController& sessions() const { return sessions_; }
   const StageResult* shown() const { return stage_.shown(); }
+  const PrintCheckView& print_check() const { return print_check_; }
   const render::Camera& camera() const { return view_.camera(); }
   const render::DisplaySettings& display() const { return display_; }
   const PanelVisibility& panels() const { return panels_; }
@@ -103,6 +105,11 @@ class Window : private ScriptHost {
   void refresh_selection();
   void show_rim_lines(RimLines lines);
   void frame_all();
+  // window_print_check.cpp
+  void bind_print_check_actions();
+  void update_print_check();
+  void paint_faces();
+  void draw_print_check_section();
   void draw_prompts();
   // window_history.cpp
   struct ViewState {
@@ -153,6 +160,7 @@ class Window : private ScriptHost {
   MessageLog log_;
   SessionController sessions_;
   StageView stage_;
+  PrintCheckView print_check_;
   ViewController view_;
   Selection selection_;
   ActionRegistry actions_;

@@ -117,6 +117,7 @@ void Window::bind_actions() {
         log_.info(std::string("generator parameters ") +
                   (sessions_.is_parameter_lock_on() ? "locked while the document has edits" : "free"));
       }));
+  bind_print_check_actions();
   for (Action action : {Action::add_polygon, Action::accept, Action::clear_temporary, Action::delete_faces,
                         Action::zip, Action::toggle_sharp, Action::undo, Action::redo})
     actions_.bind(action, [this, action] { return edit(action); });

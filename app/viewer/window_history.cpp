@@ -28,7 +28,7 @@ void Window::restore(const ViewState& state) {
   edit_colors_ = state.edit_colors;
   recorded_ = view_state();
   refresh_selection();
-  if (stage_.shown()) show_face_colors(renderer_, *stage_.shown(), edit_colors_);
+  paint_faces();
 }
 
 void Window::record_view_state() {

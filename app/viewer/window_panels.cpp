@@ -117,8 +117,7 @@ void Window::draw_sidebars() {
                                         sessions_.is_parameter_lock_on(), sif_pairing(), instance_color_});
       if (changes.is_instance_color_applied) color_instances(instance_color_);
       if (changes.is_selection_changed) refresh_selection();
-      if (changes.is_edit_color_changed && stage_.shown())
-        show_face_colors(renderer_, *stage_.shown(), edit_colors_);
+      if (changes.is_edit_color_changed) paint_faces();
     }
     ImGui::End();
     layout_settings_.left_width =
@@ -131,6 +130,7 @@ void Window::draw_sidebars() {
     if (const StageResult* shown = stage_.shown())
       if (ImGui::CollapsingHeader("Topology", ImGuiTreeNodeFlags_DefaultOpen))
         draw_topology_section(shown->topology, shown_size_);
+    draw_print_check_section();
     if (const scene::Scene* scene = sessions_.scene();
         scene && ImGui::CollapsingHeader("Print preparation")) {
       const std::optional<Index> face =

@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "app/cli_support.hpp"
-#include "io/three_mf.hpp"
 #include "nome/io/read_polygons.hpp"
+#include "nome/io/three_mf.hpp"
 
 using nome::test::assets;
 using nome::test::run_nome_in_process;

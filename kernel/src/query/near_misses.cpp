@@ -20,10 +20,10 @@ struct Patches {
   Index size() const { return Index(offsets.size() - 1); }
 };
 
-Patches make_patches(const Mesh& surface, std::span<const double> lengths, double radius) {
+Patches make_patches(const Mesh& surface, const VertexGraph& graph, double radius) {
   Patches patches;
   std::vector<char> assigned(surface.num_vertices(), 0);
-  SurfaceDistance distance(surface, lengths);
+  SurfaceDistance distance(graph);
   for (Index seed = 0; seed < surface.num_vertices(); ++seed) {
     if (assigned[seed] || surface.is_isolated_vertex(seed)) continue;
     const Index source[] = {seed};
@@ -41,21 +41,36 @@ Patches make_patches(const Mesh& surface, std::span<const double> lengths, doubl
 
 // A triangle near a patch that the patch's shared search cannot place inside the neighbourhood of every
 // vertex of the patch, with its distance from the seed (along the edges, through its nearest corner).
-struct Candidate {
+struct PatchCandidate {
   Index triangle;
   double from_seed;
+  Vec3 lower, upper;  // the triangle's box: most candidates are too far from a vertex to need more
+};
+
+// The squared distance from p to the box [lower, upper].
+double squared_box_distance(const Vec3& p, const Vec3& lower, const Vec3& upper) {
+  const Vec3 outside = glm::max(glm::max(lower - p, p - upper), Vec3(0.0));
+  return glm::dot(outside, outside);
+}
+
+// A candidate closer to the vertex than the wall whose place in the vertex's neighbourhood the patch's
+// search left open.
+struct OpenCandidate {
+  Index triangle;
+  Vec3 point;
+  double distance;
 };
 
 // One thread's share of the work, with its own search state.
 class PatchWorker {
  public:
-  PatchWorker(const Mesh& surface, std::span<const double> lengths, const TriangleBvh& bvh,
+  PatchWorker(const Mesh& surface, const VertexGraph& graph, const TriangleBvh& bvh,
               const NearMissOptions& options)
       : surface_(surface),
         bvh_(bvh),
         options_(options),
-        from_seed_(surface, lengths),
-        from_vertex_(surface, lengths),
+        from_seed_(graph),
+        from_vertex_(graph),
         stamp_(surface.num_vertices(), 0) {}
 
   void check(std::span<const Index> patch, std::vector<NearMiss>& out) {
@@ -116,7 +131,12 @@ class PatchWorker {
       double nearest = SurfaceDistance::unreached;
       for (int i = 0; i < 3; ++i) nearest = std::min(nearest, from_seed_[bvh_.triangle_vertex(t, i)]);
       if (nearest + farthest < limit) continue;
-      candidates_.push_back({t, nearest});
+      Vec3 t_lower = bvh_.triangle_point(t, 0), t_upper = t_lower;
+      for (int i = 1; i < 3; ++i) {
+        t_lower = glm::min(t_lower, bvh_.triangle_point(t, i));
+        t_upper = glm::max(t_upper, bvh_.triangle_point(t, i));
+      }
+      candidates_.push_back({t, nearest, t_lower, t_upper});
     }
   }
 
@@ -125,28 +145,51 @@ class PatchWorker {
     const double limit = 3.0 * options_.min_wall, from_seed = from_seed_[v];
     NearMiss best;
     best.distance = options_.min_wall;
-    bool searched = false;
-    for (const Candidate& c : candidates_) {
+    open_.clear();
+    for (const PatchCandidate& c : candidates_) {
       if (c.from_seed + from_seed < limit) continue;
+      if (squared_box_distance(p, c.lower, c.upper) >= best.distance * best.distance) continue;
       const Triangle tri{bvh_.triangle_point(c.triangle, 0), bvh_.triangle_point(c.triangle, 1),
                          bvh_.triangle_point(c.triangle, 2)};
       const Vec3 q = closest_point_on_triangle(p, tri);
       const double d = glm::distance(p, q);
       if (d >= best.distance) continue;
-      if (c.from_seed - from_seed < limit) {
-        if (!searched) {
-          const Index source[] = {v};
-          from_vertex_.run(source, limit, [](Index) { return false; });
-          searched = true;
-        }
-        bool inside = false;
-        for (int i = 0; i < 3; ++i)
-          inside = inside || from_vertex_[bvh_.triangle_vertex(c.triangle, i)] < limit;
-        if (inside) continue;
-      }
-      best = {v, bvh_.triangles().faces[c.triangle], q, d};
+      if (c.from_seed - from_seed < limit)
+        open_.push_back({c.triangle, q, d});
+      else
+        best = {v, bvh_.triangles().faces[c.triangle], q, d};
     }
+    settle_open(v, best);
     if (best.vertex != no_index) out.push_back(best);
+  }
+
+  // The open candidates nearer than the best so far, nearest first, until one is outside the vertex's
+  // neighbourhood. The search from the vertex stops once every vertex of those triangles is settled: they
+  // lie within the wall in space, so usually well inside the 3 x wall it could go to.
+  void settle_open(Index v, NearMiss& best) {
+    std::erase_if(open_, [&](const OpenCandidate& c) { return c.distance >= best.distance; });
+    if (open_.empty()) return;
+    std::sort(open_.begin(), open_.end(),
+              [](const OpenCandidate& a, const OpenCandidate& b) { return a.distance < b.distance; });
+    ++current_;
+    Index wanted = 0;
+    for (const OpenCandidate& c : open_)
+      for (int i = 0; i < 3; ++i) {
+        Index& stamp = stamp_[bvh_.triangle_vertex(c.triangle, i)];
+        if (stamp != current_) ++wanted;
+        stamp = current_;
+      }
+    const Index source[] = {v};
+    from_vertex_.run(source, 3.0 * options_.min_wall,
+                     [&](Index w) { return stamp_[w] == current_ && --wanted == 0; });
+    for (const OpenCandidate& c : open_) {
+      bool inside = false;
+      for (int i = 0; i < 3; ++i)
+        inside = inside || from_vertex_[bvh_.triangle_vertex(c.triangle, i)] < 3.0 * options_.min_wall;
+      if (inside) continue;
+      best = {v, bvh_.triangles().faces[c.triangle], c.point, c.distance};
+      return;
+    }
   }
 
   const Mesh& surface_;
@@ -156,7 +199,8 @@ class PatchWorker {
   std::vector<Index> stamp_;
   Index current_ = 0;
   std::vector<Index> near_;
-  std::vector<Candidate> candidates_;
+  std::vector<PatchCandidate> candidates_;
+  std::vector<OpenCandidate> open_;
 };
 
 }  // namespace
@@ -166,8 +210,8 @@ std::vector<char> vertices_near_faces(const Mesh& surface, const std::vector<Ind
   std::vector<Index> sources;
   for (const Index f : faces)
     for (const Index v : surface.face_vertices(f)) sources.push_back(v);
-  const std::vector<double> lengths = edge_lengths(surface);
-  SurfaceDistance distance(surface, lengths);
+  const VertexGraph graph(surface);
+  SurfaceDistance distance(graph);
   distance.run(sources, radius, [](Index) { return false; });
   for (const Index v : distance.touched()) near[v] = distance[v] < radius;
   return near;
@@ -181,12 +225,12 @@ std::vector<NearMiss> find_near_misses(const Mesh& surface, const TriangleBvh& b
   if (options.min_wall == 0.0 || surface.num_faces() == 0) return {};
   // Patches of radius 3/4 wall: a triangle of the vertex's own sheet within a wall of it is then within
   // 3 walls of it through the seed (3/4 + 3/4 + a wall, with room for paths along edges).
-  const std::vector<double> lengths = edge_lengths(surface);
-  const Patches patches = make_patches(surface, lengths, 0.75 * options.min_wall);
+  const VertexGraph graph(surface);
+  const Patches patches = make_patches(surface, graph, 0.75 * options.min_wall);
   const int count = std::max(1, std::min(options.threads, 2));
   std::vector<std::vector<NearMiss>> found(count);
   run_parts(count, [&](int part) {
-    PatchWorker worker(surface, lengths, bvh, options);
+    PatchWorker worker(surface, graph, bvh, options);
     for (Index p = Index(part); p < patches.size(); p += Index(count)) {
       const std::span<const Index> patch(patches.vertices.data() + patches.offsets[p],
                                          patches.offsets[p + 1] - patches.offsets[p]);

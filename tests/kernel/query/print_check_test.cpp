@@ -71,6 +71,27 @@ TEST_CASE("a torus offset by more than its minor radius folds over", "[kernel]")
   CHECK(result.places[0].size == torus.num_faces());
 }
 
+TEST_CASE("offset faces that pass through their neighbour across a narrow crease fold over", "[kernel]") {
+  // Two unit squares meeting at a 20 degree V: inside the V, copies offset by more than tan(10 degrees)
+  // have passed through each other (the angle between them closed through zero), long before either
+  // copy's normal turns over (at 1 / cos(10 degrees)), which the first rule alone would wait for.
+  const double c = std::cos(glm::radians(10.0)), s = std::sin(glm::radians(10.0));
+  PolygonSoup soup;
+  for (const Vec3& p :
+       {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(c, s, 1), Vec3(c, s, 0), Vec3(c, -s, 0), Vec3(c, -s, 1)})
+    soup.add_vertex(p);
+  soup.add_face({0, 1, 2, 3});
+  soup.add_face({1, 0, 4, 5});
+  const Mesh crease = build_mesh(std::move(soup));
+  const PrintCheck safe = check_surface(crease, 0.1);
+  CHECK(safe.fold_over_faces.empty());
+  const PrintCheck crossed = check_surface(crease, 0.5);
+  CHECK(crossed.fold_over_faces == std::vector<Index>{0, 1});
+  CHECK_FALSE(crossed.is_printable());
+  // Past 1 / cos(10 degrees) the copies' normals turn over as well.
+  CHECK(check_surface(crease, 1.2).fold_over_faces == std::vector<Index>{0, 1});
+}
+
 TEST_CASE("linked tori closer than the wall are near misses, not crossings", "[kernel]") {
   const Mesh tori = linked_tori(0.45);  // gap 0.1
   const PrintCheck thin = check_surface(tori, 0.08);

@@ -1,4 +1,4 @@
-#include "io/three_mf.hpp"
+#include "nome/io/three_mf.hpp"
 
 #include <algorithm>
 #include <cmath>

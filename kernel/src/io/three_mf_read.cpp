@@ -3,8 +3,8 @@
 #include <string>
 
 #include "io/lib3mf_handle.hpp"
-#include "io/three_mf.hpp"
 #include "nome/error.hpp"
+#include "nome/io/three_mf.hpp"
 
 namespace nome {
 namespace {
