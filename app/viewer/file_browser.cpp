@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "nome/io/file_extension.hpp"
+
 namespace nome::viewer {
 
 void FileBrowser::open(std::string title, std::filesystem::path folder, std::vector<std::string> extensions,
@@ -19,9 +21,7 @@ void FileBrowser::open(std::string title, std::filesystem::path folder, std::vec
 }
 
 bool FileBrowser::matches(const std::filesystem::path& file) const {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return std::find(extensions_.begin(), extensions_.end(), ext) != extensions_.end();
+  return std::find(extensions_.begin(), extensions_.end(), lower_extension(file)) != extensions_.end();
 }
 
 void FileBrowser::list(const std::filesystem::path& folder) {

@@ -28,15 +28,17 @@ void draw_status_bar(const std::optional<StatusLine>& status, const MessageLog& 
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::Begin("##status", nullptr, flags);
-  if (status)
+  if (status) {
     ImGui::Text("%s%s | %s stage: %u V, %u F, %s | %s mode", status->file.c_str(),
                 status->is_modified ? " *" : "", to_string(status->stage), status->vertices, status->faces,
                 size_text(status->size).c_str(), to_string(status->mode));
-  if (status && !status->instances.empty()) {
-    ImGui::SameLine();
-    ImGui::Text("| instances %s", status->instances.c_str());
-  } else
+    if (!status->instances.empty()) {
+      ImGui::SameLine();
+      ImGui::Text("| instances %s", status->instances.c_str());
+    }
+  } else {
     ImGui::TextUnformatted("no file: File > Open (Ctrl+O) or drop a file on the window");
+  }
   if (const Message* latest = log.latest()) {
     ImGui::SameLine();
     ImGui::TextUnformatted("|");

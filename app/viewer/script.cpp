@@ -64,6 +64,7 @@ const Syntax syntaxes[] = {
     {"prompt", ScriptCommand::Kind::prompt, 1, 0, "prompt save|discard|cancel"},
     {"layout", ScriptCommand::Kind::layout, 0, 0, "layout"},
     {"scroll", ScriptCommand::Kind::scroll, 1, 1, "scroll controls|parameters|log PIXELS"},
+    {"state", ScriptCommand::Kind::state, 0, 0, "state (logs the topology line, selection and edit counts)"},
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 

@@ -27,6 +27,7 @@ struct ScriptCommand {
     prompt,
     layout,
     scroll,
+    state,
     quit
   };
   Kind kind = Kind::quit;

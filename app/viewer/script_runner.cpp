@@ -98,6 +98,9 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::scroll:
       host.scroll(panel_named(c.words[0]), c.numbers[0]);
       return true;
+    case Kind::state:
+      host.print_state();
+      return true;
     case Kind::quit:
       host.quit();
       return true;

@@ -42,6 +42,9 @@ class ScriptHost {
   virtual void set_offset(double distance) = 0;
   // Prints the layout report (script `layout`) once this frame's panels are drawn.
   virtual void print_layout() = 0;
+  // Logs what the viewer shows (script `state`): the stage's topology line, the selection, and the scene's,
+  // consolidated and temporary face counts, as one `state: ...` line.
+  virtual void print_state() = 0;
   virtual void scroll(ScrolledPanel panel, double pixels) = 0;
   virtual void quit() = 0;
 };

@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "nome/error.hpp"
+#include "nome/io/file_extension.hpp"
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
 #include "nome/io/sif.hpp"
@@ -31,9 +32,7 @@ Session Session::open(const std::filesystem::path& path, bool pair_sif_triangles
 }
 
 bool Session::is_sif() const {
-  std::string ext = path_.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".sif";
+  return lower_extension(path_) == ".sif";
 }
 
 PolygonSoup Session::read_flat() const {

@@ -133,6 +133,7 @@ class Window : private ScriptHost {
   // The sliders the selected vertices and faces depend on.
   std::vector<Index> selection_parameters(const scene::Scene& scene) const;
   void print_layout() override { is_layout_print_pending_ = true; }
+  void print_state() override;
   void scroll(ScrolledPanel panel, double pixels) override;
   // ScriptHost (window_actions.cpp)
   void set_mode(SelectionMode mode) override { selection_.set_mode(mode); }

@@ -2,8 +2,10 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 #include "nome/error.hpp"
+#include "nome/io/file_extension.hpp"
 #include "nome/io/gltf.hpp"
 #include "nome/io/obj.hpp"
 #include "nome/io/ply.hpp"
@@ -15,12 +17,6 @@
 // What each action and script command does in the window: bound once, from the action table's rows.
 namespace nome::viewer {
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 std::filesystem::path next_screenshot_path() {
   const std::filesystem::path folder = std::filesystem::current_path();
@@ -177,6 +173,21 @@ bool Window::edit(Action action) {
 }
 
 // --------------------------------------------------------------------------------------------- script
+
+void Window::print_state() {
+  const StageResult* shown = stage_.shown();
+  if (!shown) throw InvalidInputError("state: nothing is shown");
+  const TopologyReport& t = shown->topology;
+  std::ostringstream line;
+  line << "state: " << to_string(shown->stage) << " stage: V " << t.vertices << ", E " << t.edges << ", F "
+       << t.faces << ", chi " << t.chi << ", " << (t.orientable ? "orientable" : "non-orientable") << ", "
+       << t.borders << " borders, " << t.mobius_edges << " Möbius edges, " << t.components.size()
+       << " parts | selection: " << selection_.vertices().size() << " vertices, " << selection_.faces().size()
+       << " faces, " << selection_.borders().size() << " borders, " << selection_.instances().size()
+       << " instances | faces: " << shown->parts.scene << " scene, " << shown->parts.consolidated
+       << " consolidated, " << shown->parts.temporary << " temporary";
+  log_.info(line.str());
+}
 
 void Window::click(glm::dvec2 pixel) {
   const StageResult* shown = stage_.shown();

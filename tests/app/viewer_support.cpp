@@ -1,7 +1,7 @@
 #include "app/viewer_support.hpp"
 
 #include <fstream>
-
+#include <regex>
 #include <sstream>
 
 #include <imgui.h>
@@ -216,6 +216,22 @@ int count_pixels(const render::Image& image, int r, int g, int b, int tolerance)
            std::abs(p[2] - b) <= tolerance;
     }
   return n;
+}
+
+std::vector<ViewerState> logged_states(const std::string& log) {
+  static const std::regex line(
+      "state: (.+) stage: V (\\d+), E (\\d+), F (\\d+), chi (-?\\d+), (orientable|non-orientable), (\\d+) "
+      "borders, (\\d+) Möbius edges, (\\d+) parts \\| selection: (\\d+) vertices, (\\d+) faces, (\\d+) "
+      "borders, (\\d+) instances \\| faces: (\\d+) scene, (\\d+) consolidated, (\\d+) temporary");
+  std::vector<ViewerState> out;
+  for (auto it = std::sregex_iterator(log.begin(), log.end(), line); it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    auto number = [&](int i) { return std::stoll(m[i].str()); };
+    out.push_back({m[1].str(), number(2), number(3), number(4), number(5), m[6].str() == "orientable",
+                   number(7), number(8), number(9), number(10), number(11), number(12), number(13),
+                   number(14), number(15), number(16)});
+  }
+  return out;
 }
 
 }  // namespace nome::test

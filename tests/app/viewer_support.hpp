@@ -120,4 +120,16 @@ ScreenProjection viewer_projection(std::span<const Vec3> points, double azimuth,
 // if v is visible there.
 std::optional<glm::dvec2> click_position(const Mesh& mesh, const ScreenProjection& projection, Index v);
 
+// One `state: ...` line of a scripted session's log (the script command `state`): what the viewer shows.
+struct ViewerState {
+  std::string stage;
+  long long vertices = 0, edges = 0, faces = 0, chi = 0;
+  bool orientable = false;
+  long long borders = 0, mobius_edges = 0, parts = 0;
+  long long selected_vertices = 0, selected_faces = 0, selected_borders = 0, selected_instances = 0;
+  long long scene_faces = 0, consolidated_faces = 0, temporary_faces = 0;
+};
+// Every state line of the log, in order.
+std::vector<ViewerState> logged_states(const std::string& log);
+
 }  // namespace nome::test

@@ -141,16 +141,38 @@ TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, un
   REQUIRE(best < std::numeric_limits<double>::infinity());
   const std::string script_path = dir + "/script.txt";
   // Merged first: showing another stage is a step of the undo history too, and the undo is the zip's.
-  std::ofstream(script_path) << "view 30 25\naction merge\nmode border\n"
+  // `state` after each step: the viewer's own topology line, selection and face counts.
+  std::ofstream(script_path) << "view 30 25\naction merge\nstate\nmode border\n"
                              << click_line(rims[pair.first].click) << click_line(rims[pair.second].click)
-                             << "action zip\nexport " << dir << "/zipped.obj\n"
-                             << "action undo\nexport " << dir << "/undone.obj\n"
-                             << "action redo\n"
-                             << subdivide_and_offset(dir) << "quit\n";
+                             << "state\naction zip\nstate\nexport " << dir << "/zipped.obj\n"
+                             << "action undo\nstate\nexport " << dir << "/undone.obj\n"
+                             << "action redo\nstate\n"
+                             << subdivide_and_offset(dir) << "state\nquit\n";
   const auto r = run_window(file + " --script " + script_path);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("zip: "));
+  const std::vector<nome::test::ViewerState> states = nome::test::logged_states(r.err);
+  REQUIRE(states.size() == 6);
+  const auto &merged = states[0], &picked = states[1], &zipped_state = states[2], &undone_state = states[3],
+             &redone = states[4], &solid = states[5];
+  CHECK(merged.stage == "merged");
+  CHECK(merged.selected_borders == 0);
+  CHECK(picked.selected_borders == 2);
+  CHECK(picked.borders == merged.borders);
+  // The zip's strip closes both rims, as new faces of the session; undo takes them away, redo back.
+  CHECK(zipped_state.borders + 2 == picked.borders);
+  CHECK(zipped_state.temporary_faces + zipped_state.consolidated_faces >
+        picked.temporary_faces + picked.consolidated_faces);
+  CHECK(undone_state.borders == picked.borders);
+  CHECK(undone_state.temporary_faces + undone_state.consolidated_faces ==
+        picked.temporary_faces + picked.consolidated_faces);
+  CHECK(redone.borders == zipped_state.borders);
+  CHECK(redone.faces == zipped_state.faces);
+  CHECK(solid.stage == "subdivided offset");
+  CHECK(solid.borders == 0);
+  CHECK(solid.orientable);
+  CHECK(solid.chi == 2 * zipped_state.chi);
   // Merged, the strip closes both rims: two borders fewer than without it.
   const Index zipped = topology_report(build_mesh(read_polygons(dir + "/zipped.obj"))).borders;
   const Index undone = topology_report(build_mesh(read_polygons(dir + "/undone.obj"))).borders;

@@ -70,6 +70,46 @@ Index next_on(const std::vector<Index>& loop, Index v, int step) {
 
 }  // namespace
 
+namespace {
+
+// The viewer's own state after each step of the Zero walkthrough (script `state`): each polygon's four
+// corners selected, then one temporary face more; each zip's two borders selected, then the strip's faces
+// added and two open ends joined; the accepted faces consolidated; the merged surface one-sided with three
+// borders; the solid closed and orientable with twice its characteristic.
+void check_zero_states(const std::vector<nome::test::ViewerState>& states, int zips, std::size_t added,
+                       const TopologyReport& merged) {
+  REQUIRE(states.size() == std::size_t(8 + 2 * zips + 3));
+  for (std::size_t k = 0; k < 4; ++k) {
+    INFO("polygon " << k);
+    CHECK(states[2 * k].selected_vertices == 4);
+    CHECK(states[2 * k + 1].temporary_faces == long(k + 1));
+    CHECK(states[2 * k + 1].consolidated_faces == 0);
+  }
+  for (int z = 0; z < zips; ++z) {
+    INFO("zip " << z);
+    const auto &before = states[8 + 2 * z], &after = states[8 + 2 * z + 1];
+    CHECK(before.selected_borders == 2);
+    CHECK(after.temporary_faces > before.temporary_faces);
+    CHECK(after.borders < before.borders);
+  }
+  const auto &accepted = states[8 + 2 * zips], &merged_state = states[9 + 2 * zips],
+             &solid = states[10 + 2 * zips];
+  CHECK(accepted.temporary_faces == 0);
+  CHECK(accepted.consolidated_faces == long(added));
+  CHECK(merged_state.stage == "merged");
+  CHECK(merged_state.parts == 1);
+  CHECK_FALSE(merged_state.orientable);
+  CHECK(merged_state.borders == merged.borders);
+  CHECK(merged_state.chi == merged.chi);
+  CHECK(solid.stage == "subdivided offset");
+  CHECK(solid.borders == 0);
+  CHECK(solid.orientable);
+  CHECK(solid.parts == 1);
+  CHECK(solid.chi == 2 * merged.chi);
+}
+
+}  // namespace
+
 TEST_CASE(
     "Zero walkthrough: zero.sif paired into quads, four polygons, two zips, consolidated, merged, "
     "subdivided and offset into a printable solid",
@@ -124,7 +164,7 @@ TEST_CASE(
           Index(std::find(now.mesh->vertex_names().begin(), now.mesh->vertex_names().end(), names[v]) -
                 now.mesh->vertex_names().begin()));
     }
-    script += "action add-polygon\n";
+    script += "state\naction add-polygon\nstate\n";
     REQUIRE(session.add_polygon(*now.mesh, corners).applied);
     bridges.push_back(b);
   }
@@ -162,7 +202,7 @@ TEST_CASE(
         selection.click_border_vertex(*now.borders, id);
       }
     REQUIRE(selection.borders().size() == 2);
-    script += "action zip\n";
+    script += "state\naction zip\nstate\n";
     const auto outcome =
         session.zipper(*now.mesh, viewer::zipper_border(*now.borders, selection.borders()[0]),
                        viewer::zipper_border(*now.borders, selection.borders()[1]), {});
@@ -181,13 +221,14 @@ TEST_CASE(
   CHECK_FALSE(expected.orientable);
   CHECK(expected.borders == 3);
 
-  script += "action accept\naction merge\nview 30 25\nexport " + dir +
-            "/merged.obj\nsubdiv 2\noffset 0.002\n" + "export " + dir + "/solid.stl\nquit\n";
+  script += "action accept\nstate\naction merge\nstate\nview 30 25\nexport " + dir +
+            "/merged.obj\nsubdiv 2\noffset 0.002\nstate\n" + "export " + dir + "/solid.stl\nquit\n";
   const auto r = nome::test::run_window(file + " --script " + nome::test::write_script(dir, script));
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err,
              Catch::Contains("accept: " + std::to_string(added) + " faces moved into the consolidated mesh"));
+  check_zero_states(nome::test::logged_states(r.err), zips, added, expected);
   const TopologyReport zero = topology_report(build_mesh(read_polygons(dir + "/merged.obj")));
   CHECK(zero.components.size() == 1);
   CHECK_FALSE(zero.orientable);
@@ -243,7 +284,7 @@ TEST_CASE("Hild walkthrough: three instances selected and coloured, saved and re
     REQUIRE_FALSE(clicks.empty());
     char line[64];
     std::snprintf(line, sizeof line, "color %g %g %g\n", color.r, color.g, color.b);
-    script += clicks + line + "action clear-selection\n";
+    script += clicks + "state\n" + line + "action clear-selection\nstate\n";
   }
   script += "save " + dir + "/hild.nome\nquit\n";
   const auto r = nome::test::run_window(file + " --script " + nome::test::write_script(dir, script));
@@ -252,6 +293,16 @@ TEST_CASE("Hild walkthrough: three instances selected and coloured, saved and re
   for (const auto& [path, color] : coloured)
     CHECK_THAT(r.err, Catch::Contains("instance " + path + " selected"));
   CHECK_THAT(r.err, Catch::Contains("color: 1 instance coloured (1, 0, 0) (surface rgb_ff0000)"));
+  // The viewer's own state: one instance selected before each colour, none after; the topology unchanged.
+  const std::vector<nome::test::ViewerState> states = nome::test::logged_states(r.err);
+  REQUIRE(states.size() == 2 * std::size(coloured));
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    INFO("state " << k);
+    CHECK(states[k].selected_instances == (k % 2 == 0 ? 1 : 0));
+    CHECK(states[k].chi == before.chi);
+    CHECK(states[k].borders == before.borders);
+    CHECK(states[k].faces == before.faces);
+  }
 
   const scene::Scene saved = read_scene(dir + "/hild.nome");
   const PolygonSoup soup = saved.combined_soup();

@@ -8,6 +8,7 @@
 
 #include "nome/ops/offset.hpp"
 #include "nome/ops/subdivide.hpp"
+#include "support/mesh_measures.hpp"
 #include "support/random_manifold.hpp"
 #include "support/shapes.hpp"
 
@@ -79,17 +80,7 @@ std::vector<Vec3> independent_vertex_normals(const Mesh& m) {
   return normals;
 }
 
-double signed_volume(const Mesh& m) {
-  double volume = 0.0;
-  for (Index f = 0; f < m.num_faces(); ++f) {
-    const auto vs = m.face_vertices(f);
-    for (size_t i = 1; i + 1 < vs.size(); ++i)
-      volume += glm::dot(m.position(vs[0]), glm::cross(m.position(vs[i]), m.position(vs[i + 1]))) / 6.0;
-  }
-  return volume;
-}
-
-double area(const Mesh& m) {
+double surface_area(const Mesh& m) {
   double sum = 0.0;
   for (Index f = 0; f < m.num_faces(); ++f) sum += 0.5 * glm::length(newell_normal(m, f));
   return sum;
@@ -159,8 +150,8 @@ TEST_CASE("an offset solid's volume is the slab's: 2d times the surface's area",
   for (const auto& c : cases) {
     INFO(c.name);
     const Mesh surface = subdivide(build_mesh(c.soup), {2, SubdivisionRule::classic});
-    const double expected = 2 * d * area(surface);
-    CHECK(signed_volume(offset(surface, {d})) == Approx(expected).epsilon(0.01));
+    const double expected = 2 * d * surface_area(surface);
+    CHECK(test::signed_volume(offset(surface, {d})) == Approx(expected).epsilon(0.01));
   }
 }
 

@@ -7,23 +7,12 @@
 #include "nome/error.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/offset.hpp"
+#include "support/mesh_measures.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
 
 namespace {
-
-// Signed volume by the divergence theorem over a fan triangulation of each face: positive when a
-// closed surface's faces are oriented outward.
-double signed_volume(const Mesh& m) {
-  double volume = 0.0;
-  for (Index f = 0; f < m.num_faces(); ++f) {
-    const auto vs = m.face_vertices(f);
-    for (size_t i = 1; i + 1 < vs.size(); ++i)
-      volume += glm::dot(m.position(vs[0]), glm::cross(m.position(vs[i]), m.position(vs[i + 1]))) / 6.0;
-  }
-  return volume;
-}
 
 struct Case {
   const char* name;
@@ -66,7 +55,7 @@ TEST_CASE("the offset is a closed, orientable, outward solid with chi = 2 chi(M)
     CHECK(r.borders == 0);
     CHECK(r.orientable);
     CHECK(r.mobius_edges == 0);
-    CHECK(signed_volume(solid) > 0.0);
+    CHECK(test::signed_volume(solid) > 0.0);
     Index border_edges = 0;
     for (const Edge& e : m.edges()) border_edges += e.is_boundary() ? 1 : 0;
     CHECK(solid.num_faces() == 2 * m.num_faces() + border_edges);
@@ -84,7 +73,7 @@ TEST_CASE("offset copies sit at distance d along the vertex normal, one on each 
   // 8 faces of two copies plus one quad per border edge.
   CHECK(solid.num_faces() == 8 + 8);
   // The slab of a flat unit-cell 2x2 grid: volume = area * thickness.
-  CHECK(signed_volume(solid) == Approx(4.0 * 0.5));
+  CHECK(test::signed_volume(solid) == Approx(4.0 * 0.5));
 }
 
 TEST_CASE("a subdivided Möbius band offsets into a torus, rounded by subdivision after", "[kernel]") {
@@ -97,7 +86,7 @@ TEST_CASE("a subdivided Möbius band offsets into a torus, rounded by subdivisio
   CHECK(r.orientable);
   CHECK(r.components[0].genus == 1);
   CHECK(r.borders == 0);
-  CHECK(signed_volume(solid) > 0.0);
+  CHECK(test::signed_volume(solid) > 0.0);
 }
 
 TEST_CASE("offset_positions moves the vertices of a kept offset topology", "[kernel]") {

@@ -1,0 +1,18 @@
+#include "support/mesh_measures.hpp"
+
+#include <glm/geometric.hpp>
+
+namespace nome::test {
+
+double signed_volume(const Mesh& mesh) {
+  double volume = 0.0;
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    const auto vs = mesh.face_vertices(f);
+    for (size_t i = 1; i + 1 < vs.size(); ++i)
+      volume +=
+          glm::dot(mesh.position(vs[0]), glm::cross(mesh.position(vs[i]), mesh.position(vs[i + 1]))) / 6.0;
+  }
+  return volume;
+}
+
+}  // namespace nome::test
