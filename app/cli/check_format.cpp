@@ -5,18 +5,6 @@
 namespace nome::cli {
 namespace {
 
-const char* finding_name(FindingKind kind) {
-  switch (kind) {
-    case FindingKind::fold_over:
-      return "fold-over";
-    case FindingKind::near_miss:
-      return "near miss";
-    case FindingKind::crossing:
-      return "crossing";
-  }
-  return "";
-}
-
 std::size_t count_places_of(const PrintCheck& check, FindingKind kind) {
   std::size_t n = 0;
   for (const PrintPlace& p : check.places) n += p.kind == kind;
@@ -24,7 +12,7 @@ std::size_t count_places_of(const PrintCheck& check, FindingKind kind) {
 }
 
 void write_print_place(std::ostream& out, const PrintPlace& p) {
-  out << "  " << finding_name(p.kind);
+  out << "  " << to_string(p.kind);
   if (p.kind == FindingKind::near_miss) out << " " << p.distance << " thin";
   out << " at (" << p.position.x << ", " << p.position.y << ", " << p.position.z << "), face " << p.face;
   if (p.other_face != no_index) out << " and face " << p.other_face;
@@ -71,7 +59,7 @@ std::string check_json(const PrintCheck& c) {
       << ", \"places\": [";
   for (std::size_t i = 0; i < c.places.size(); ++i) {
     const PrintPlace& p = c.places[i];
-    out << (i ? ", " : "") << "{\"kind\": \"" << finding_name(p.kind) << "\", \"position\": [" << p.position.x
+    out << (i ? ", " : "") << "{\"kind\": \"" << to_string(p.kind) << "\", \"position\": [" << p.position.x
         << ", " << p.position.y << ", " << p.position.z << "], \"face\": " << p.face << ", \"other_face\": ";
     if (p.other_face == no_index)
       out << "null";

@@ -9,18 +9,6 @@ namespace {
 
 constexpr std::size_t listed_places = 24;
 
-const char* kind_name(FindingKind kind) {
-  switch (kind) {
-    case FindingKind::fold_over:
-      return "fold-over";
-    case FindingKind::near_miss:
-      return "near miss";
-    case FindingKind::crossing:
-      break;
-  }
-  return "crossing";
-}
-
 void draw_verdict(const PrintCheckRun& run, bool is_current) {
   const PrintCheck& check = run.check;
   const ImVec4 color =
@@ -41,10 +29,10 @@ std::optional<std::size_t> draw_places(const PrintCheck& check) {
   for (std::size_t i = 0; i < check.places.size() && i < listed_places; ++i) {
     const PrintPlace& p = check.places[i];
     if (p.kind == FindingKind::near_miss)
-      std::snprintf(label, sizeof label, "%s  gap %.4g  (%u vertices)##place%zu", kind_name(p.kind),
+      std::snprintf(label, sizeof label, "%s  gap %.4g  (%u vertices)##place%zu", to_string(p.kind),
                     p.distance, p.size, i);
     else
-      std::snprintf(label, sizeof label, "%s  face %u  (%u %s)##place%zu", kind_name(p.kind), p.face, p.size,
+      std::snprintf(label, sizeof label, "%s  face %u  (%u %s)##place%zu", to_string(p.kind), p.face, p.size,
                     p.kind == FindingKind::crossing ? "pairs" : "faces", i);
     if (ImGui::Selectable(label)) clicked = i;
     if (ImGui::IsItemHovered())

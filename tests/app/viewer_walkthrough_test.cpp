@@ -169,7 +169,7 @@ TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, un
         picked.temporary_faces + picked.consolidated_faces);
   CHECK(redone.borders == zipped_state.borders);
   CHECK(redone.faces == zipped_state.faces);
-  CHECK(solid.stage == "subdivided offset");
+  CHECK(solid.stage == "offset");
   CHECK(solid.borders == 0);
   CHECK(solid.orientable);
   CHECK(solid.chi == 2 * zipped_state.chi);

@@ -101,7 +101,7 @@ void check_zero_states(const std::vector<nome::test::ViewerState>& states, int z
   CHECK_FALSE(merged_state.orientable);
   CHECK(merged_state.borders == merged.borders);
   CHECK(merged_state.chi == merged.chi);
-  CHECK(solid.stage == "subdivided offset");
+  CHECK(solid.stage == "offset");
   CHECK(solid.borders == 0);
   CHECK(solid.orientable);
   CHECK(solid.parts == 1);

@@ -2,11 +2,11 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "fuzz/fuzz_scene.hpp"
 #include "fuzz/fuzz_target.hpp"
 #include "nome/error.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/scene/scene.hpp"
+#include "support/funnel_cube_scene.hpp"
 
 namespace {
 
@@ -40,7 +40,7 @@ bool is_same_mesh(const nome::Mesh& a, const nome::Mesh& b) {
 NOME_FUZZ_TARGET(pipeline) {
   if (size < 3) return 0;
   nome::PipelineSettings settings = settings_from(data);
-  nome::scene::Scene scene = nome::scene::Scene::from_text(nome::fuzz::funnel_cube_scene, "fuzz.nome");
+  nome::scene::Scene scene = nome::scene::Scene::from_text(nome::test::funnel_cube_scene, "fuzz.nome");
   nome::Pipeline live;
   live.set_input(nome::PipelineInput{scene.combined_soup(), {}, nome::Joining::manifold});
   live.run(settings);

@@ -37,7 +37,8 @@ TEST_CASE("malformed scenes: each error says where and what was expected", "[sce
        "t.nome:1:1: expected a statement (bank, surface, point, polyline, face, object, funnel, tunnel, "
        "circle, mobiusstrip, sphere, ellipsoid, cylinder, cone, disk, torus, torusknot, helix, spiral, "
        "hyperboloid, dupin, gencartesiansurf, genparametricsurf, genimplicitsurf, mesh, group, instance, "
-       "delete, consolidate, sharpedges, include, subdivision, offset, boundary, camera, light, window, "
+       "delete, consolidate, sharpedges, include, subdivision, offset, boundary, printsetup, camera, light, "
+       "window, "
        "viewport, "
        "frontcolor, backcolor, backgroundcolor, backface, controlpoint, beziercurve, bspline, sweep, "
        "sweepmorph, morphvisualizer, ribbon), found 'frobnicate'"},

@@ -6,31 +6,11 @@
 #include "nome/ops/merge.hpp"
 #include "nome/scene/save_nome.hpp"
 #include "scene/scene_support.hpp"
+#include "support/funnel_cube_scene.hpp"
 
 using namespace nome;
 
 namespace {
-
-// The report's funnel cube (section 8.1) before any corner is closed.
-const char* const funnel_cube = R"(
-bank fp
-    set n 8 3 10 1
-    set ro 0.5 0.1 1.0 0.1
-    set ratio 0 -0.5 0.5 0.1
-    set h 0.3 0.1 1.5 0.1
-    set z -1 -1.5 -0.1 0.1
-endbank
-funnel fun ({expr $fp_n} {expr $fp_ro} {expr $fp_ratio} {expr $fp_h}) endfunnel
-group cubeMadeByFunnel
-    instance fun1 fun translate (0 0 {expr $fp_z}) endinstance
-    instance fun2 fun translate (0 0 {expr $fp_z}) rotate (1 0 0) (180) endinstance
-    instance fun3 fun translate (0 0 {expr $fp_z}) rotate (1 0 0) (90) endinstance
-    instance fun4 fun translate (0 0 {expr $fp_z}) rotate (1 0 0) (-90) endinstance
-    instance fun5 fun translate (0 0 {expr $fp_z}) rotate (0 1 0) (90) endinstance
-    instance fun6 fun translate (0 0 {expr $fp_z}) rotate (0 1 0) (-90) endinstance
-endgroup
-instance cf cubeMadeByFunnel endinstance
-)";
 
 // The four polygons the report adds below one corner (its funnel_cube_consolidated.nome).
 const std::vector<std::vector<std::string>> corner = {{"fun3_hc3", "fun2_hc5", "fun2_hc6", "fun3_hc2"},
@@ -74,7 +54,8 @@ TEST_CASE("funnel_cube_consolidated.nome: its top-level instances merge into one
 
 TEST_CASE("the report's corner polygons, accepted and merged, join three funnels into one surface",
           "[scene]") {
-  SceneDocument doc = SceneDocument::from_scene(scene::Scene::from_text(funnel_cube, "cube.nome"));
+  SceneDocument doc =
+      SceneDocument::from_scene(scene::Scene::from_text(test::funnel_cube_scene, "cube.nome"));
   close_corner(doc);
   const MergeResult merged = merge_boundaries(glue_faces(doc.pipeline_input().soup).mesh);
   CHECK(merged.skipped.empty());
@@ -86,7 +67,8 @@ TEST_CASE("the report's corner polygons, accepted and merged, join three funnels
 }
 
 TEST_CASE("the consolidated mesh is saved into the scene and read back", "[scene]") {
-  SceneDocument doc = SceneDocument::from_scene(scene::Scene::from_text(funnel_cube, "cube.nome"));
+  SceneDocument doc =
+      SceneDocument::from_scene(scene::Scene::from_text(test::funnel_cube_scene, "cube.nome"));
   close_corner(doc);
   REQUIRE(doc.edits().delete_faces({doc.edits().scene_geometry().face_names[0]}).applied);
   const std::string text = scene::to_nome_text(doc.scene_for_saving());
@@ -104,7 +86,8 @@ TEST_CASE("the consolidated mesh is saved into the scene and read back", "[scene
 }
 
 TEST_CASE("lowering a slider hides the edits on vanished vertices, raising it brings them back", "[scene]") {
-  SceneDocument doc = SceneDocument::from_scene(scene::Scene::from_text(funnel_cube, "cube.nome"));
+  SceneDocument doc =
+      SceneDocument::from_scene(scene::Scene::from_text(test::funnel_cube_scene, "cube.nome"));
   close_corner(doc);
   const auto n = doc.scene()->find_parameter("fp_n");
   REQUIRE(n);

@@ -129,4 +129,16 @@ PrintCheck check_printability(const Mesh& surface, const PrintCheckOptions& opti
   return check;
 }
 
+const char* to_string(FindingKind kind) {
+  switch (kind) {
+    case FindingKind::fold_over:
+      return "fold-over";
+    case FindingKind::near_miss:
+      return "near miss";
+    case FindingKind::crossing:
+      break;
+  }
+  return "crossing";
+}
+
 }  // namespace nome

@@ -18,6 +18,9 @@ struct PrintCheckOptions {
 
 enum class FindingKind { fold_over, near_miss, crossing };
 
+// "fold-over", "near miss", "crossing": for reports and panels.
+const char* to_string(FindingKind kind);
+
 // A connected place of findings of one kind: where it is worst.
 struct PrintPlace {
   FindingKind kind = FindingKind::fold_over;
