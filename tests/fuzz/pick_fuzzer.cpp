@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <set>
 
@@ -7,8 +9,8 @@
 #include "nome/query/triangle_bvh.hpp"
 
 // Random rays (the first six bytes: origin and direction) at a polygon soup (the rest): the BVH's nearest
-// hit has the smallest depth the ray/triangle test gives over all triangles, and its list of every hit
-// names the same faces as that brute-force pass.
+// hit has the smallest depth the ray/triangle test gives over all triangles (to rounding), and its list of
+// every hit names the same faces as that brute-force pass.
 NOME_FUZZ_TARGET(pick) {
   if (size < 6) return 0;
   nome::Ray ray;
@@ -37,7 +39,11 @@ NOME_FUZZ_TARGET(pick) {
     faces.insert(bvh.triangles().faces[t]);
   }
   const std::optional<nome::RayHit> found = bvh.cast_nearest(ray);
-  if (found.has_value() != nearest.has_value() || (found && found->depth != *nearest)) std::abort();
+  // The tree may hold a triangle's corners in another order, which can round its depth one ulp apart
+  // (coplanar triangles under a grazing ray found it): equal within 1e-12 relative.
+  if (found.has_value() != nearest.has_value() ||
+      (found && std::abs(found->depth - *nearest) > 1e-12 * std::max(1.0, std::abs(*nearest))))
+    std::abort();
   std::set<nome::Index> all_faces;
   for (const nome::RayHit& hit : bvh.cast_all(ray)) all_faces.insert(hit.face);
   if (all_faces != faces) std::abort();
