@@ -9,6 +9,7 @@
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
+#include "render/render_support.hpp"
 #include "viewer/session.hpp"
 #include "viewer/stage_pipeline.hpp"
 
@@ -147,11 +148,19 @@ TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, un
                              << "state\naction zip\nstate\nexport " << dir << "/zipped.obj\n"
                              << "action undo\nstate\nexport " << dir << "/undone.obj\n"
                              << "action redo\nstate\n"
-                             << subdivide_and_offset(dir) << "state\nquit\n";
-  const auto r = run_window(file + " --script " + script_path);
+                             << subdivide_and_offset(dir) << "state\nscreenshot " << dir
+                             << "/solid.png\nquit\n";
+  const auto r = run_window(file + " --script " + script_path, nome::test::TestViewer::private_stores(),
+                            nome::test::TestRenderer::gl);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("zip: "));
+  // The viewer draws the closed orientable solid from outside only.
+  const render::Image solid_shot = render::read_png(dir + "/solid.png");
+  // Back faces show only along contours over other parts (under 0.5 %; sheets swapped would show half).
+  const nome::test::SideCounts solid_sides = nome::test::count_sides(solid_shot);
+  CHECK(solid_sides.front > 20000);
+  CHECK(solid_sides.back * 200 < solid_sides.front);
   const std::vector<nome::test::ViewerState> states = nome::test::logged_states(r.err);
   REQUIRE(states.size() == 6);
   const auto &merged = states[0], &picked = states[1], &zipped_state = states[2], &undone_state = states[3],

@@ -9,6 +9,7 @@
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
 #include "nome/mesh/topology_report.hpp"
+#include "render/render_support.hpp"
 #include "support/shared_examples.hpp"
 #include "viewer/picking.hpp"
 #include "viewer/session.hpp"
@@ -221,11 +222,24 @@ TEST_CASE(
   CHECK_FALSE(expected.orientable);
   CHECK(expected.borders == 3);
 
-  script += "action accept\nstate\naction merge\nstate\nview 30 25\nexport " + dir +
-            "/merged.obj\nsubdiv 2\noffset 0.002\nstate\n" + "export " + dir + "/solid.stl\nquit\n";
-  const auto r = nome::test::run_window(file + " --script " + nome::test::write_script(dir, script));
+  script += "action accept\nstate\naction merge\nstate\nview 30 25\nscreenshot " + dir +
+            "/merged.png\nexport " + dir + "/merged.obj\nsubdiv 2\noffset 0.002\nstate\nscreenshot " + dir +
+            "/solid.png\nexport " + dir + "/solid.stl\nquit\n";
+  const auto r =
+      nome::test::run_window(file + " --script " + nome::test::write_script(dir, script),
+                             nome::test::TestViewer::private_stores(), nome::test::TestRenderer::gl);
   INFO(r.err);
   REQUIRE(r.status == 0);
+  // What the viewer drew: the one-sided merged surface shows both sides' colours; its solid, closed and
+  // orientable, shows only its outside.
+  const nome::test::SideCounts merged_sides = nome::test::count_sides(render::read_png(dir + "/merged.png"));
+  CHECK(merged_sides.front > 5000);
+  CHECK(merged_sides.back > 5000);
+  const render::Image solid_shot = render::read_png(dir + "/solid.png");
+  // Back faces show only along contours over other parts (under 0.5 %; sheets swapped would show half).
+  const nome::test::SideCounts solid_sides = nome::test::count_sides(solid_shot);
+  CHECK(solid_sides.front > 20000);
+  CHECK(solid_sides.back * 200 < solid_sides.front);
   CHECK_THAT(r.err,
              Catch::Contains("accept: " + std::to_string(added) + " faces moved into the consolidated mesh"));
   check_zero_states(nome::test::logged_states(r.err), zips, added, expected);
