@@ -43,8 +43,9 @@ Patches make_patches(const Mesh& surface, const VertexGraph& graph, double radiu
 // vertex of the patch, with its distance from the seed (along the edges, through its nearest corner).
 struct PatchCandidate {
   Index triangle;
-  double from_seed;
-  Vec3 lower, upper;  // the triangle's box: most candidates are too far from a vertex to need more
+  double from_seed;        // at most this far (through its nearest settled corner)
+  double from_seed_lower;  // and at least this far
+  Vec3 lower, upper;       // the triangle's box: most candidates are too far from a vertex to need more
 };
 
 // The squared distance from p to the box [lower, upper].
@@ -114,16 +115,24 @@ class PatchWorker {
       const Vec3 outside = glm::max(glm::max(t_lower - seed_point, seed_point - t_upper), Vec3(0.0));
       if (glm::dot(outside, outside) > reach * reach) return;
       near_.push_back(t);
-      for (int i = 0; i < 3; ++i) {
-        Index& stamp = stamp_[bvh_.triangle_vertex(t, i)];
-        if (stamp != current_) ++wanted;
-        stamp = current_;
-      }
+      // A triangle's nearest corner along the edges is at most the distance of any settled corner: one
+      // settled corner bounds it. The corner nearest the seed in space is usually settled first.
+      auto squared_distance = [&](int i) {
+        const Vec3 d = bvh_.triangle_point(t, i) - seed_point;
+        return glm::dot(d, d);
+      };
+      int corner = 0;
+      for (int i = 1; i < 3; ++i)
+        if (squared_distance(i) < squared_distance(corner)) corner = i;
+      want(bvh_.triangle_vertex(t, corner), wanted);
     });
-    // The search stops once every vertex of a nearby triangle is settled: on one smooth sheet that is
-    // a little beyond the wall, well before 3 x wall.
+    for (const Index v : patch) want(v, wanted);
+    // The search stops once a corner of every nearby triangle and every vertex of the patch is settled:
+    // on one smooth sheet that is about the reach, well before 3 x wall. Corners left unsettled keep
+    // upper bounds, which only keep more candidates.
     const Index seed[] = {patch[0]};
-    from_seed_.run(seed, limit, [&](Index v) { return stamp_[v] == current_ && --wanted == 0; });
+    const double settled_to =
+        from_seed_.run(seed, limit, [&](Index v) { return stamp_[v] == current_ && --wanted == 0; });
     double farthest = 0.0;
     for (const Index v : patch) farthest = std::max(farthest, from_seed_[v]);
     candidates_.clear();
@@ -136,8 +145,14 @@ class PatchWorker {
         t_lower = glm::min(t_lower, bvh_.triangle_point(t, i));
         t_upper = glm::max(t_upper, bvh_.triangle_point(t, i));
       }
-      candidates_.push_back({t, nearest, t_lower, t_upper});
+      candidates_.push_back({t, nearest, std::min(nearest, settled_to), t_lower, t_upper});
     }
+  }
+
+  void want(Index v, Index& wanted) {
+    Index& stamp = stamp_[v];
+    if (stamp != current_) ++wanted;
+    stamp = current_;
   }
 
   void check_vertex(Index v, std::vector<NearMiss>& out) {
@@ -154,7 +169,7 @@ class PatchWorker {
       const Vec3 q = closest_point_on_triangle(p, tri);
       const double d = glm::distance(p, q);
       if (d >= best.distance) continue;
-      if (c.from_seed - from_seed < limit)
+      if (c.from_seed_lower - from_seed < limit)
         open_.push_back({c.triangle, q, d});
       else
         best = {v, bvh_.triangles().faces[c.triangle], q, d};
@@ -174,11 +189,7 @@ class PatchWorker {
     ++current_;
     Index wanted = 0;
     for (const OpenCandidate& c : open_)
-      for (int i = 0; i < 3; ++i) {
-        Index& stamp = stamp_[bvh_.triangle_vertex(c.triangle, i)];
-        if (stamp != current_) ++wanted;
-        stamp = current_;
-      }
+      for (int i = 0; i < 3; ++i) want(bvh_.triangle_vertex(c.triangle, i), wanted);
     const Index source[] = {v};
     from_vertex_.run(source, 3.0 * options_.min_wall,
                      [&](Index w) { return stamp_[w] == current_ && --wanted == 0; });

@@ -55,9 +55,10 @@ class SurfaceDistance {
       : graph_(graph), distance_(graph.num_vertices(), std::numeric_limits<float>::infinity()) {}
 
   // Settles vertices nearest first until the next one is at `limit` or beyond; stop(v) may end the
-  // search early (it is called once per settled vertex and returns true to stop).
+  // search early (it is called once per settled vertex and returns true to stop). Returns the distance
+  // it settled up to: every vertex not settled is at least that far (a lower bound for them).
   template <typename Stop>
-  void run(std::span<const Index> sources, double limit, Stop&& stop) {
+  double run(std::span<const Index> sources, double limit, Stop&& stop) {
     clear();
     const float bound = float(limit);
     for (const Index s : sources) {
@@ -73,7 +74,11 @@ class SurfaceDistance {
       const Index v = Index(key);
       const float d = std::bit_cast<float>(std::uint32_t(key >> 32));
       if (d > distance_[v]) continue;
-      if (d >= bound || stop(v)) break;
+      if (d >= bound) break;
+      if (stop(v)) {
+        heap_.clear();
+        return double(d);
+      }
       for (const VertexGraph::Arc& arc : graph_.arcs_of(v)) {
         const float through = d + arc.length;
         if (through >= distance_[arc.to] || through >= bound) continue;
@@ -83,6 +88,7 @@ class SurfaceDistance {
       }
     }
     heap_.clear();
+    return limit;
   }
 
   // The distance of v found by the last run (an upper bound for vertices left in the heap when it
