@@ -61,6 +61,9 @@ enum class Action {
   toggle_section,
   print_check,
   next_print_place,
+  toggle_text_pane,
+  apply_text,
+  save_text,
 };
 
 // One row of the table every binding is read from: the script's name, a shortcut (key 0: none; an

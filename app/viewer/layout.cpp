@@ -25,21 +25,24 @@ ScreenLayout arrange(const LayoutSettings& settings, glm::dvec2 window, const La
   const double height = std::max(0.0, window.y - top - chrome.status_height);
   double left = settings.is_left_shown ? settings.left_width * chrome.scale : 0.0;
   double right = settings.is_right_shown ? settings.right_width * chrome.scale : 0.0;
-  // A narrow window shrinks both sidebars alike so that the model keeps a place.
+  double text = settings.is_text_shown ? settings.text_width * chrome.scale : 0.0;
+  // A narrow window shrinks the side panels alike so that the model keeps a place.
   const double room = std::max(0.0, window.x - min_viewport_pixels);
-  if (left + right > room) {
-    const double shrink = room / (left + right);
+  if (left + right + text > room) {
+    const double shrink = room / (left + right + text);
     left *= shrink;
     right *= shrink;
+    text *= shrink;
   }
   double log = settings.is_log_open ? settings.log_height * chrome.scale : chrome.log_bar_height;
   log = std::min(log, std::max(chrome.log_bar_height, height - min_viewport_pixels));
   ScreenLayout layout;
   layout.left = {{0.0, top}, {left, height}};
   layout.right = {{window.x - right, top}, {right, height}};
-  const double middle = std::max(0.0, window.x - left - right);
-  layout.log = {{left, top + height - log}, {middle, log}};
-  layout.viewport = {{left, top}, {middle, std::max(1.0, height - log)}};
+  layout.text = {{left, top}, {text, height}};
+  const double middle = std::max(0.0, window.x - left - text - right);
+  layout.log = {{left + text, top + height - log}, {middle, log}};
+  layout.viewport = {{left + text, top}, {middle, std::max(1.0, height - log)}};
   return layout;
 }
 
@@ -65,9 +68,11 @@ const Field fields[] = {
     {"left_width", &LayoutSettings::left_width},
     {"right_width", &LayoutSettings::right_width},
     {"log_height", &LayoutSettings::log_height},
+    {"text_width", &LayoutSettings::text_width},
     {"left_shown", nullptr, &LayoutSettings::is_left_shown},
     {"right_shown", nullptr, &LayoutSettings::is_right_shown},
     {"log_open", nullptr, &LayoutSettings::is_log_open},
+    {"text_shown", nullptr, &LayoutSettings::is_text_shown},
     {"dark", nullptr, &LayoutSettings::is_dark},
     {"window_width", nullptr, nullptr, 0},
     {"window_height", nullptr, nullptr, 1},

@@ -25,7 +25,9 @@ struct LayoutSettings {
   double left_width = 330.0;  // window pixels at content scale 1
   double right_width = 340.0;
   double log_height = 140.0;
+  double text_width = 460.0;
   bool is_left_shown = true;
+  bool is_text_shown = false;  // the scene text pane, hidden until asked for
   bool is_right_shown = true;
   bool is_log_open = true;  // collapsed: only its title bar
   bool is_dark = false;
@@ -43,9 +45,10 @@ struct LayoutChrome {
 };
 
 // The window cut into its panels' places, with the 3D viewport the rectangle between them. A hidden
-// sidebar has width 0; the log lies under the viewport, between the sidebars.
+// sidebar or text pane has width 0; the text pane stands beside the left sidebar, the log under the
+// viewport.
 struct ScreenLayout {
-  ScreenRect left, right, log, viewport;
+  ScreenRect left, right, log, viewport, text;
 };
 
 // The viewport keeps at least this much of the window's width and height: sidebars and log give way.

@@ -5,7 +5,8 @@
 
 namespace nome::viewer {
 
-void MessageLog::add(MessageLevel level, std::string text) {
+void MessageLog::add(MessageLevel level, std::string text, std::optional<scene::SourcePlace> place) {
+  if (!place) place = scene::parse_source_place(text);
   if (is_echoed_) {
     const char* prefix = level == MessageLevel::error     ? "error: "
                          : level == MessageLevel::warning ? "warning: "
@@ -24,10 +25,26 @@ void MessageLog::add(MessageLevel level, std::string text) {
       return;
     }
   }
-  messages_.push_back({level, std::move(text), 1});
+  messages_.push_back({level, std::move(text), 1, std::move(place)});
   // A long session keeps the latest few hundred lines.
   constexpr std::size_t limit = 500;
   if (messages_.size() > limit) messages_.erase(messages_.begin(), messages_.end() - limit);
+}
+
+void MessageLog::diagnostics(const std::vector<scene::Diagnostic>& list) {
+  for (const scene::Diagnostic& d : list) {
+    const MessageLevel level =
+        d.severity == scene::Severity::error ? MessageLevel::error : MessageLevel::warning;
+    add(level, d.to_string(), scene::SourcePlace{d.file, d.location});
+  }
+}
+
+void MessageLog::error(const std::exception& e) {
+  if (const auto* located = dynamic_cast<const scene::SceneError*>(&e);
+      located && !located->diagnostics().empty())
+    diagnostics(located->diagnostics());
+  else
+    add(MessageLevel::error, e.what());
 }
 
 std::size_t MessageLog::count(MessageLevel level) const {

@@ -7,7 +7,8 @@
 namespace nome::viewer {
 namespace {
 
-void draw_messages(const MessageLog& log, double scroll) {
+std::optional<scene::SourcePlace> draw_messages(const MessageLog& log, double scroll) {
+  std::optional<scene::SourcePlace> clicked;
   for (const Message& m : log.messages()) {
     const bool is_colored = m.level != MessageLevel::info;
     if (is_colored) ImGui::PushStyleColor(ImGuiCol_Text, message_color(m.level));
@@ -19,16 +20,25 @@ void draw_messages(const MessageLog& log, double scroll) {
     else
       ImGui::TextWrapped("%s%s", prefix, m.text.c_str());
     if (is_colored) ImGui::PopStyleColor();
+    if (m.place && ImGui::IsItemHovered()) {
+      ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+      ImGui::SetTooltip("click: line %d, column %d in the text pane", m.place->location.line,
+                        m.place->location.column);
+    }
+    if (m.place && ImGui::IsItemClicked()) clicked = m.place;
   }
   if (scroll != 0.0)
     ImGui::SetScrollY(ImGui::GetScrollY() + float(scroll));
   else if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY())
     ImGui::SetScrollHereY(1.0f);
+  return clicked;
 }
 
 }  // namespace
 
-void draw_log_panel(const MessageLog& log, const ScreenRect& rect, bool& is_open, double scroll) {
+std::optional<scene::SourcePlace> draw_log_panel(const MessageLog& log, const ScreenRect& rect, bool& is_open,
+                                                 double scroll) {
+  std::optional<scene::SourcePlace> clicked;
   ImGui::SetNextWindowPos(ImVec2(float(rect.origin.x), float(rect.origin.y)));
   ImGui::SetNextWindowSize(ImVec2(float(rect.size.x), float(rect.size.y)));
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
@@ -39,10 +49,11 @@ void draw_log_panel(const MessageLog& log, const ScreenRect& rect, bool& is_open
   ImGui::Text("Log (%zu)", log.messages().size());
   if (is_open) {
     ImGui::BeginChild("messages");
-    draw_messages(log, scroll);
+    clicked = draw_messages(log, scroll);
     ImGui::EndChild();
   }
   ImGui::End();
+  return clicked;
 }
 
 }  // namespace nome::viewer

@@ -36,6 +36,10 @@ void draw_status_bar(const std::optional<StatusLine>& status, const MessageLog& 
       ImGui::SameLine();
       ImGui::Text("| instances %s", status->instances.c_str());
     }
+    if (!status->statement.empty()) {
+      ImGui::SameLine();
+      ImGui::Text("| %s", status->statement.c_str());
+    }
   } else {
     ImGui::TextUnformatted("no file: File > Open (Ctrl+O) or drop a file on the window");
   }

@@ -78,8 +78,10 @@ ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPan
 void draw_topology_section(const TopologyReport& report, const glm::dvec3& size);
 
 // The log across the bottom of the viewport: a bar that opens and collapses it (`is_open`), then the
-// messages, scrolled to the newest unless the user scrolled up (or by `scroll` pixels).
-void draw_log_panel(const MessageLog& log, const ScreenRect& rect, bool& is_open, double scroll);
+// messages, scrolled to the newest unless the user scrolled up (or by `scroll` pixels). Returns the place
+// of a located message the user clicked.
+std::optional<scene::SourcePlace> draw_log_panel(const MessageLog& log, const ScreenRect& rect, bool& is_open,
+                                                 double scroll);
 // Errors red, warnings amber, in the log and the status bar.
 ImVec4 message_color(MessageLevel level);
 
@@ -93,6 +95,7 @@ struct StatusLine {
   SelectionMode mode = SelectionMode::vertex;
   glm::dvec3 size{0.0};   // the bounding box of the shown stage
   std::string instances;  // the selected instances' paths, comma-separated
+  std::string statement;  // "line 7": where the selected face or vertex was made
 };
 // "12.5 x 8 x 3.25 mm": a bounding box's size in the export unit.
 std::string size_text(const glm::dvec3& size);

@@ -65,6 +65,8 @@ const Syntax syntaxes[] = {
     {"layout", ScriptCommand::Kind::layout, 0, 0, "layout"},
     {"scroll", ScriptCommand::Kind::scroll, 1, 1, "scroll controls|parameters|log PIXELS"},
     {"state", ScriptCommand::Kind::state, 0, 0, "state (logs the topology line, selection and edit counts)"},
+    {"text-set", ScriptCommand::Kind::text_set, 1, 0, "text-set PATH (the text pane's text, not applied)"},
+    {"log-click", ScriptCommand::Kind::log_click, 0, 1, "log-click N (the N-th newest log message)"},
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 
@@ -118,6 +120,11 @@ const char* script_synopsis() {
          "  layout                    print the viewport, each panel and each visible bank header as\n"
          "                            NAME X Y W H (window pixels; banks as bank NAME X Y W H)\n"
          "  scroll PANEL PIXELS       scroll controls, parameters or log (negative: up)\n"
+         "  state                     log what is shown: topology, selection, edits, the text pane\n"
+         "  text-set PATH             the text pane's text becomes PATH's, as if typed (not applied:\n"
+         "                            action apply-text, action save-text)\n"
+         "  log-click N               click the N-th newest log message (1: the newest): a located\n"
+         "                            one puts the text pane's cursor at its line and column\n"
          "  quit                      end the session (without asking: key Ctrl+Q asks)\n";
 }
 
@@ -140,7 +147,9 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     if (!syntax) {
       fail(words[0].column,
            "expected a command (set, mode, color, click, double-click, key, action, subdiv, offset, view, "
-           "screenshot, save, export, recover, drop, prompt, layout, scroll, quit), found '" +
+           "screenshot, save, export, recover, drop, prompt, layout, scroll, state, text-set, log-click, "
+           "quit), "
+           "found '" +
                words[0].text + "'");
       continue;
     }

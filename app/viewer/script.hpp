@@ -28,6 +28,8 @@ struct ScriptCommand {
     layout,
     scroll,
     state,
+    text_set,
+    log_click,
     quit
   };
   Kind kind = Kind::quit;

@@ -101,6 +101,11 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::state:
       host.print_state();
       return true;
+    case Kind::text_set:
+      host.set_text(c.words[0]);
+      return true;
+    case Kind::log_click:
+      return host.click_log(int(c.numbers[0]));
     case Kind::quit:
       host.quit();
       return true;

@@ -46,6 +46,10 @@ class ScriptHost {
   // consolidated and temporary face counts, as one `state: ...` line.
   virtual void print_state() = 0;
   virtual void scroll(ScrolledPanel panel, double pixels) = 0;
+  // The text pane's text becomes the file's, as if typed (script `text-set`).
+  virtual void set_text(const std::filesystem::path& path) = 0;
+  // Clicks the `back`-th newest log message (1: the newest); throws when it names no place.
+  virtual bool click_log(int back) = 0;
   virtual void quit() = 0;
 };
 

@@ -174,10 +174,15 @@ void Session::apply_anom(const std::filesystem::path& path) {
 }
 
 void Session::reload() {
-  if (scene())
-    document_.reload(read_scene(path_));
-  else
-    document_.reload(read_flat());
+  if (scene()) return reload_text(read_text_file(path_));
+  document_.reload(read_flat());
+  update_input();
+}
+
+void Session::reload_text(std::string_view text) {
+  if (!scene())
+    throw InvalidInputError(path_.filename().string() + " is not a scene: its text is not evaluated");
+  document_.reload(read_scene_text(text, path_));
   update_input();
 }
 

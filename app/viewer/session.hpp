@@ -5,6 +5,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "nome/edit/scene_document.hpp"
@@ -91,6 +92,9 @@ class Session {
 
   // Reads the file again, keeping the edits; on an error the session keeps what it had and rethrows.
   void reload();
+  // The same with `text` as the file's content (the text pane's Apply): one evaluation for both. Throws
+  // InvalidInputError for flat geometry.
+  void reload_text(std::string_view text);
 
  private:
   EditOutcome changed(EditOutcome outcome);

@@ -23,6 +23,8 @@ bool SessionController::open(const std::filesystem::path& path) {
     recovery_offer_ = autosave_.pending_recovery(path);
     std::error_code ec;
     file_time_ = std::filesystem::last_write_time(path, ec);
+    ++disk_version_;
+    text_errors_.clear();
     recent_.add(path);
     const PolygonSoup& soup = session_->scene_soup();
     log_.info("opened " + path.string() + " (" + std::to_string(soup.num_vertices()) + " vertices, " +
@@ -72,6 +74,7 @@ void SessionController::save(const std::optional<std::filesystem::path>& target)
   if (previous != path) autosave_.discard(previous);  // its changes went to the new file
   std::error_code ec;
   file_time_ = std::filesystem::last_write_time(path, ec);
+  ++disk_version_;
   recent_.add(path);
   log_.info("saved " + path.string());
 }
@@ -240,13 +243,8 @@ void SessionController::update(double now) {
     const auto time = std::filesystem::last_write_time(session_->path(), ec);
     if (!ec && time != file_time_) {
       file_time_ = time;
-      try {
-        session_->reload();
-        log_.info("reloaded " + session_->path().filename().string());
-      } catch (const std::exception& e) {
-        // The last good geometry stays on screen.
-        log_.error(e.what());
-      }
+      ++disk_version_;
+      if (reload(nullptr)) log_.info("reloaded " + session_->path().filename().string());
     }
   }
   // Until the offer is answered the session holds the file as saved, and the recovery file must stay.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -88,6 +89,19 @@ class SessionController {
   bool edit(Action action, const StageResult* shown, const Selection& selection, const ZipperOptions& zipper,
             const PickableRims& rims = {});
 
+  // The text pane's Apply (session_text.cpp): `text` evaluated as the file's content, the way a reload
+  // after a save evaluates it (the edits and slider values kept). On an error the last good geometry
+  // stays, and the errors are logged (each clickable) and kept in text_errors(). Returns whether it applied.
+  bool apply_text(const std::string& text);
+  // Writes `text` as the file (atomically) and applies it; the file watcher takes the write for its own
+  // and does not read it back. Returns whether it was written (an error in the text is only marked).
+  bool save_text(const std::string& text);
+  // The errors of the last evaluation of the file's text (Apply, a reload after a change on disk); empty
+  // after a good one.
+  const std::vector<scene::Diagnostic>& text_errors() const { return text_errors_; }
+  // Changes whenever the file on disk may hold another text: opened, changed by another program, saved.
+  std::uint64_t disk_version() const { return disk_version_; }
+
   // Once a frame: reloads the file when it changed on disk (every half second at most) and keeps the
   // recovery file of unsaved changes.
   void update(double now);
@@ -107,10 +121,14 @@ class SessionController {
   Autosave autosave_;
   std::optional<std::filesystem::path> recovery_offer_;
   UndoHistory history_;
+  std::vector<scene::Diagnostic> text_errors_;
+  std::uint64_t disk_version_ = 0;
 
   bool is_parameter_lock_on_ = false;
   bool pair_sif_triangles_ = true;
 
+  // session_text.cpp: reloads the session from the file's text or `text`, keeping text_errors().
+  bool reload(const std::string* text);
   bool apply_moves(const std::vector<std::pair<Index, double>>& moves);
   // session_colors.cpp: names the instances' surfaces (an undo or redo of colours).
   using InstanceSurfaces = std::vector<std::pair<std::string, std::optional<std::string>>>;

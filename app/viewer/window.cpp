@@ -148,7 +148,7 @@ void Window::request_open(const std::filesystem::path& path) {
     drop({path});
     return;
   }
-  if (!sessions_.is_modified()) {
+  if (!sessions_.is_modified() && !text_pane_.is_modified()) {
     open(path);
     return;
   }
@@ -200,7 +200,7 @@ void Window::apply_file_defaults() {
 }
 
 void Window::request_quit() {
-  if (!sessions_.is_modified()) {
+  if (!sessions_.is_modified() && !text_pane_.is_modified()) {
     should_close_ = true;
     return;
   }
@@ -214,7 +214,8 @@ void Window::answer_unsaved(UnsavedAnswer answer) {
   if (answer == UnsavedAnswer::cancel) return;
   if (answer == UnsavedAnswer::save) {
     // A failed save (logged) leaves the changes where they were: nothing is lost.
-    if (!sessions_.save_logged(std::nullopt) || sessions_.is_modified()) return;
+    if (text_pane_.is_modified() && !save_text()) return;
+    if (sessions_.is_modified() && (!sessions_.save_logged(std::nullopt) || sessions_.is_modified())) return;
   } else if (question.open) {
     // The user gave the changes up: no recovery file should offer them back.
     sessions_.discard_recovery();

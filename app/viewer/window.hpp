@@ -24,6 +24,7 @@
 #include "viewer/selection.hpp"
 #include "viewer/session_controller.hpp"
 #include "viewer/stage_view.hpp"
+#include "viewer/text_pane.hpp"
 #include "viewer/turntable_mode.hpp"
 #include "viewer/view_controller.hpp"
 #include "viewer/viewer.hpp"
@@ -84,6 +85,7 @@ class Window : private ScriptHost {
   bool is_turntable_on() const { return turntable_.is_on(); }
   const MeasureTool& measure() const { return measure_; }
   const SectionState& section() const { return section_; }
+  const TextPane& text_pane() const { return text_pane_; }
   const LayoutSettings& layout_settings() const { return layout_settings_; }
   // Where the panels and the viewport are this frame, and what the last frame drew where.
   const ScreenLayout& layout() const { return layout_; }
@@ -111,6 +113,19 @@ class Window : private ScriptHost {
   void paint_faces();
   void draw_print_check_section();
   void draw_prompts();
+  // window_text.cpp: the scene text pane
+  void bind_text_actions();
+  bool apply_text();
+  bool save_text();
+  void sync_text_pane();
+  // The statement that made the selected face or vertex (the last clicked), on the scene or merged stage.
+  std::optional<scene::SourcePlace> selection_statement() const;
+  // "line 7" (with the file's name when it is another than the open one); empty for none.
+  std::string statement_text(const std::optional<scene::SourcePlace>& place) const;
+  // Shows a place of the open scene's text in the pane (a click on a located message in the log).
+  void show_place(const scene::SourcePlace& place);
+  void set_text(const std::filesystem::path& path) override;
+  bool click_log(int back) override;
   // window_history.cpp
   struct ViewState {
     PipelineSettings settings;
@@ -129,6 +144,7 @@ class Window : private ScriptHost {
   void draw_sidebars();
   void draw_status();
   void draw_browser();
+  void draw_text_pane();
   double take_scroll(ScrolledPanel panel);
   // The sliders the selected vertices and faces depend on.
   std::vector<Index> selection_parameters(const scene::Scene& scene) const;
@@ -182,6 +198,7 @@ class Window : private ScriptHost {
   TurntableMode turntable_;
   MeasureTool measure_;
   SectionState section_;
+  TextPane text_pane_;
   glm::dvec3 shown_low_{0.0}, shown_high_{0.0};  // the shown stage's bounding box
   ParameterPanelState parameters_;
 

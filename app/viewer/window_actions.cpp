@@ -114,6 +114,7 @@ void Window::bind_actions() {
                   (sessions_.is_parameter_lock_on() ? "locked while the document has edits" : "free"));
       }));
   bind_print_check_actions();
+  bind_text_actions();
   for (Action action : {Action::add_polygon, Action::accept, Action::clear_temporary, Action::delete_faces,
                         Action::zip, Action::toggle_sharp, Action::undo, Action::redo})
     actions_.bind(action, [this, action] { return edit(action); });
@@ -185,7 +186,8 @@ void Window::print_state() {
        << " parts | selection: " << selection_.vertices().size() << " vertices, " << selection_.faces().size()
        << " faces, " << selection_.borders().size() << " borders, " << selection_.instances().size()
        << " instances | faces: " << shown->parts.scene << " scene, " << shown->parts.consolidated
-       << " consolidated, " << shown->parts.temporary << " temporary";
+       << " consolidated, " << shown->parts.temporary << " temporary | "
+       << text_pane_.state_text(layout_settings_.is_text_shown);
   log_.info(line.str());
 }
 

@@ -95,8 +95,11 @@ void Window::draw_panels() {
                          sessions_.can_undo(), sessions_.can_redo()};
   if (const auto chosen = draw_main_menu(actions_, menu, display_, layout_settings_)) request_open(*chosen);
   draw_sidebars();
+  draw_text_pane();
   measure_.draw_overlay(view_.projection(layout_.viewport));
-  draw_log_panel(log_, layout_.log, layout_settings_.is_log_open, take_scroll(ScrolledPanel::log));
+  if (const auto place =
+          draw_log_panel(log_, layout_.log, layout_settings_.is_log_open, take_scroll(ScrolledPanel::log)))
+    show_place(*place);
   report_.panels.push_back({"log", layout_.log});
   draw_status();
   if (panels_.is_help_shown) draw_help_overlay(panels_.is_help_shown);
@@ -156,6 +159,24 @@ void Window::draw_sidebars() {
   sessions_.move_sliders(moves.moves, moves.continues);
 }
 
+void Window::draw_text_pane() {
+  sync_text_pane();
+  text_pane_.set_statement(selection_statement());
+  if (!layout_settings_.is_text_shown) return;
+  report_.panels.push_back({"text", layout_.text});
+  double width = 0.0;
+  TextPaneRequest request;
+  if (begin_docked_panel("Scene text", layout_.text, &width)) request = text_pane_.draw();
+  ImGui::End();
+  layout_settings_.text_width =
+      dragged_width(width, layout_.text.size.x, layout_settings_.text_width, platform_.content_scale());
+  if (request.loads_from_disk) text_pane_.load_from_disk();
+  if (request.save)
+    save_text();
+  else if (request.apply)
+    apply_text();
+}
+
 void Window::draw_status() {
   const StageResult* shown = stage_.shown();
   std::optional<StatusLine> status;
@@ -167,7 +188,8 @@ void Window::draw_status() {
                         shown->mesh->num_faces(),
                         selection_.mode(),
                         shown_size_,
-                        {}};
+                        {},
+                        statement_text(selection_statement())};
   if (status)
     for (const std::string& path : selection_.instances())
       status->instances += (status->instances.empty() ? "" : ", ") + path;

@@ -27,7 +27,11 @@ bool is_anom_file(const std::filesystem::path& path) {
 }
 
 scene::Scene read_scene(const std::filesystem::path& path, const scene::SceneOptions& options) {
-  const std::string text = read_text_file(path);
+  return read_scene_text(read_text_file(path), path, options);
+}
+
+scene::Scene read_scene_text(std::string_view text, const std::filesystem::path& path,
+                             const scene::SceneOptions& options) {
   if (lower_extension(path) != ".slf") return scene::Scene::from_text(text, path.string(), options);
   scene::Diagnostics diagnostics(path.string());
   scene::SceneAst ast = scene::parse_slf(text, diagnostics);

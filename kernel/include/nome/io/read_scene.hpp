@@ -1,6 +1,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "nome/scene/scene.hpp"
 
@@ -10,6 +12,10 @@ namespace nome {
 // Throws SceneError listing every located error, IoError when the file cannot be read, BudgetError when
 // its instances exceed the budget of `options`.
 scene::Scene read_scene(const std::filesystem::path& path, const scene::SceneOptions& options = {});
+// The same for a text that is (or will be) the content of `path`: an editor's unsaved text, evaluated as the
+// file would be (its extension picks the reader, errors are located in it, includes resolve beside it).
+scene::Scene read_scene_text(std::string_view text, const std::filesystem::path& path,
+                             const scene::SceneOptions& options = {});
 
 // True for the extensions read_scene reads.
 bool is_scene_file(const std::filesystem::path& path);

@@ -1,0 +1,46 @@
+#include <catch2/catch.hpp>
+
+#include "viewer/message_log.hpp"
+#include "viewer/source_text.hpp"
+
+using namespace nome;
+using nome::scene::SourceLocation;
+
+TEST_CASE("lines and columns of an edited text map to byte offsets and back", "[app]") {
+  const std::string text = "bank b\n  set n 4 3 8 1\n\nendbank";
+  CHECK(viewer::line_count(text) == 4);
+  CHECK(viewer::line_count("") == 1);
+  CHECK(viewer::line_count("a\n") == 2);
+  CHECK(viewer::byte_offset(text, {1, 1}) == 0);
+  CHECK(viewer::byte_offset(text, {2, 3}) == 9);
+  CHECK(text.substr(viewer::byte_offset(text, {2, 3}), 3) == "set");
+  CHECK(viewer::byte_offset(text, {3, 1}) == 23);
+  // Past a line's end: its end; past the last line: the text's end.
+  CHECK(viewer::byte_offset(text, {2, 99}) == 22);
+  CHECK(viewer::byte_offset(text, {9, 1}) == text.size());
+  for (std::size_t offset = 0; offset <= text.size(); ++offset)
+    CHECK(viewer::byte_offset(text, viewer::location_at(text, offset)) == offset);
+  CHECK(viewer::location_at(text, 9) == SourceLocation{2, 3});
+  CHECK(viewer::location_at(text, 1000) == SourceLocation{4, 8});
+}
+
+TEST_CASE("the log keeps a diagnostic's place, and finds one at the start of an error's text", "[app]") {
+  viewer::MessageLog log;
+  log.diagnostics({{scene::Severity::error, "a b.nome", {3, 7}, "expected ')'"},
+                   {scene::Severity::warning, "a b.nome", {5, 1}, "inexact join"}});
+  log.error("/tmp/x.nome:12:4: unknown name 'q'");
+  log.info("opened /tmp/x.nome (8 vertices, 6 faces)");
+  const auto& m = log.messages();
+  REQUIRE(m.size() == 4);
+  CHECK(m[0].level == viewer::MessageLevel::error);
+  CHECK(m[0].place == scene::SourcePlace{"a b.nome", {3, 7}});
+  CHECK(m[1].level == viewer::MessageLevel::warning);
+  CHECK(m[1].place == scene::SourcePlace{"a b.nome", {5, 1}});
+  CHECK(m[2].place == scene::SourcePlace{"/tmp/x.nome", {12, 4}});
+  CHECK_FALSE(m[3].place);
+  const scene::SceneError error({{scene::Severity::error, "c.nome", {1, 2}, "first"},
+                                 {scene::Severity::error, "c.nome", {4, 5}, "second"}});
+  log.error(error);
+  REQUIRE(log.messages().size() == 6);
+  CHECK(log.messages()[5].place == scene::SourcePlace{"c.nome", {4, 5}});
+}
