@@ -49,7 +49,7 @@ TEST_CASE("every action of the table has one script name, and no two rows share 
     CHECK((is_new || at->second == row.action));
     if (row.key != 0) CHECK(labels.insert(key_label(row.key, row.modifiers)).second);
   }
-  CHECK(names.size() == std::size_t(Action::next_print_place) + 1);
+  CHECK(names.size() == std::size_t(Action::save_text) + 1);
   CHECK(action_names().starts_with("help, open, open-recent-1"));
 }
 
