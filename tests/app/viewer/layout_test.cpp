@@ -40,6 +40,27 @@ std::vector<std::pair<std::string, ScreenRect>> layout_lines(const std::string& 
 
 }  // namespace
 
+TEST_CASE("the scene text pane stands beside the controls, and the viewport and log give way", "[app]") {
+  const viewer::LayoutChrome chrome{20.0, 24.0, 30.0, 1.0};
+  viewer::LayoutSettings settings;
+  CHECK_FALSE(settings.is_text_shown);
+  CHECK(viewer::arrange(settings, {1600.0, 900.0}, chrome).text.size.x == 0.0);
+  settings.is_text_shown = true;
+  const viewer::ScreenLayout a = viewer::arrange(settings, {1600.0, 900.0}, chrome);
+  CHECK(a.text.origin == glm::dvec2(settings.left_width, 20.0));
+  CHECK(a.text.size.x == settings.text_width);
+  CHECK(a.text.max().y == Approx(900.0 - 24.0));
+  CHECK(a.viewport.origin.x == Approx(a.text.max().x));
+  CHECK(a.viewport.max().x == Approx(1600.0 - settings.right_width));
+  CHECK(a.log.origin.x == Approx(a.viewport.origin.x));
+  CHECK(a.log.size.x == Approx(a.viewport.size.x));
+  // Tab hides the sidebars, not the pane: the pane and the model share the window.
+  settings.is_left_shown = settings.is_right_shown = false;
+  const viewer::ScreenLayout b = viewer::arrange(settings, {1280.0, 800.0}, chrome);
+  CHECK(b.text.origin.x == 0.0);
+  CHECK(b.viewport.size.x == Approx(1280.0 - settings.text_width));
+}
+
 TEST_CASE("the viewport is the rectangle between the sidebars, above the log", "[app]") {
   const viewer::LayoutChrome chrome{20.0, 24.0, 30.0, 1.0};
   viewer::LayoutSettings settings;
