@@ -105,17 +105,24 @@ TEST_CASE("a face or vertex selected in the view maps to the line of its stateme
   }
   REQUIRE(up);
   REQUIRE(funnel);
-  const std::string script = test::write_script(dir, "view 30 25\nmode face\n" + test::click_line(*up) +
-                                                         "state\naction clear-selection\n" +
-                                                         test::click_line(*funnel) + "state\nquit\n");
+  // A vertex of the mesh's faces: its first face's statement.
+  std::optional<glm::dvec2> point;
+  for (Index v = 0; v < mesh.num_vertices() && !point; ++v)
+    if (mesh.vertex_names()[v].rfind("i2_", 0) == 0) point = test::click_position(mesh, projection, v);
+  REQUIRE(point);
+  const std::string script = test::write_script(
+      dir, "view 30 25\nmode face\n" + test::click_line(*up) + "state\naction clear-selection\n" +
+               test::click_line(*funnel) + "state\naction clear-selection\nmode vertex\n" +
+               test::click_line(*point) + "state\nquit\n");
   const auto r = test::run_window(dir + "/s.nome --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("face i2_up selected"));
   const auto texts = text_states(r.err);
-  REQUIRE(texts.size() == 2);
+  REQUIRE(texts.size() == 3);
   CHECK_THAT(texts[0], Catch::Contains("statement line 7"));
   CHECK_THAT(texts[1], Catch::Contains("statement line 2"));
+  CHECK_THAT(texts[2], Catch::Contains("statement line 7"));
 }
 
 TEST_CASE("applying a good edit changes the geometry, and saving writes the text without a reload", "[app]") {
