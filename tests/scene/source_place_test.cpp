@@ -7,27 +7,12 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/scene/source_place.hpp"
+#include "support/placed_scene.hpp"
 
 using namespace nome;
 using namespace nome::scene;
 
-namespace {
-
-// A generator on line 2, a mesh whose face statements are on lines 7 and 8, both placed on lines 10-11.
-const char* const placed_text =
-    "bank b set n 4 3 8 1 endbank\n"
-    "funnel fu ({expr $b_n} 1 0.5 1) endfunnel\n"
-    "point a (0 0 5) endpoint\n"
-    "point c (1 0 5) endpoint\n"
-    "point d (1 1 5) endpoint\n"
-    "mesh m\n"
-    "  face up (a c d) endface\n"
-    "  face down (a d c) endface\n"
-    "endmesh\n"
-    "instance i1 fu endinstance\n"
-    "instance i2 m endinstance\n";
-
-}  // namespace
+using nome::test::placed_scene;
 
 TEST_CASE("a diagnostic's or an origin's file:line:col is read back, a file with colons too", "[scene]") {
   CHECK(parse_source_place("a.nome:3:14: expected ')'") == SourcePlace{"a.nome", {3, 14}});
@@ -43,7 +28,7 @@ TEST_CASE("a diagnostic's or an origin's file:line:col is read back, a file with
 }
 
 TEST_CASE("each face and vertex of a scene maps to the statement that made it", "[scene]") {
-  const Scene scene = Scene::from_text(placed_text, "p.nome");
+  const Scene scene = Scene::from_text(placed_scene, "p.nome");
   const PolygonSoup soup = scene.combined_soup();
   const Mesh mesh = glue_faces(soup).mesh;
   REQUIRE(soup.num_faces() == 4 + 2);

@@ -9,6 +9,7 @@
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/query/pick.hpp"
 #include "nome/query/triangle_bvh.hpp"
+#include "support/placed_scene.hpp"
 #include "viewer/window.hpp"
 
 using namespace nome;
@@ -17,19 +18,7 @@ using namespace nome;
 // clicks and saves.
 namespace {
 
-// A funnel made on line 2; a mesh whose face statements are on lines 7 and 8; both placed.
-const std::string placed_scene =
-    "bank b set n 4 3 8 1 endbank\n"
-    "funnel fu ({expr $b_n} 1 0.5 1) endfunnel\n"
-    "point a (0 0 3) endpoint\n"
-    "point c (1.5 0 3) endpoint\n"
-    "point d (1.5 1.5 3) endpoint\n"
-    "mesh m\n"
-    "  face up (a c d) endface\n"
-    "  face down (a d c) endface\n"
-    "endmesh\n"
-    "instance i1 fu endinstance\n"
-    "instance i2 m endinstance\n";
+using nome::test::placed_scene;
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
