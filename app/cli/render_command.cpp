@@ -150,6 +150,17 @@ void apply_section_argument(const Arguments& parsed, const Mesh& mesh, const Pip
   display.fills_section = settings.distance() > 0.0 && !parsed.has("--print-check");
 }
 
+// -o OUT.png, or OUT.gif for a turntable.
+std::string output_argument(const Arguments& parsed) {
+  const auto out = parsed.value("--output");
+  if (!out) throw UsageError("render needs -o OUT.png");
+  const auto extension = std::filesystem::path(*out).extension();
+  if (extension != ".png" && extension != ".gif")
+    throw UsageError("output must end in .png (or .gif with --turntable), found '" + *out + "'");
+  check_turntable_arguments(parsed, *out);
+  return *out;
+}
+
 render::Backend backend_argument(const Arguments& parsed) {
   const auto name = parsed.value("--backend");
   if (!name) return render::Backend::automatic;
@@ -176,11 +187,7 @@ int render_command(const std::vector<std::string>& args) {
         << parsed.help();
     return 0;
   }
-  const auto out = parsed.value("--output");
-  if (!out) throw UsageError("render needs -o OUT.png");
-  if (std::filesystem::path(*out).extension() != ".png" && std::filesystem::path(*out).extension() != ".gif")
-    throw UsageError("output must end in .png (or .gif with --turntable), found '" + *out + "'");
-  check_turntable_arguments(parsed, *out);
+  const std::string out = output_argument(parsed);
   render::SnapshotOptions options = snapshot_options(parsed);
   const render::Backend backend = backend_argument(parsed);
   const Stage stage =
@@ -206,7 +213,7 @@ int render_command(const std::vector<std::string>& args) {
   const double context_ms = milliseconds(context_start);
   if (verbose) std::cerr << "nome: " << context.platform() << ": " << context.description() << "\n";
   if (parsed.has("--turntable")) {
-    std::cerr << "nome: wrote " << write_turntable(mesh, options, parsed, *out) << ", " << mesh.num_faces()
+    std::cerr << "nome: wrote " << write_turntable(mesh, options, parsed, out) << ", " << mesh.num_faces()
               << " faces, " << context.platform() << "\n";
     return 0;
   }
@@ -214,7 +221,7 @@ int render_command(const std::vector<std::string>& args) {
   const render::Image image = render::render_snapshot(mesh, options);
   const double draw_ms = milliseconds(draw_start);
   const auto write_start = Clock::now();
-  render::write_png(*out, image);
+  render::write_png(out, image);
   if (verbose) {
     char figures[160];
     std::snprintf(figures, sizeof figures,
@@ -222,8 +229,8 @@ int render_command(const std::vector<std::string>& args) {
                   context_ms, draw_ms, milliseconds(write_start));
     std::cerr << figures;
   }
-  std::cerr << "nome: wrote " << *out << " (" << image.width << "x" << image.height << ", "
-            << mesh.num_faces() << " faces, " << context.platform() << ")\n";
+  std::cerr << "nome: wrote " << out << " (" << image.width << "x" << image.height << ", " << mesh.num_faces()
+            << " faces, " << context.platform() << ")\n";
   return 0;
 }
 
