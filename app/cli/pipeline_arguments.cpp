@@ -19,6 +19,12 @@ std::vector<OptionSpec> pipeline_option_specs() {
        "face follows them), edge-and-corner (a vertex of one face stays put), none (faces touching the "
        "border "
        "are holes: they shape their neighbours but are not output); OpenSubdiv's modes of the same names"},
+      {"--crease-method", "", "METHOD",
+       "how semi-sharp crease weights decay: uniform (default: 1 per level) or chaikin (evened out along a "
+       "crease); OpenSubdiv's creasing methods, an OBJ's `t creasemethod`"},
+      {"--smooth-triangles", "", "",
+       "OpenSubdiv's smooth triangle rule: edge points beside a triangle lean towards its centre (an OBJ's "
+       "`t smoothtriangles`)"},
       {"--offset", "", "D", "thicken into a closed solid, D on each side of the surface (D > 0)"},
       {"--subdiv-after", "", "M", "Catmull-Clark levels after --offset, to round the rims (default 0)"},
       {"--force", "", "",
@@ -62,6 +68,12 @@ PipelineSettings pipeline_settings(const Arguments& args, Stage stage) {
       throw UsageError("--boundary expects none, edge-only or edge-and-corner, found '" + *boundary + "'");
     s.boundary = *mode;
   }
+  if (const auto method = args.value("--crease-method")) {
+    const auto parsed = parse_crease_method(*method);
+    if (!parsed) throw UsageError("--crease-method expects uniform or chaikin, found '" + *method + "'");
+    s.creases.method = *parsed;
+  }
+  s.creases.smooth_triangles = args.has("--smooth-triangles");
   if (args.has("--offset")) {
     s.offset_distance = args.double_value("--offset", 0.0);
     if (s.offset_distance <= 0.0)
@@ -75,8 +87,9 @@ PipelineSettings pipeline_settings(const Arguments& args, Stage stage) {
 
 void apply_obj_tags(const ObjSubdivisionTags& tags, const Arguments& args, PipelineSettings& settings) {
   if (tags.boundary && !args.has("--boundary")) settings.boundary = *tags.boundary;
-  if (tags.crease_method) settings.creases.method = *tags.crease_method;
-  if (tags.smooth_triangles) settings.creases.smooth_triangles = *tags.smooth_triangles;
+  if (tags.crease_method && !args.has("--crease-method")) settings.creases.method = *tags.crease_method;
+  if (tags.smooth_triangles && !args.has("--smooth-triangles"))
+    settings.creases.smooth_triangles = *tags.smooth_triangles;
 }
 
 void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments& args,

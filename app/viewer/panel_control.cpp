@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <string>
 
 #include <imgui.h>
 
@@ -7,7 +8,21 @@
 namespace nome::viewer {
 namespace {
 
-bool draw_selection_section(const ActionRegistry& actions, Selection& selection, glm::vec3& instance_color) {
+// The selected edges' crease weights on the shown mesh: one, or their range.
+void draw_selected_sharpness(const Selection& selection, const Mesh* shown) {
+  if (!shown || selection.edges().empty()) return;
+  float low = infinite_sharpness, high = 0.0f;
+  for (Index e : selection.edges()) {
+    low = std::min(low, shown->edge_sharpness(e));
+    high = std::max(high, shown->edge_sharpness(e));
+  }
+  const std::string text =
+      low == high ? sharpness_text(low) : sharpness_text(low) + " to " + sharpness_text(high);
+  ImGui::Text("sharpness: %s", text.c_str());
+}
+
+bool draw_selection_section(const ActionRegistry& actions, Selection& selection, glm::vec3& instance_color,
+                            const Mesh* shown) {
   int mode = int(selection.mode());
   const char* labels[] = {"vertex", "face", "border (whole)", "border (partial)", "edge", "instance"};
   for (int i = 0; i < 6; ++i) {
@@ -17,6 +32,7 @@ bool draw_selection_section(const ActionRegistry& actions, Selection& selection,
   ImGui::NewLine();
   ImGui::Text("%zu vertices, %zu faces, %zu edges, %zu borders", selection.vertices().size(),
               selection.faces().size(), selection.edges().size(), selection.borders().size());
+  draw_selected_sharpness(selection, shown);
   if (ImGui::Button("Clear selection")) actions.run(Action::clear_selection);
   if (selection.mode() != SelectionMode::instance) return false;
   // Report 8.4: selected instances take a surface colour, saved with the scene.
@@ -101,6 +117,20 @@ void draw_unresolved(const std::vector<UnresolvedEdit>& unresolved) {
   ImGui::SetTooltip("%s", text.c_str());
 }
 
+// The weight K gives: OpenSubdiv's sharpness, a crease for that many levels (fractions blend), or infinite.
+void draw_sharpness_control(float& sharpness) {
+  bool is_infinite = sharpness >= infinite_sharpness;
+  if (ImGui::Checkbox("infinite", &is_infinite)) sharpness = is_infinite ? infinite_sharpness : 2.0f;
+  ImGui::SameLine();
+  ImGui::BeginDisabled(is_infinite);
+  float weight = std::min(sharpness, infinite_sharpness);
+  ImGui::SetNextItemWidth(90);
+  if (ImGui::SliderFloat("sharpness", &weight, 0.0f, infinite_sharpness, "%.2f")) sharpness = weight;
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("the edges stay creased for this many subdivision levels (fractions blend)");
+}
+
 void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& model) {
   if (!is_editable(model.settings.stage))
     ImGui::TextDisabled("%s is computed: edit on scene or merged", to_string(model.settings.stage));
@@ -111,7 +141,7 @@ void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& m
   if (ImGui::Button("Delete faces")) actions.run(Action::delete_faces);
   if (ImGui::Button("Sharp / smooth")) actions.run(Action::toggle_sharp);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("mark the selected edges sharp, or smooth if all are sharp (K)");
+    ImGui::SetTooltip("give the selected edges the sharpness, or smooth them if all have it (K)");
   ImGui::SameLine();
   if (ImGui::Button("Zip borders")) actions.run(Action::zip);
   ImGui::SameLine();
@@ -119,6 +149,7 @@ void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& m
   ImGui::SetNextItemWidth(110);
   if (ImGui::SliderFloat("triangle penalty", &penalty, 1.0f, 3.0f, "%.2f"))
     model.zipper.triangle_penalty = penalty;
+  draw_sharpness_control(model.sharpness);
   ImGui::EndDisabled();
   ImGui::BeginDisabled(!model.document || model.document->temporary_faces().empty());
   if (ImGui::Button("Accept")) actions.run(Action::accept);
@@ -159,7 +190,8 @@ ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPan
   ControlPanelChanges changes;
   bool is_instance_color_applied = false;
   if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
-    is_instance_color_applied = draw_selection_section(actions, model.selection, model.instance_color);
+    is_instance_color_applied =
+        draw_selection_section(actions, model.selection, model.instance_color, model.shown);
   if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen)) {
     if (model.sif_pairing) {
       bool is_paired = *model.sif_pairing;

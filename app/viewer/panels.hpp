@@ -64,6 +64,8 @@ struct ControlPanelModel {
   bool is_parameter_lock_on;
   std::optional<bool> sif_pairing;  // a .sif file is open: whether its triangles are paired
   glm::vec3& instance_color;        // the colour picker's, for the selected instances
+  float& sharpness;                 // the weight K gives the selected edges
+  const Mesh* shown;                // the shown stage's mesh (the selection is on it), if any
 };
 // What the control panel changed that needs the renderer told.
 struct ControlPanelChanges {

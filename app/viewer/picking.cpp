@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "nome/mesh/named_sharp_edge.hpp"
 #include "nome/query/pick.hpp"
 #include "nome/query/pick_edge.hpp"
 #include "nome/query/rim_pick.hpp"
@@ -49,9 +50,11 @@ std::string select_at(Selection& selection, const StageResult& shown, const Tria
     if (const auto edge = pick_edge(mesh, bvh, projection, pixel, pick_pixels)) {
       selection.click_edge(*edge);
       const auto [u, w] = mesh.edge(*edge).vertices;
-      hint = "edge (" + mesh.vertex_label(u) + ", " + mesh.vertex_label(w) + ")" +
-             (mesh.edge(*edge).is_sharp ? ", sharp," : "") +
-             (contains(selection.edges(), *edge) ? " selected" : " deselected");
+      hint =
+          "edge (" + mesh.vertex_label(u) + ", " + mesh.vertex_label(w) + ")" +
+          (mesh.edge_sharpness(*edge) > 0 ? ", sharpness " + sharpness_text(mesh.edge_sharpness(*edge)) + ","
+                                          : "") +
+          (contains(selection.edges(), *edge) ? " selected" : " deselected");
     }
   } else if (selection.mode() == SelectionMode::face) {
     if (const auto face = pick_face(bvh, projection, pixel)) {
@@ -148,9 +151,9 @@ void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Pic
 void show_sharp_edges(render::SceneRenderer& renderer, const Mesh& mesh) {
   std::vector<glm::vec3> points;
   std::vector<std::uint32_t> segments;
-  for (const Edge& edge : mesh.edges()) {
-    if (!edge.is_sharp) continue;
-    for (Index v : edge.vertices) points.push_back(glm::vec3(mesh.position(v)));
+  for (Index e = 0; e < mesh.num_edges(); ++e) {
+    if (mesh.edge_sharpness(e) <= 0) continue;
+    for (Index v : mesh.edge(e).vertices) points.push_back(glm::vec3(mesh.position(v)));
     segments.insert(segments.end(), {std::uint32_t(points.size() - 2), std::uint32_t(points.size() - 1)});
   }
   renderer.set_lines(render::Overlay::sharp, points, segments);

@@ -44,7 +44,7 @@ void show_selection(render::SceneRenderer& renderer, const Mesh& mesh, const Pic
                     const Selection& selection, const glm::vec3& color, const glm::vec3& rim_color,
                     std::span<const render::CubeMarker> more = {});
 
-// The shown mesh's sharp edges, drawn in the display's sharp colour.
+// The shown mesh's sharp edges (any weight), drawn in the display's sharp colour.
 void show_sharp_edges(render::SceneRenderer& renderer, const Mesh& mesh);
 
 // The colours of the temporary and consolidated faces (edits), painted over the stage's own.

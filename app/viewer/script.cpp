@@ -55,6 +55,7 @@ const Syntax syntaxes[] = {
     {"action", ScriptCommand::Kind::action, 1, 0, "action NAME (add-polygon, zip, undo, ...)"},
     {"subdiv", ScriptCommand::Kind::subdiv, 0, 1, "subdiv LEVEL"},
     {"offset", ScriptCommand::Kind::offset, 0, 1, "offset DISTANCE"},
+    {"setting", ScriptCommand::Kind::setting, 2, 0, "setting NAME VALUE"},
     {"view", ScriptCommand::Kind::view, 0, 2, "view AZIMUTH ELEVATION (degrees)"},
     {"screenshot", ScriptCommand::Kind::screenshot, 1, 0, "screenshot PATH.png"},
     {"save", ScriptCommand::Kind::save, 1, 0, "save PATH.nome"},
@@ -72,6 +73,7 @@ const Syntax syntaxes[] = {
 
 const char* const modes[] = {"vertex", "face", "border", "border-partial", "edge", "instance"};
 const char* const recovery_answers[] = {"restore", "discard"};
+const char* const settings[] = {"creases", "smooth-triangles", "border", "sharpness"};
 const char* const unsaved_answers[] = {"save", "discard", "cancel"};
 const char* const scrolled_panels[] = {"controls", "parameters", "log"};
 
@@ -91,6 +93,8 @@ std::string expected_word(const ScriptCommand& command) {
     return "vertex, face, border, border-partial, edge or instance";
   if (command.kind == Kind::action && !find_action(word)) return "an action (" + action_names() + ")";
   if (command.kind == Kind::recover && !is_one_of(word, recovery_answers)) return "restore or discard";
+  if (command.kind == Kind::setting && !is_one_of(word, settings))
+    return "creases, smooth-triangles, border or sharpness";
   if (command.kind == Kind::prompt && !is_one_of(word, unsaved_answers)) return "save, discard or cancel";
   if (command.kind == Kind::scroll && !is_one_of(word, scrolled_panels)) return "controls, parameters or log";
   return {};
@@ -110,6 +114,9 @@ const char* script_synopsis() {
          "                            undo, redo, or any of the help overlay's (wireframe, frame, ...)\n"
          "  subdiv LEVEL              subdivision level 0-6\n"
          "  offset DISTANCE           offset distance (0 turns offsetting off)\n"
+         "  setting NAME VALUE        a Stage or Edit control: creases uniform|chaikin,\n"
+         "                            smooth-triangles on|off, border none|edge-only|edge-and-corner,\n"
+         "                            sharpness W|infinite (the weight K gives the selected edges)\n"
          "  view AZ EL                look from azimuth AZ and elevation EL (degrees), framed\n"
          "  screenshot PATH.png       save the window as a PNG\n"
          "  save PATH.nome            save the scene, slider values and edits\n"
@@ -146,10 +153,10 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
       if (words[0].text == s.word) syntax = &s;
     if (!syntax) {
       fail(words[0].column,
-           "expected a command (set, mode, color, click, double-click, key, action, subdiv, offset, view, "
-           "screenshot, save, export, recover, drop, prompt, layout, scroll, state, text-set, log-click, "
-           "quit), "
-           "found '" +
+           "expected a command (set, mode, color, click, double-click, key, action, subdiv, offset, setting, "
+           "view, screenshot, save, export, recover, drop, prompt, layout, scroll, state, text-set, "
+           "log-click, "
+           "quit), found '" +
                words[0].text + "'");
       continue;
     }

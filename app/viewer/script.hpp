@@ -18,6 +18,7 @@ struct ScriptCommand {
     color,
     subdiv,
     offset,
+    setting,
     view,
     screenshot,
     save,

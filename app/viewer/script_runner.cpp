@@ -92,6 +92,9 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::offset:
       host.set_offset(c.numbers[0]);
       return true;
+    case Kind::setting:
+      host.apply_setting(c.words[0], c.words[1]);
+      return true;
     case Kind::layout:
       host.print_layout();
       return true;

@@ -40,6 +40,9 @@ class ScriptHost {
   virtual void save(const std::filesystem::path& path) = 0;
   virtual void set_subdivision(double levels) = 0;
   virtual void set_offset(double distance) = 0;
+  // A control of the Stage or Edit section (script `setting NAME VALUE`); throws InvalidInputError for a
+  // value it does not take.
+  virtual void apply_setting(const std::string& name, const std::string& value) = 0;
   // Prints the layout report (script `layout`) once this frame's panels are drawn.
   virtual void print_layout() = 0;
   // Logs what the viewer shows (script `state`): the stage's topology line, the selection, and the scene's,

@@ -96,14 +96,14 @@ EditOutcome Session::zipper(const Mesh& displayed, const BorderSelection& a, con
   return changed(document_.edits().zipper(displayed, a, b, options));
 }
 
-EditOutcome Session::set_sharp(const Mesh& displayed, std::span<const Index> edges, bool is_sharp) {
+EditOutcome Session::set_sharp(const Mesh& displayed, std::span<const Index> edges, float weight) {
   std::vector<std::pair<std::string, std::string>> names;
   for (Index e : edges) {
     const auto [u, w] = displayed.edge(e).vertices;
     names.emplace_back(name_of(displayed.vertex_names(), u, "vertex"),
                        name_of(displayed.vertex_names(), w, "vertex"));
   }
-  return changed(document_.edits().set_sharp(names, is_sharp));
+  return changed(document_.edits().set_sharp(names, weight));
 }
 
 bool Session::undo() {

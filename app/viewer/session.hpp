@@ -80,8 +80,8 @@ class Session {
   // Zips chains of named vertices: rim lines (report 6.3) or borders, in any mix (Document::zip_chains).
   EditOutcome zip_chains(const std::vector<std::string>& a, const std::vector<std::string>& b,
                          const ZipperOptions& options);
-  // Marks the edges of `displayed` sharp (or smooth), by their vertices' names.
-  EditOutcome set_sharp(const Mesh& displayed, std::span<const Index> edges, bool is_sharp);
+  // Gives the edges of `displayed` a crease weight (0: smooth), by their vertices' names.
+  EditOutcome set_sharp(const Mesh& displayed, std::span<const Index> edges, float weight);
   bool undo();
   bool redo();
 

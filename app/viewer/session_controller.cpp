@@ -193,7 +193,7 @@ void SessionController::move_sliders(const std::vector<std::pair<Index, double>>
 }
 
 bool SessionController::edit(Action action, const StageResult* shown, const Selection& selection,
-                             const ZipperOptions& zipper, const PickableRims& rims) {
+                             const ZipperOptions& zipper, const PickableRims& rims, float sharpness) {
   const std::string name = action_name(action);
   EditOutcome outcome{false, {}};
   if (action == Action::undo || action == Action::redo) {
@@ -209,11 +209,12 @@ bool SessionController::edit(Action action, const StageResult* shown, const Sele
     for (Index v : selection.vertices()) names.push_back(rims.name(*shown->mesh, v));
     outcome = session_->add_polygon(names);
   } else if (action == Action::toggle_sharp) {
-    // Smooth when every selected edge is sharp already, sharp otherwise.
+    // Smooth when every selected edge has the weight already, that weight otherwise.
     const auto& edges = selection.edges();
-    const bool are_all_sharp =
-        std::all_of(edges.begin(), edges.end(), [&](Index e) { return shown->mesh->edge(e).is_sharp; });
-    outcome = session_->set_sharp(*shown->mesh, edges, !are_all_sharp);
+    const float weight = std::min(sharpness, infinite_sharpness);
+    const bool have_weight = std::all_of(edges.begin(), edges.end(),
+                                         [&](Index e) { return shown->mesh->edge_sharpness(e) == weight; });
+    outcome = session_->set_sharp(*shown->mesh, edges, have_weight ? 0.0f : weight);
   } else if (action == Action::delete_faces) {
     outcome = session_->delete_faces(*shown->mesh, selection.faces());
   } else if (action == Action::zip) {

@@ -81,13 +81,13 @@ class SessionController {
   // An edit action (undo, redo, accept, clear, and on the shown scene or merged stage with the selection
   // on it: add-polygon, delete, zip with two borders); needs a session. Undo and redo go through the
   // one history of edits and slider moves. The log says what happened. Returns whether it applied. Rim
-  // vertices in the selection are named through `rims`.
+  // vertices in the selection are named through `rims`; toggle-sharp gives the selected edges `sharpness`.
   // Gives the instances (placement paths) a colour as one step of the history (report 8.4); logs and
   // returns false when refused (nothing selected, flat geometry).
   bool color_instances(const std::vector<std::string>& paths, Color color);
 
   bool edit(Action action, const StageResult* shown, const Selection& selection, const ZipperOptions& zipper,
-            const PickableRims& rims = {});
+            const PickableRims& rims = {}, float sharpness = infinite_sharpness);
 
   // The text pane's Apply (session_text.cpp): `text` evaluated as the file's content, the way a reload
   // after a save evaluates it (the edits and slider values kept). On an error the last good geometry

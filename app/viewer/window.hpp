@@ -170,6 +170,7 @@ class Window : private ScriptHost {
   void save(const std::filesystem::path& path) override { sessions_.save(path); }
   void set_subdivision(double levels) override;
   void set_offset(double distance) override;
+  void apply_setting(const std::string& name, const std::string& value) override;
   void quit() override { should_close_ = true; }
 
   Platform& platform_;
@@ -191,9 +192,10 @@ class Window : private ScriptHost {
   EditColors edit_colors_;
   glm::vec3 instance_color_{0.9f, 0.45f, 0.1f};
   ZipperOptions zipper_options_;
-  RimLines rim_lines_;          // the scene's, drawn over every stage and framed with the mesh
-  PickableRims rims_;           // rim_lines_ numbered after the shown mesh's vertices
-  glm::dvec3 shown_size_{0.0};  // the shown stage's bounding box
+  float sharpness_ = infinite_sharpness;  // the weight K gives the selected edges (the Edit section's)
+  RimLines rim_lines_;                    // the scene's, drawn over every stage and framed with the mesh
+  PickableRims rims_;                     // rim_lines_ numbered after the shown mesh's vertices
+  glm::dvec3 shown_size_{0.0};            // the shown stage's bounding box
   PanelVisibility panels_;
   TurntableMode turntable_;
   MeasureTool measure_;

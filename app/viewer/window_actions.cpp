@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -167,7 +168,7 @@ bool Window::edit(Action action) {
                std::to_string(selection_.borders().size()));
     return false;
   }
-  if (!sessions_.edit(action, stage_.shown(), selection_, zipper_options_, rims_)) return false;
+  if (!sessions_.edit(action, stage_.shown(), selection_, zipper_options_, rims_, sharpness_)) return false;
   // The picked elements went into the edit (or went away with it).
   if (is_on_selection) actions_.run(Action::clear_selection);
   return true;
@@ -278,6 +279,31 @@ void Window::set_offset(double distance) {
   }
   settings.offset_distance = distance;
   if (settings.stage != Stage::subdivided_offset) settings.stage = Stage::offset;
+}
+
+void Window::apply_setting(const std::string& name, const std::string& value) {
+  PipelineSettings& settings = stage_.settings();
+  const auto refuse = [&](const char* expected) {
+    throw InvalidInputError("setting " + name + ": expected " + expected + ", found '" + value + "'");
+  };
+  if (name == "creases") {
+    const auto method = parse_crease_method(value);
+    if (!method) refuse("uniform or chaikin");
+    settings.creases.method = *method;
+  } else if (name == "smooth-triangles") {
+    if (value != "on" && value != "off") refuse("on or off");
+    settings.creases.smooth_triangles = value == "on";
+  } else if (name == "border") {
+    const auto mode = parse_boundary_mode(value);
+    if (!mode) refuse("none, edge-only or edge-and-corner");
+    settings.boundary = *mode;
+  } else {
+    double weight = infinite_sharpness;
+    const char* end = value.data() + value.size();
+    const bool is_number = value != "infinite" && std::from_chars(value.data(), end, weight).ptr == end;
+    if (value != "infinite" && !(is_number && weight >= 0)) refuse("a weight of 0 or more, or infinite");
+    sharpness_ = float(std::min(weight, double(infinite_sharpness)));
+  }
 }
 
 }  // namespace nome::viewer

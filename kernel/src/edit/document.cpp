@@ -18,14 +18,25 @@ void erase_at(std::vector<T>& list, const std::vector<std::pair<size_t, T>>& rem
   for (auto it = removed.rbegin(); it != removed.rend(); ++it) list.erase(list.begin() + long(it->first));
 }
 
-// Adds the edges to `marked`, or takes them out.
-void mark_sharp(std::vector<std::pair<std::string, std::string>>& marked,
-                const std::vector<std::pair<std::string, std::string>>& edges, bool is_sharp) {
-  for (const auto& edge : edges) {
-    const auto at = std::find(marked.begin(), marked.end(), edge);
-    if (is_sharp && at == marked.end()) marked.push_back(edge);
-    if (!is_sharp && at != marked.end()) marked.erase(at);
+// Gives the edge (a, b) its weight among `marked`: 0 takes it out.
+void mark_sharp(std::vector<NamedSharpEdge>& marked, const std::string& a, const std::string& b,
+                float weight) {
+  const auto at = std::find_if(marked.begin(), marked.end(),
+                               [&](const NamedSharpEdge& e) { return e.a == a && e.b == b; });
+  if (at == marked.end()) {
+    if (weight > 0) marked.push_back({a, b, weight});
+  } else if (weight > 0) {
+    at->weight = weight;
+  } else {
+    marked.erase(at);
   }
+}
+
+std::string sharp_outcome(size_t count, float weight) {
+  const std::string what = weight == 0                    ? "marked smooth"
+                           : weight >= infinite_sharpness ? "marked sharp"
+                                                          : "given sharpness " + sharpness_text(weight);
+  return std::to_string(count) + (count == 1 ? " edge " : " edges ") + what;
 }
 
 template <typename T>
@@ -66,8 +77,7 @@ void Document::index_scene() {
 }
 
 void Document::load_edits(const std::vector<std::vector<std::string>>& consolidated,
-                          std::vector<std::string> deleted,
-                          std::vector<std::pair<std::string, std::string>> sharp_edges) {
+                          std::vector<std::string> deleted, std::vector<NamedSharpEdge> sharp_edges) {
   temporary_.clear();
   sharp_ = std::move(sharp_edges);
   consolidated_.clear();
@@ -188,9 +198,10 @@ EditOutcome Document::delete_faces(const std::vector<std::string>& face_names) {
   return {true, std::to_string(count) + (count == 1 ? " face" : " faces") + " deleted"};
 }
 
-EditOutcome Document::set_sharp(const std::vector<std::pair<std::string, std::string>>& edges,
-                                bool is_sharp) {
-  SetSharp command{{}, is_sharp};
+EditOutcome Document::set_sharp(const std::vector<std::pair<std::string, std::string>>& edges, float weight) {
+  if (!(weight >= 0)) return {false, "a sharpness is 0 or more, found " + sharpness_text(weight)};
+  weight = std::min(weight, infinite_sharpness);
+  SetSharp command;
   for (auto [a, b] : edges) {
     if (b < a) std::swap(a, b);
     const Index u = vertex_id(a), w = vertex_id(b);
@@ -198,21 +209,33 @@ EditOutcome Document::set_sharp(const std::vector<std::pair<std::string, std::st
     const std::string edge = "(" + a + ", " + b + ")";
     if (!scene_edge_faces_.count(edge_key(u, w)))
       return {false, edge + " is no edge of the scene's faces (an added face's edges cannot be sharp yet)"};
-    const bool is_in_text = std::any_of(scene_.sharp_edges.begin(), scene_.sharp_edges.end(), [&](auto p) {
-      return edge_key(p.first, p.second) == edge_key(u, w);
-    });
-    if (!is_sharp && is_in_text)
+    if (const float in_text = text_sharpness(u, w); in_text > 0) {
+      if (in_text == weight) continue;
       return {false, edge + " is sharp in the scene's text: change its `sharp` there"};
-    const bool is_marked =
-        is_in_text || std::find(sharp_.begin(), sharp_.end(), std::pair{a, b}) != sharp_.end();
-    if (is_marked != is_sharp) command.edges.emplace_back(a, b);
+    }
+    const auto marked = std::find_if(sharp_.begin(), sharp_.end(),
+                                     [&](const NamedSharpEdge& e) { return e.a == a && e.b == b; });
+    const float before = marked == sharp_.end() ? 0.0f : marked->weight;
+    if (before != weight) command.changes.push_back({a, b, before, weight});
   }
-  const size_t count = command.edges.size();
+  const size_t count = command.changes.size();
   if (count == 0)
-    return {false, std::string("the edges are ") + (is_sharp ? "sharp" : "smooth") + " already"};
+    return {false, "the edges are " +
+                       (weight == 0                    ? std::string("smooth")
+                        : weight >= infinite_sharpness ? std::string("sharp")
+                                                       : "of sharpness " + sharpness_text(weight)) +
+                       " already"};
   execute(std::move(command));
-  return {true, std::to_string(count) + (count == 1 ? " edge" : " edges") + " marked " +
-                    (is_sharp ? "sharp" : "smooth")};
+  return {true, sharp_outcome(count, weight)};
+}
+
+// The weight the scene's own text gives the edge (u, w): 0 when it marks it not.
+float Document::text_sharpness(Index u, Index w) const {
+  float weight = 0;
+  for (size_t i = 0; i < scene_.sharp_edges.size(); ++i)
+    if (edge_key(scene_.sharp_edges[i].first, scene_.sharp_edges[i].second) == edge_key(u, w))
+      weight = scene_.sharp_edge_weights.empty() ? infinite_sharpness : scene_.sharp_edge_weights[i];
+  return std::min(weight, infinite_sharpness);
 }
 
 void Document::execute(Command command) {
@@ -243,7 +266,7 @@ void Document::apply(const Command& command) {
   } else if (std::holds_alternative<ClearTemporary>(command)) {
     temporary_.clear();
   } else if (const auto* sharp = std::get_if<SetSharp>(&command)) {
-    mark_sharp(sharp_, sharp->edges, sharp->is_sharp);
+    for (const SetSharp::Change& c : sharp->changes) mark_sharp(sharp_, c.a, c.b, c.after);
   } else {
     const auto& del = std::get<DeleteFaces>(command);
     erase_at(temporary_, del.temporary);
@@ -261,7 +284,7 @@ void Document::revert(const Command& command) {
   } else if (const auto* clear = std::get_if<ClearTemporary>(&command)) {
     temporary_ = clear->faces;
   } else if (const auto* sharp = std::get_if<SetSharp>(&command)) {
-    mark_sharp(sharp_, sharp->edges, !sharp->is_sharp);
+    for (const SetSharp::Change& c : sharp->changes) mark_sharp(sharp_, c.a, c.b, c.before);
   } else {
     const auto& del = std::get<DeleteFaces>(command);
     deleted_.resize(deleted_.size() - del.scene_faces.size());
@@ -282,9 +305,9 @@ std::vector<UnresolvedEdit> Document::unresolved() const {
   }
   for (const std::string& name : deleted_)
     if (!face_ids_.count(name)) out.push_back({name, {}});
-  for (const auto& [a, b] : sharp_) {
-    UnresolvedEdit edit{"sharp (" + a + ", " + b + ")", {}};
-    for (const std::string* name : {&a, &b})
+  for (const NamedSharpEdge& e : sharp_) {
+    UnresolvedEdit edit{"sharp (" + e.a + ", " + e.b + ")", {}};
+    for (const std::string* name : {&e.a, &e.b})
       if (vertex_id(*name) == no_index) edit.missing.push_back(*name);
     if (!edit.missing.empty()) out.push_back(std::move(edit));
   }
@@ -299,11 +322,10 @@ PolygonSoup Document::scene_soup() const {
   soup.sharp_edges = scene_.sharp_edges;
   soup.sharp_edge_weights = scene_.sharp_edge_weights;
   soup.sharp_vertices = scene_.sharp_vertices;
-  for (const auto& [a, b] : sharp_) {
-    const Index u = vertex_id(a), w = vertex_id(b);
-    if (u == no_index || w == no_index || !scene_edge_faces_.count(edge_key(u, w))) continue;
-    if (!soup.sharp_edge_weights.empty()) soup.sharp_edge_weights.push_back(infinite_sharpness);
-    soup.sharp_edges.emplace_back(u, w);
+  for (const NamedSharpEdge& e : sharp_) {
+    const Index u = vertex_id(e.a), w = vertex_id(e.b);
+    if (u != no_index && w != no_index && scene_edge_faces_.count(edge_key(u, w)))
+      soup.add_sharp_edge(u, w, e.weight);
   }
   const std::unordered_set<Index> holes(scene_.hole_faces.begin(), scene_.hole_faces.end());
   for (Index f = 0; f < scene_.num_faces(); ++f) {

@@ -29,7 +29,7 @@ void SceneDocument::set_scene(scene::Scene scene) {
   for (std::vector<std::string>& face : consolidated)
     for (std::string& name : face) name = scene.resolve_vertex_name(name);
   std::vector<std::string> deleted = scene.deleted_faces();
-  std::vector<std::pair<std::string, std::string>> sharp = scene.sharp_edits();
+  std::vector<NamedSharpEdge> sharp = scene.sharp_edits();
   scene.set_consolidated_faces({});
   scene.set_deleted_faces({});
   scene.set_sharp_edits({});
@@ -84,7 +84,7 @@ void SceneDocument::apply_anom(std::string_view text, const std::string& file) {
   scene::Scene next = *scene_;
   next.apply_anom(text, file);
   std::vector<std::string> deleted = document_.deleted_faces();
-  std::vector<std::pair<std::string, std::string>> sharp = document_.sharp_edges();
+  std::vector<NamedSharpEdge> sharp = document_.sharp_edges();
   set_scene(std::move(next));
   std::vector<std::vector<std::string>> consolidated;
   for (const EditedFace& face : document_.consolidated_faces()) consolidated.push_back(face.vertices);
@@ -136,9 +136,9 @@ scene::Scene SceneDocument::scene_for_saving(std::vector<std::string>* left_out)
   std::vector<std::string> deleted;
   for (const std::string& name : document_.deleted_faces())
     if (keep(name)) deleted.push_back(name);
-  std::vector<std::pair<std::string, std::string>> sharp;
-  for (const auto& [a, b] : document_.sharp_edges())
-    if (keep("sharp (" + a + ", " + b + ")")) sharp.emplace_back(a, b);
+  std::vector<NamedSharpEdge> sharp;
+  for (const NamedSharpEdge& e : document_.sharp_edges())
+    if (keep("sharp (" + e.a + ", " + e.b + ")")) sharp.push_back(e);
   if (left_out) *left_out = std::move(skipped);
 
   scene::Scene out = *scene_;

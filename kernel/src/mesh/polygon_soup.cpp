@@ -50,6 +50,14 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   for (Index f : part.hole_faces) into.hole_faces.push_back(f + face_base);
 }
 
+void PolygonSoup::add_sharp_edge(Index a, Index b, float weight) {
+  if (weight != infinite_sharpness || !sharp_edge_weights.empty()) {
+    sharp_edge_weights.resize(sharp_edges.size(), infinite_sharpness);
+    sharp_edge_weights.push_back(weight);
+  }
+  sharp_edges.emplace_back(a, b);
+}
+
 void PolygonSoup::note_origin(const std::string& where) {
   const Index next = num_faces();
   if (face_origins.empty() ? where.empty() : face_origins.back().where == where) return;

@@ -48,14 +48,9 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
   }
   for (size_t i = 0; i < s.sharp_edges.size(); ++i) {
     const auto [a, b] = s.sharp_edges[i];
-    if (new_id[a] == no_index || new_id[b] == no_index) continue;
-    if (!s.sharp_edge_weights.empty()) {
-      out.soup.sharp_edge_weights.resize(out.soup.sharp_edges.size(), infinite_sharpness);
-      out.soup.sharp_edge_weights.push_back(s.sharp_edge_weights[i]);
-    } else if (!out.soup.sharp_edge_weights.empty()) {
-      out.soup.sharp_edge_weights.push_back(infinite_sharpness);
-    }
-    out.soup.sharp_edges.emplace_back(new_id[a], new_id[b]);
+    if (new_id[a] != no_index && new_id[b] != no_index)
+      out.soup.add_sharp_edge(new_id[a], new_id[b],
+                              s.sharp_edge_weights.empty() ? infinite_sharpness : s.sharp_edge_weights[i]);
   }
   for (auto [v, w] : s.sharp_vertices)
     if (new_id[v] != no_index) out.soup.sharp_vertices.emplace_back(new_id[v], w);
@@ -65,26 +60,6 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
     out.rims.push_back(std::move(rim));
   }
   return has_color;
-}
-
-// The named vertex pairs that are edges of the soup's faces, marked sharp; the others (a slider took a
-// vertex away) are left out.
-void mark_sharp_edges(PolygonSoup& soup, const std::vector<std::pair<std::string, std::string>>& edges) {
-  std::unordered_map<std::string, Index> ids;
-  for (Index v = 0; v < soup.vertex_names.size(); ++v) ids.emplace(soup.vertex_names[v], v);
-  std::unordered_set<std::uint64_t> face_edges;
-  const auto key = [](Index u, Index w) { return (std::uint64_t(std::min(u, w)) << 32) | std::max(u, w); };
-  for (Index f = 0; f < soup.num_faces(); ++f) {
-    const Index b = soup.face_offsets[f], e = soup.face_offsets[f + 1];
-    for (Index c = b; c < e; ++c)
-      face_edges.insert(key(soup.face_vertices[c], soup.face_vertices[c + 1 == e ? b : c + 1]));
-  }
-  for (const auto& [a, b] : edges) {
-    const auto u = ids.find(a), w = ids.find(b);
-    if (u == ids.end() || w == ids.end() || !face_edges.count(key(u->second, w->second))) continue;
-    if (!soup.sharp_edge_weights.empty()) soup.sharp_edge_weights.push_back(infinite_sharpness);
-    soup.sharp_edges.emplace_back(u->second, w->second);
-  }
 }
 
 }  // namespace
@@ -137,7 +112,7 @@ Buffer<Vec3> Scene::combined_positions() const {
 PolygonSoup Scene::combined_soup() const {
   PolygonSoup out;
   for (const SceneInstance& i : instances_) append_soup(out, i.geometry.soup);
-  if (!sharp_edits_.empty()) mark_sharp_edges(out, sharp_edits_);
+  add_sharpness(out);
   return out;
 }
 

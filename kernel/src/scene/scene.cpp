@@ -182,6 +182,7 @@ void Scene::build(std::vector<Diagnostic>& errors) {
   deleted_ = resolve_deleted(ast_.deleted_faces, errors);
   resolve_sharp_edits(errors);
   assemble_all();
+  resolve_text_sharps(errors);
 }
 
 std::optional<Index> Scene::find_parameter(const std::string& name) const {
@@ -231,6 +232,10 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
   for (Index i : remade) backup.emplace_back(placements_[i].world, placements_[i].reads);
   std::vector<Diagnostic> errors;
   const auto over_budget = evaluate_all(remade, errors);
+  // A `sharp` weight that reads the slider changes the soup's creases: the soup is made again.
+  const bool moves_sharpness =
+      std::binary_search(text_sharp_reads_.begin(), text_sharp_reads_.end(), parameter);
+  if (moves_sharpness) check_text_sharp_weights(errors);
   if (!errors.empty() || over_budget) {
     // The scene keeps the previous value and geometry.
     values_[parameter] = old_value;
@@ -244,7 +249,7 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
     if (over_budget) throw BudgetError(*over_budget);
     throw SceneError(std::move(errors));
   }
-  has_only_moved_vertices_ = remade.empty();
+  has_only_moved_vertices_ = remade.empty() && !moves_sharpness;
   std::vector<Index> tops, remade_tops;
   for (Index i : remade) remade_tops.push_back(placements_[i].top);
   sort_unique(remade_tops);
@@ -278,11 +283,11 @@ void Scene::set_consolidated_faces(std::vector<std::vector<std::string>> faces) 
   *this = std::move(next);
 }
 
-void Scene::set_sharp_edits(const std::vector<std::pair<std::string, std::string>>& edges) {
+void Scene::set_sharp_edits(const std::vector<NamedSharpEdge>& edges) {
   Scene next = *this;
   next.ast_.sharp_edges.clear();
-  for (const auto& [a, b] : edges)
-    next.ast_.sharp_edges.push_back({{{normalize_name(a), {}}, {normalize_name(b), {}}}, {}});
+  for (const NamedSharpEdge& e : edges)
+    next.ast_.sharp_edges.push_back({{{{normalize_name(e.a), {}}, {normalize_name(e.b), {}}}, {}}, e.weight});
   std::vector<Diagnostic> errors;
   next.resolve_sharp_edits(errors);
   if (!errors.empty()) throw SceneError(std::move(errors));

@@ -37,6 +37,7 @@ StatementKind group_statement();
 StatementKind instance_statement();
 StatementKind delete_statement();
 StatementKind consolidate_statement();
+StatementKind sharp_statement();
 StatementKind sharp_edges_statement();
 StatementKind include_statement();
 StatementKind subdivision_statement();
@@ -92,6 +93,7 @@ std::span<const StatementKind> statement_kinds() {
       instance_statement(),      // a top-level instance: a root of the scene
       delete_statement(),        // faces deleted by name
       consolidate_statement(),   // the consolidated mesh
+      sharp_statement(),         // creases and corners over instances' vertices, by path
       sharp_edges_statement(),   // edges marked sharp in the viewer
       include_statement(),       // successor: another file's statements
       subdivision_statement(),   // successor: root instances and the subdivision levels

@@ -70,12 +70,12 @@ std::vector<Index> Scene::parameters_of_vertex(const std::string& name) const {
 
 void Scene::resolve_sharp_edits(std::vector<Diagnostic>& errors) {
   sharp_edits_.clear();
-  for (const NamedFace& edge : ast_.sharp_edges) {
-    const VertexRef* a = lookup_vertex(edge.vertices[0], errors);
-    const VertexRef* b = lookup_vertex(edge.vertices[1], errors);
+  for (const SharpEdgeDecl& edge : ast_.sharp_edges) {
+    const VertexRef* a = lookup_vertex(edge.edge.vertices[0], errors);
+    const VertexRef* b = lookup_vertex(edge.edge.vertices[1], errors);
     if (a && b)
-      sharp_edits_.emplace_back(placements_[a->placement].world.soup.vertex_names[a->vertex],
-                                placements_[b->placement].world.soup.vertex_names[b->vertex]);
+      sharp_edits_.push_back({placements_[a->placement].world.soup.vertex_names[a->vertex],
+                              placements_[b->placement].world.soup.vertex_names[b->vertex], edge.weight});
   }
 }
 

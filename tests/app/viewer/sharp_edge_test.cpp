@@ -40,12 +40,12 @@ std::pair<glm::dvec2, std::pair<std::string, std::string>> clickable_edge(const 
   return {};
 }
 
-Buffer<Vec3> edge_mode_subdivided(const SceneDocument& doc) {
+Buffer<Vec3> edge_mode_subdivided(const SceneDocument& doc, int levels = 1) {
   Pipeline pipeline;
   pipeline.set_input(doc.pipeline_input());
   PipelineSettings s;
   s.stage = Stage::subdivided;
-  s.subdivision_levels = 1;
+  s.subdivision_levels = levels;
   return pipeline.run(s).positions();
 }
 
@@ -78,7 +78,45 @@ TEST_CASE(
   const SceneDocument back = SceneDocument::from_scene(read_scene(dir + "/sharp.nome"));
   auto edge = names;
   if (edge.second < edge.first) std::swap(edge.first, edge.second);
-  CHECK(back.edits().sharp_edges() == std::vector<std::pair<std::string, std::string>>{edge});
+  CHECK(back.edits().sharp_edges() == std::vector<NamedSharpEdge>{{edge.first, edge.second}});
   const SceneDocument plain = SceneDocument::from_scene(read_scene(dir + "/cube.nome"));
   CHECK(edge_mode_subdivided(back) != edge_mode_subdivided(plain));
+}
+
+TEST_CASE(
+    "K gives an edge the Edit section's sharpness, undo gives back the weight before, and the saved "
+    "weight subdivides as the text's sharp",
+    "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("sharp_weight");
+  std::ofstream(dir + "/cube.nome") << edge_mode_cube_text;
+  const Mesh mesh = glue_faces(read_scene(dir + "/cube.nome").combined_soup()).mesh;
+  const auto [pixel, names] = clickable_edge(mesh);
+  viewer::ViewerOptions options;
+  options.file = dir + "/cube.nome";
+  options.script = nome::test::write_script(
+      dir, "view 30 25\nmode edge\nclick " + std::to_string(int(pixel.x)) + " " +
+               std::to_string(int(pixel.y)) + "\nsetting sharpness 2.5\nkey K\nmode edge\nclick " +
+               std::to_string(int(pixel.x)) + " " + std::to_string(int(pixel.y)) +
+               "\nsetting sharpness 1\nkey K\nkey Ctrl+Z\nsave " + dir + "/weighted.nome\nquit\n");
+  nome::test::TestViewer viewer(options);
+  CHECK(viewer.run() == 0);
+  const std::string log = viewer.messages();
+  CHECK_THAT(log, Catch::Contains("sharp: 1 edge given sharpness 2.5"));
+  CHECK_THAT(log,
+             Catch::Contains("edge (" + names.first + ", " + names.second + "), sharpness 2.5, selected"));
+  CHECK_THAT(log, Catch::Contains("sharp: 1 edge given sharpness 1"));
+  // After the undo the shown mesh has the edge at 2.5 again.
+  const Mesh& shown = *viewer.window().shown()->mesh;
+  std::vector<float> weights;
+  for (Index e = 0; e < shown.num_edges(); ++e)
+    if (shown.edge_sharpness(e) > 0) weights.push_back(shown.edge_sharpness(e));
+  CHECK(weights == std::vector<float>{2.5f});
+
+  // The same edge made sharp 2.5 in the text (the mesh's vertices are the instance's without `k_`).
+  std::string text = edge_mode_cube_text;
+  text.replace(text.find("endmesh"), 0,
+               "  sharp 2.5 (" + names.first.substr(2) + " " + names.second.substr(2) + ") endsharp\n");
+  const SceneDocument back = SceneDocument::from_scene(read_scene(dir + "/weighted.nome"));
+  const SceneDocument in_text = SceneDocument::from_scene(scene::Scene::from_text(text, "t.nome"));
+  CHECK(edge_mode_subdivided(back, 3) == edge_mode_subdivided(in_text, 3));
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/mesh/named_sharp_edge.hpp"
 #include "nome/ops/pipeline_input.hpp"
 #include "nome/ops/zipper.hpp"
 
@@ -50,7 +51,7 @@ class Document {
   // The consolidated faces (vertex names) and deleted face names read from a saved file; clears the
   // temporary mesh and the undo history.
   void load_edits(const std::vector<std::vector<std::string>>& consolidated, std::vector<std::string> deleted,
-                  std::vector<std::pair<std::string, std::string>> sharp_edges = {});
+                  std::vector<NamedSharpEdge> sharp_edges = {});
 
   // Adds a polygon through the named vertices, in order, to the temporary mesh. Refused if a vertex is
   // unknown or repeated or an edge already has two faces. Reversed if most of its edges that already
@@ -75,12 +76,13 @@ class Document {
   EditOutcome zip_chains(const std::vector<std::string>& chain_a, const std::vector<std::string>& chain_b,
                          const ZipperOptions& options = {});
 
-  // Marks (or unmarks) the edges between the named vertex pairs sharp: infinitely sharp creases for
-  // subdivision. Refused when a pair is no edge of the scene's faces, or, unmarking, when the edge is sharp
-  // in the scene's own text (its `sharp` is changed there).
-  EditOutcome set_sharp(const std::vector<std::pair<std::string, std::string>>& edges, bool is_sharp);
-  // The edges marked sharp by edits, as vertex-name pairs (the smaller name first).
-  const std::vector<std::pair<std::string, std::string>>& sharp_edges() const { return sharp_; }
+  // Gives the edges between the named vertex pairs a crease weight for subdivision (OpenSubdiv's sharpness:
+  // 0 smooth, which unmarks them; infinite_sharpness and up infinitely sharp). Refused when a pair is no
+  // edge of the scene's faces, or when the edge is sharp in the scene's own text with another weight (its
+  // `sharp` is changed there). Undo gives each edge its weight from before.
+  EditOutcome set_sharp(const std::vector<std::pair<std::string, std::string>>& edges, float weight);
+  // The edges marked sharp by edits, as vertex-name pairs (the smaller name first) with their weights.
+  const std::vector<NamedSharpEdge>& sharp_edges() const { return sharp_; }
 
   bool can_undo() const { return done_ > 0; }
   bool can_redo() const { return done_ < history_.size(); }
@@ -116,9 +118,13 @@ class Document {
     std::vector<std::pair<size_t, EditedFace>> temporary;  // with their former positions
     std::vector<std::pair<size_t, EditedFace>> consolidated;
   };
+  // The edges the command changes, each with its weight before and after (0: not marked).
   struct SetSharp {
-    std::vector<std::pair<std::string, std::string>> edges;  // those the command changes
-    bool is_sharp;
+    struct Change {
+      std::string a, b;
+      float before, after;
+    };
+    std::vector<Change> changes;
   };
   using Command = std::variant<AddTemporary, Accept, ClearTemporary, DeleteFaces, SetSharp>;
 
@@ -132,6 +138,7 @@ class Document {
   void apply(const Command& command);
   void revert(const Command& command);
   void index_scene();
+  float text_sharpness(Index u, Index w) const;
   std::vector<EdgeUse> uses_of(Index u, Index w) const;
   // Why a new face cannot be added next to the current faces plus `pending` (faces of the same edit),
   // or empty; with `orient`, reverses it where its neighbours disagree with it.
@@ -153,7 +160,7 @@ class Document {
   std::vector<EditedFace> temporary_;
   std::vector<EditedFace> consolidated_;
   std::vector<std::string> deleted_;
-  std::vector<std::pair<std::string, std::string>> sharp_;
+  std::vector<NamedSharpEdge> sharp_;
   std::vector<Command> history_;
   size_t done_ = 0;  // history_[0, done_) is applied; the rest can be redone
   std::size_t face_counter_ = 0;

@@ -47,6 +47,8 @@ struct PolygonSoup {
   Index add_face(std::initializer_list<Index> vertices) {
     return add_face<std::initializer_list<Index>>(vertices);
   }
+  // Marks the edge (a, b) sharp with `weight`; the weights stay empty while every mark is infinitely sharp.
+  void add_sharp_edge(Index a, Index b, float weight = infinite_sharpness);
   // The faces added from now on come from `where` (an empty text on a soup without origins adds none).
   void note_origin(const std::string& where);
   // Where face f was made; empty when unknown.

@@ -89,12 +89,15 @@ struct GeneratorDecl {
   std::vector<FunctionText> functions;
 };
 
-// `sharp [weight] (v1 v2 ...) ... endsharp` inside a mesh: the chain of edges v1-v2, v2-v3, ... is sharp;
-// a single vertex is a sharp corner. The weight is OpenSubdiv's crease sharpness (none: infinite).
+// `sharp [weight] (v1 v2 ...) ... endsharp` inside a mesh or at the top level (naming instances' vertices by
+// path): the chain of edges v1-v2, v2-v3, ... is sharp; a single vertex is a sharp corner. The weight is
+// OpenSubdiv's crease sharpness (none: infinite). `sharp [weight] border (v ...) endsharp` (top level):
+// the whole border of each named vertex's own instance through it (a funnel's rim).
 struct SharpDecl {
   std::vector<Name> vertices;
   SourceLocation location;
   std::optional<Value> weight = std::nullopt;
+  bool is_border = false;
 };
 
 // `controlpoint NAME point P [scale (sx sy sz)] [rotate (rx ry rz)] [crosssection C] [reverse]
@@ -212,6 +215,12 @@ struct NamedFace {
   SourceLocation location;
 };
 
+// `sharpedges [weight] (a b) ... endsharpedges`: an edge marked sharp in the viewer, with its weight.
+struct SharpEdgeDecl {
+  NamedFace edge;  // two vertices
+  float weight = infinite_sharpness;
+};
+
 // One parsed .nome text. Definitions are resolved by name, so their order does not matter.
 struct SceneAst {
   std::string file;
@@ -232,7 +241,8 @@ struct SceneAst {
   std::vector<InstanceDecl> instances;  // top-level: the scene's roots
   std::vector<Name> deleted_faces;      // `delete face NAME endface ... enddelete`
   std::vector<NamedFace> consolidated_faces;
-  std::vector<NamedFace> sharp_edges;  // `sharpedges (a b) ... endsharpedges`: two vertices each
+  std::vector<SharpEdgeDecl> sharp_edges;  // `sharpedges [weight] (a b) ... endsharpedges`
+  std::vector<SharpDecl> sharps;           // top-level `sharp ... endsharp`: instances' vertices by path
   std::vector<StageDecl> stages;
   std::vector<Name> boundary_modes;                  // `boundary MODE endboundary`: subdivision at the border
   std::optional<PrintPlacementOptions> print_setup;  // `printsetup ... endprintsetup`: print preparation

@@ -10,6 +10,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "nome/mesh/named_sharp_edge.hpp"
 #include "nome/ops/boundary_mode.hpp"
 #include "nome/scene/ast.hpp"
 #include "nome/scene/piece.hpp"
@@ -135,11 +136,12 @@ class Scene {
   const std::vector<std::string>& deleted_faces() const { return deleted_; }
   void set_deleted_faces(std::vector<std::string> faces);
 
-  // Edges marked sharp in the viewer (`sharpedges (a b) ... endsharpedges`) as full vertex-name pairs;
-  // combined_soup() marks those that are edges of its faces. Setting them resolves the names (SceneError
-  // listing unknown or ambiguous ones; nothing changes then).
-  const std::vector<std::pair<std::string, std::string>>& sharp_edits() const { return sharp_edits_; }
-  void set_sharp_edits(const std::vector<std::pair<std::string, std::string>>& edges);
+  // Edges marked sharp in the viewer (`sharpedges [w] (a b) ... endsharpedges`) as full vertex-name pairs
+  // with their weights; combined_soup() marks those that are edges of its faces, after the text's own
+  // `sharp` statements. Setting them resolves the names (SceneError listing unknown or ambiguous ones;
+  // nothing changes then).
+  const std::vector<NamedSharpEdge>& sharp_edits() const { return sharp_edits_; }
+  void set_sharp_edits(const std::vector<NamedSharpEdge>& edges);
 
   // The full hierarchical name of the vertex a (possibly shortened) name refers to. Throws SceneError
   // naming the candidates when the name is unknown or ambiguous.
@@ -254,6 +256,15 @@ class Scene {
   std::vector<std::string> resolve_deleted(const std::vector<Name>& names, std::vector<Diagnostic>& errors);
   void resolve_sharp_edits(std::vector<Diagnostic>& errors);
 
+  // scene_sharpness.cpp: the top-level `sharp` statements resolved to full vertex names (a border's vertex
+  // with its placement, whose border is walked when the soup is made), and the sliders their weights read.
+  void resolve_text_sharps(std::vector<Diagnostic>& errors);
+  // A weight must evaluate to 0 or more (`reads` collects the sliders it reads).
+  void check_weight(const SharpDecl& s, std::vector<Diagnostic>& errors, std::vector<Index>* reads) const;
+  void check_text_sharp_weights(std::vector<Diagnostic>& errors) const;
+  // Marks the text's top-level creases and corners, then the viewer's sharp edits, on the combined soup.
+  void add_sharpness(PolygonSoup& soup) const;
+
   // assembly.cpp: the placements of one top-level instance joined into its geometry.
   void assemble(Index top);
   void assemble_all();
@@ -278,7 +289,14 @@ class Scene {
   std::vector<std::vector<std::string>> consolidated_;
   std::string consolidated_file_;  // where the consolidated faces' names are located, if not in file()
   std::vector<std::string> deleted_;
-  std::vector<std::pair<std::string, std::string>> sharp_edits_;
+  std::vector<NamedSharpEdge> sharp_edits_;
+  struct TextSharp {
+    Index decl;                         // of ast_.sharps
+    std::vector<std::string> vertices;  // full names
+    Index placement = no_index;         // a border's: the placement whose border it is
+  };
+  std::vector<TextSharp> text_sharps_;
+  std::vector<Index> text_sharp_reads_;  // sorted
   std::size_t placement_evaluations_ = 0;
   std::size_t vertex_moves_ = 0;
   bool has_only_moved_vertices_ = false;

@@ -4,30 +4,10 @@
 #include "scene/definition_context.hpp"
 #include "scene/scene_writer.hpp"
 #include "scene/statement_parser.hpp"
+#include "scene/statements/sharp_syntax.hpp"
 
 namespace nome::scene {
 namespace {
-
-// `sharp [weight] (chain) [(chain) ...] endsharp`: one SharpDecl per chain, each with the weight.
-void sharp(StatementParser& parser, std::vector<SharpDecl>& out) {
-  parser.set_statement_end("endsharp");
-  const Token opener = parser.take();
-  std::optional<Value> weight;
-  if (!parser.peek().is_symbol("(")) {
-    weight = parser.value();
-    parser.note_dialect(Dialect::jipcad, "a sharpness weight", weight->location);
-  }
-  do {
-    SharpDecl s{{}, parser.peek().location, weight};
-    s.vertices = parser.name_list("a vertex name or ')'");
-    if (s.vertices.empty())
-      parser.diagnostics().error(s.location,
-                                 "sharp needs a vertex (a corner) or a chain of vertices (edges)");
-    out.push_back(std::move(s));
-  } while (parser.peek().is_symbol("("));
-  if (out.empty()) parser.fail(opener, "a vertex list");
-  parser.expect_word("endsharp");
-}
 
 void parse_mesh(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
@@ -41,7 +21,7 @@ void parse_mesh(StatementParser& parser, Index kind) {
       if (parser.peek().is_word("face")) {
         m.faces.push_back(parser.face_statement());
       } else if (parser.peek().is_word("sharp")) {
-        sharp(parser, m.sharps);
+        parse_sharp(parser, m.sharps, false);
       } else if (parser.peek().is_word("point")) {
         // The successor's meshes may define their points inside (kleinbottle.nom): names stay global.
         const Index point = *find_statement_kind("point");
@@ -60,9 +40,7 @@ void save_mesh(SceneWriter& writer, Index) {
   for (const MeshDecl& m : writer.ast().meshes) {
     writer.out() << "mesh " << m.name.text << "\n";
     for (const FaceDecl& f : m.faces) writer.face(f, "    ");
-    for (const SharpDecl& s : m.sharps)
-      writer.out() << "    sharp " << (s.weight ? writer.values(&*s.weight, 1) + " " : "") << "("
-                   << writer.names(s.vertices) << ") endsharp\n";
+    save_sharps(writer, m.sharps, "    ");
     writer.out() << "endmesh\n";
   }
 }
@@ -86,10 +64,7 @@ Piece evaluate_mesh(DefinitionContext& context, Index decl) {
     }
     for (size_t i = 0; i + 1 < s.vertices.size(); ++i) {
       const Index a = context.vertex(s.vertices[i]), b = context.vertex(s.vertices[i + 1]);
-      if (a == no_index || b == no_index) continue;
-      soup.sharp_edge_weights.resize(soup.sharp_edges.size(), infinite_sharpness);
-      soup.sharp_edges.emplace_back(a, b);
-      soup.sharp_edge_weights.push_back(weight);
+      if (a != no_index && b != no_index) soup.add_sharp_edge(a, b, weight);
     }
   }
   return std::move(context.piece());

@@ -55,29 +55,43 @@ void save_consolidate(SceneWriter& writer, Index) {
   writer.out() << "endconsolidate\n";
 }
 
-// `sharpedges (a b) (c d) ... endsharpedges`.
+// `sharpedges [w] (a b) [w] (c d) ... endsharpedges`: a weight is the sharpness of the one pair after it
+// (none: infinitely sharp).
 void parse_sharp_edges(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   parser.take();
   while (!parser.peek().is_word(end)) {
+    SharpEdgeDecl edge;
+    if (!parser.peek().is_symbol("(")) {
+      const Value weight = parser.literal_value();
+      if (weight.literal < 0)
+        parser.diagnostics().error(weight.location,
+                                   "a sharpness is 0 or more, found " + format_number(weight.literal));
+      edge.weight = float(weight.literal);
+    }
     const SourceLocation at = parser.peek().location;
     std::vector<Name> pair = parser.name_list("a vertex name or ')'");
     if (pair.size() != 2) {
       parser.diagnostics().error(at, "a sharp edge is two vertices, found " + std::to_string(pair.size()));
       continue;
     }
-    parser.ast().sharp_edges.push_back({std::move(pair), at});
+    edge.edge = {std::move(pair), at};
+    parser.ast().sharp_edges.push_back(std::move(edge));
   }
   parser.take();
 }
 
 // By full hierarchical names, as the scene resolved them.
 void save_sharp_edges(SceneWriter& writer, Index) {
-  const auto& edges = writer.scene().sharp_edits();
+  const std::vector<NamedSharpEdge>& edges = writer.scene().sharp_edits();
   if (edges.empty()) return;
   writer.out() << "sharpedges";
-  for (const auto& [a, b] : edges) writer.out() << "\n    (" << a << " " << b << ")";
+  for (const NamedSharpEdge& e : edges) {
+    writer.out() << "\n    ";
+    if (e.weight < infinite_sharpness) writer.out() << sharpness_text(e.weight) << " ";
+    writer.out() << "(" << e.a << " " << e.b << ")";
+  }
   writer.out() << "\nendsharpedges\n";
 }
 
