@@ -44,7 +44,10 @@ void ScriptRunner::step(ScriptHost& host, MessageLog& log) {
   has_failed_ = true;
 }
 
-bool run_command(ScriptHost& host, const ScriptCommand& c) {
+namespace {
+
+// What a person does with the mouse and keys.
+bool run_input_command(ScriptHost& host, const ScriptCommand& c) {
   using Kind = ScriptCommand::Kind;
   const glm::dvec2 pixel = c.numbers.size() == 2 ? glm::dvec2(c.numbers[0], c.numbers[1]) : glm::dvec2(0.0);
   switch (c.kind) {
@@ -54,8 +57,6 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::click:
       host.click(pixel);
       return true;
-    case Kind::color:
-      return host.color_instances(glm::vec3(c.numbers[0], c.numbers[1], c.numbers[2]));
     case Kind::double_click:
       return host.double_click(pixel);
     case Kind::drop:
@@ -71,6 +72,23 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::view:
       host.set_view(c.numbers[0], c.numbers[1]);
       return true;
+    case Kind::scroll:
+      host.scroll(panel_named(c.words[0]), c.numbers[0]);
+      return true;
+    case Kind::log_click:
+      return host.click_log(int(c.numbers[0]));
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+bool run_command(ScriptHost& host, const ScriptCommand& c) {
+  using Kind = ScriptCommand::Kind;
+  switch (c.kind) {
+    case Kind::color:
+      return host.color_instances(glm::vec3(c.numbers[0], c.numbers[1], c.numbers[2]));
     case Kind::screenshot:
       host.take_screenshot(c.words[0]);
       return true;
@@ -98,20 +116,26 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::layout:
       host.print_layout();
       return true;
-    case Kind::scroll:
-      host.scroll(panel_named(c.words[0]), c.numbers[0]);
-      return true;
     case Kind::state:
       host.print_state();
       return true;
     case Kind::text_set:
       host.set_text(c.words[0]);
       return true;
-    case Kind::log_click:
-      return host.click_log(int(c.numbers[0]));
     case Kind::quit:
       host.quit();
       return true;
+    case Kind::mode:
+    case Kind::click:
+    case Kind::double_click:
+    case Kind::drop:
+    case Kind::prompt:
+    case Kind::key:
+    case Kind::action:
+    case Kind::view:
+    case Kind::scroll:
+    case Kind::log_click:
+      return run_input_command(host, c);
   }
   return false;
 }
