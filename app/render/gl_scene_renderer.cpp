@@ -11,7 +11,15 @@ namespace {
 
 class GlSceneRenderer final : public SceneRenderer {
  public:
-  void set_mesh(const MeshDisplayData& data) override { buffers_ = std::make_unique<MeshBuffers>(data); }
+  void set_mesh(const MeshDisplayData& data) override {
+    // The same topology (a slider that moved vertices): positions, normals and colours in place.
+    if (buffers_ && &buffers_->topology() == data.topology.get()) {
+      buffers_->update_positions(data.positions);
+      buffers_->set_face_colors(data.face_colors);
+    } else {
+      buffers_ = std::make_unique<MeshBuffers>(data);
+    }
+  }
   void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) override {
     if (buffers_) buffers_->set_face_colors(colors);
   }

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 
 #include "nome/mesh/types.hpp"
@@ -10,9 +11,11 @@
 
 namespace nome::render {
 
-// A mesh on the GPU: the corner vertices and triangles, the edge segments, and two per-face tables
-// (colour, selection flags) that the viewer updates without re-uploading the geometry. Needs a current
-// context for its whole life.
+// A mesh on the GPU: its topology (corners naming their vertex and face, triangles, edge segments), the
+// positions and normals that the corners read from buffer textures, and two per-face tables (colour,
+// selection flags). Positions, normals and tables are updated in place (glBufferSubData into the buffers
+// already there): a slider that moves vertices uploads three floats per vertex and per face, nothing
+// per corner. Needs a current context for its whole life.
 class MeshBuffers {
  public:
   explicit MeshBuffers(const MeshDisplayData& data);
@@ -20,6 +23,10 @@ class MeshBuffers {
   MeshBuffers(const MeshBuffers&) = delete;
   MeshBuffers& operator=(const MeshBuffers&) = delete;
 
+  // The topology uploaded: data of the same one can take update_positions().
+  const DisplayTopology& topology() const { return *topology_; }
+  // New positions and normals for the same topology; throws InvalidInputError when the counts differ.
+  void update_positions(const DisplayPositions& positions);
   // Replaces the per-face colours (RGBA; alpha 0 = the display's front colour); one per face.
   void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors);
   // Marks these faces selected (tinted); all others unselected.
@@ -27,22 +34,26 @@ class MeshBuffers {
 
   GLuint surface_vao() const { return surface_vao_; }
   GLuint edge_vao() const { return edge_vao_; }
-  GLsizei triangle_index_count() const { return triangle_index_count_; }
-  SegmentRange all_edges() const { return all_edges_; }
-  SegmentRange mobius_edges() const { return mobius_edges_; }
-  SegmentRange border_edges() const { return border_edges_; }
+  GLsizei triangle_index_count() const { return GLsizei(topology_->triangles.size()); }
+  SegmentRange all_edges() const { return topology_->all_edges; }
+  SegmentRange mobius_edges() const { return topology_->mobius_edges; }
+  SegmentRange border_edges() const { return topology_->border_edges; }
   GLuint face_color_texture() const { return face_color_texture_; }
   GLuint face_flag_texture() const { return face_flag_texture_; }
+  // Three floats per vertex / per face (R32F buffer textures).
+  GLuint position_texture() const { return textures_[0]; }
+  GLuint vertex_normal_texture() const { return textures_[1]; }
+  GLuint face_normal_texture() const { return textures_[2]; }
   const BoundingBox& bounds() const { return bounds_; }
 
  private:
-  std::uint32_t num_faces_;
+  std::shared_ptr<const DisplayTopology> topology_;
   GLuint surface_vao_ = 0, edge_vao_ = 0;
-  std::array<GLuint, 8> buffers_{};  // positions, normals x2, faces, triangles, vertices, segments, spare
+  // positions, vertex normals, face normals, corner vertices, corner faces, triangles, segments
+  std::array<GLuint, 7> buffers_{};
+  std::array<GLuint, 3> textures_{};  // over the first three buffers
   GLuint face_color_buffer_ = 0, face_flag_buffer_ = 0;
   GLuint face_color_texture_ = 0, face_flag_texture_ = 0;
-  GLsizei triangle_index_count_ = 0;
-  SegmentRange all_edges_, mobius_edges_, border_edges_;
   BoundingBox bounds_;
 };
 

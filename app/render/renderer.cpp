@@ -86,6 +86,14 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_BUFFER, mesh.face_flag_texture());
     p.set("face_flags", 1);
+    const std::pair<const char*, GLuint> vectors[] = {{"positions", mesh.position_texture()},
+                                                      {"vertex_normals", mesh.vertex_normal_texture()},
+                                                      {"face_normals", mesh.face_normal_texture()}};
+    for (int unit = 2; const auto& [name, texture] : vectors) {
+      glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+      glBindTexture(GL_TEXTURE_BUFFER, texture);
+      p.set(name, unit++);
+    }
     glActiveTexture(GL_TEXTURE0);
     if (settings.back_faces == BackFacePolicy::cull) {
       glEnable(GL_CULL_FACE);

@@ -34,7 +34,8 @@ class SceneRenderer {
  public:
   virtual ~SceneRenderer() = default;
 
-  // Replaces the displayed mesh (face colours and selection start from the data's own).
+  // Replaces the displayed mesh (face colours and selection start from the data's own). Data of the
+  // topology on display (the same DisplayTopology) only updates its positions, normals and colours.
   virtual void set_mesh(const MeshDisplayData& data) = 0;
   // Per-face RGBA colours (alpha 0: the display's front colour); one per face of the mesh.
   virtual void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) = 0;

@@ -1,6 +1,7 @@
 #include "viewer/stage_pipeline.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <thread>
 
@@ -41,8 +42,7 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
   StageResult result;
   result.stage = settings.stage;
   pipeline_.set_input(input);
-  // The window keeps the result while the pipeline's caches change in the next run: a copy.
-  Mesh mesh = pipeline_.run(settings);
+  const Mesh& mesh = pipeline_.run(settings);
   result.warnings = pipeline_.warnings();
   // Told once, where the merge is what the user asked to see (not again at each later stage's run).
   if (settings.stage == Stage::merged && pipeline_.work(Stage::merged) != StageWork::cached)
@@ -50,12 +50,61 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
                            " edge pairs (tolerance " + std::to_string(pipeline_.merge_summary().tolerance) +
                            ")");
   if (stop.stop_requested()) return std::nullopt;
-  result.display = render::build_display_data(mesh);
-  result.borders = std::make_shared<const BorderLookup>(mesh);
-  result.topology = topology_report(mesh);
-  result.mesh = std::make_shared<const Mesh>(std::move(mesh));
+  display(mesh, settings, result);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+bool StagePipeline::is_same_topology(const Mesh& mesh, const PipelineSettings& s) const {
+  if (!last_ || !last_settings_) return false;
+  const PipelineSettings& l = *last_settings_;
+  const bool same_settings = s.stage == l.stage && s.is_merging() == l.is_merging() &&
+                             s.levels_before() == l.levels_before() && s.levels_after() == l.levels_after() &&
+                             (s.distance() > 0) == (l.distance() > 0) && s.boundary == l.boundary &&
+                             s.creases == l.creases;
+  if (!same_settings || pipeline_.work(Stage::scene) == StageWork::rebuilt ||
+      (s.is_merging() && pipeline_.work(Stage::merged) == StageWork::rebuilt))
+    return false;
+  for (const Stage stage : {Stage::subdivided, Stage::offset, Stage::subdivided_offset})
+    if (stage <= s.stage && pipeline_.work(stage) == StageWork::rebuilt) return false;
+  return mesh.num_vertices() == last_->vertices && mesh.num_faces() == last_->faces &&
+         mesh.num_corners() == last_->corners && mesh.num_edges() == last_->edges;
+}
+
+std::shared_ptr<const Mesh> StagePipeline::copy(const Mesh& mesh, bool is_same_topology) {
+  if (!is_same_topology) copies_.clear();
+  for (const std::shared_ptr<Mesh>& copy : copies_)
+    if (copy.use_count() == 1) {
+      // The last holder elsewhere let go on another thread: its reads come before these writes.
+      std::atomic_thread_fence(std::memory_order_acquire);
+      copy->positions() = mesh.positions();
+      copy->face_colors() = mesh.face_colors();
+      return copy;
+    }
+  // Three copies cover the one on screen, the one on its way there and one for a picking structure.
+  auto copy = std::make_shared<Mesh>(mesh);
+  if (copies_.size() < 3) copies_.push_back(copy);
+  return copy;
+}
+
+void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result) {
+  const bool is_same = is_same_topology(mesh, settings);
+  if (is_same) {
+    result.display.topology = last_->display;
+    result.borders = last_->borders;
+    result.topology = last_->topology;
+  } else {
+    result.display.topology =
+        std::make_shared<const render::DisplayTopology>(render::build_display_topology(mesh));
+    result.borders = std::make_shared<const BorderLookup>(mesh);
+    result.topology = topology_report(mesh);
+  }
+  render::build_display_positions(mesh, normals_, result.display.positions);
+  result.display.face_colors = render::display_face_colors(mesh);
+  result.mesh = copy(mesh, is_same);
+  last_settings_ = settings;
+  last_ = Shared{result.display.topology, result.borders,     result.topology, mesh.num_vertices(),
+                 mesh.num_faces(),        mesh.num_corners(), mesh.num_edges()};
 }
 
 }  // namespace nome::viewer

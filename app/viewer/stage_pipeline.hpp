@@ -42,7 +42,9 @@ struct WorkProgress {
 
 // The kernel's Pipeline behind the window's background jobs: runs are serialised, and a run whose stop
 // was requested before it began, or before its display data, gives up and returns none. The pipeline's
-// caches outlive a run: a slider that only moves vertices builds no mesh.
+// caches outlive a run: a slider that only moves vertices builds no mesh, and its result shares the last
+// one's display topology, borders and topology report (the renderer then updates positions only), its
+// mesh a copy no longer held elsewhere taking the new positions (no fresh pages).
 class StagePipeline {
  public:
   StagePipeline();
@@ -54,7 +56,23 @@ class StagePipeline {
   WorkProgress progress() const;
 
  private:
+  // The display arrays: a result of the last one's topology takes over its shared parts.
+  void display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result);
+  bool is_same_topology(const Mesh& mesh, const PipelineSettings& settings) const;
+  std::shared_ptr<const Mesh> copy(const Mesh& mesh, bool is_same_topology);
+
   std::mutex mutex_;
+  std::optional<PipelineSettings> last_settings_;
+  // What results of the last one's topology share.
+  struct Shared {
+    std::shared_ptr<const render::DisplayTopology> display;
+    std::shared_ptr<const BorderLookup> borders;
+    TopologyReport topology;
+    Index vertices = 0, faces = 0, corners = 0, edges = 0;
+  };
+  std::optional<Shared> last_;
+  std::vector<std::shared_ptr<Mesh>> copies_;  // of the last topology, handed out in results
+  Normals normals_;
   mutable std::mutex progress_mutex_;
   WorkProgress progress_;
   Pipeline pipeline_;

@@ -1,25 +1,36 @@
 #include "viewer/stage_view.hpp"
 
+#include <utility>
+
 namespace nome::viewer {
+
+StageView::StageView()
+    : evaluate_([this](const PipelineInput& input, const PipelineSettings& settings, std::stop_token stop) {
+        return pipeline_.run(input, settings, stop);
+      }) {}
 
 bool StageView::request(const Session& session) {
   const bool is_new_version = !has_request_ || session.version() != requested_version_;
   if (!is_new_version && settings_ == requested_settings_) return false;
+  const bool supersedes = !has_request_;
   requested_version_ = session.version();
   requested_settings_ = settings_;
   has_request_ = true;
   // The scene's polygons are copied for the job.
-  job_.submit([this, input = session.pipeline_input(), parts = session.face_parts(),
-               settings = settings_](std::stop_token stop) {
-    auto result = pipeline_.run(input, settings, stop);
+  waiting_ = [this, input = session.pipeline_input(), parts = session.face_parts(),
+              settings = settings_](std::stop_token stop) {
+    auto result = evaluate_(input, settings, stop);
     if (result) result->parts = parts;
     return result;
-  });
+  };
+  if (supersedes || !job_.is_busy()) job_.submit(std::exchange(waiting_, nullptr));
   return is_new_version;
 }
 
 std::optional<StageResult> StageView::take(std::chrono::milliseconds patience) {
-  if (auto result = job_.take(patience); result && *result) return std::move(**result);
+  auto result = job_.take(patience);
+  if (waiting_ && !job_.is_busy()) job_.submit(std::exchange(waiting_, nullptr));
+  if (result && *result) return std::move(**result);
   return std::nullopt;
 }
 
@@ -33,6 +44,7 @@ void StageView::clear() {
   shown_.reset();
   picking_bvh_.reset();
   has_request_ = false;
+  waiting_ = nullptr;
 }
 
 const TriangleBvh& StageView::picking_bvh() {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -17,14 +18,26 @@ namespace nome::viewer {
 // that runs the stage pipeline.
 class StageView {
  public:
+  // What a job runs: the stage pipeline by default (tests give their own).
+  using Evaluate = std::function<std::optional<StageResult>(const PipelineInput&, const PipelineSettings&,
+                                                            std::stop_token)>;
+  StageView();
+  explicit StageView(Evaluate evaluate) : evaluate_(std::move(evaluate)) {}
+
   PipelineSettings& settings() { return settings_; }
   const PipelineSettings& settings() const { return settings_; }
 
-  // Starts a job when the session's polygons or the settings changed since the last request (a newer
-  // request supersedes the one in flight). Returns whether the polygons changed.
+  // Asks for the stage when the session's polygons or the settings changed since the last request.
+  // One job runs at a time: a request made while one is in flight waits, replacing any other waiting,
+  // until that one is taken (a slider dragged over a slow stage shows a result every job's time rather
+  // than none until it stops). After clear() or invalidate() the request supersedes the one in flight.
+  // Returns whether the polygons changed.
   bool request(const Session& session);
   // The result of the latest request if it finished within `patience`; throws the pipeline's errors.
   std::optional<StageResult> take(std::chrono::milliseconds patience);
+  // The same within a frame: never waits while a stage is shown (it stays up until the new one is
+  // ready); a file's first picture waits a little, so that short work shows in the frame that asked.
+  std::optional<StageResult> take_for_frame() { return take(std::chrono::milliseconds(shown_ ? 0 : 30)); }
   // Makes the result the shown stage, at time `now` (seconds).
   void show(StageResult result, double now);
   // The next request starts a job even if nothing changed (a new session).
@@ -34,7 +47,7 @@ class StageView {
 
   const StageResult* shown() const { return shown_ ? &*shown_ : nullptr; }
   const Mesh* shown_mesh() const { return shown_ ? shown_->mesh.get() : nullptr; }
-  bool is_busy() const { return job_.is_busy(); }
+  bool is_busy() const { return job_.is_busy() || waiting_; }
   double seconds_running() const { return job_.seconds_running(); }
   WorkProgress progress() const { return pipeline_.progress(); }
 
@@ -50,7 +63,9 @@ class StageView {
 
   PipelineSettings settings_ = initial_settings();
   StagePipeline pipeline_;
+  Evaluate evaluate_;
   BackgroundJob<std::optional<StageResult>> job_;
+  BackgroundJob<std::optional<StageResult>>::Work waiting_;  // the request after the one in flight
   std::uint64_t requested_version_ = 0;
   PipelineSettings requested_settings_;
   bool has_request_ = false;

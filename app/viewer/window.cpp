@@ -241,9 +241,8 @@ void Window::update_stage() {
   if (!session) return;
   if (stage_.request(*session))
     show_rim_lines(session->scene() ? scene::scene_rim_lines(*session->scene()) : RimLines{});
-  // Short work shows in the frame that asked for it; longer work leaves the last picture up meanwhile.
   try {
-    if (auto result = stage_.take(std::chrono::milliseconds(30))) show_result(std::move(*result));
+    if (auto result = stage_.take_for_frame()) show_result(std::move(*result));
   } catch (const std::exception& e) {
     // The last good geometry stays on screen.
     log_.error(e.what());
@@ -260,16 +259,18 @@ void Window::update_stage() {
 void Window::show_result(StageResult result) {
   const Mesh* old = stage_.shown_mesh();
   const Mesh& mesh = *result.mesh;
-  const bool is_same_topology = old && old->num_vertices() == mesh.num_vertices() &&
-                                old->face_offsets() == mesh.face_offsets() &&
-                                old->corner_vertices() == mesh.corner_vertices();
+  // Results that share their display topology share their connectivity: no comparison of arrays.
+  const bool is_same_topology =
+      old && (stage_.shown()->display.topology == result.display.topology ||
+              (old->num_vertices() == mesh.num_vertices() && old->face_offsets() == mesh.face_offsets() &&
+               old->corner_vertices() == mesh.corner_vertices()));
   if (!is_same_topology && !selection_.is_empty()) {
     selection_.clear();
     log_.info("selection cleared: the displayed mesh changed its connectivity");
   }
   for (const std::string& w : result.warnings) log_.warning(w);
   for (const std::string& note : result.notes) log_.info(note);
-  const render::BoundingBox box = render::BoundingBox::of(mesh.positions());
+  const render::BoundingBox box = result.display.positions.bounds;
   shown_size_ = box.is_empty() ? glm::dvec3(0.0) : box.max - box.min;
   shown_low_ = box.is_empty() ? glm::dvec3(0.0) : box.min;
   shown_high_ = box.is_empty() ? glm::dvec3(0.0) : box.max;

@@ -16,17 +16,28 @@ TEST_CASE("display data: real edges, Möbius and border edges, one vertex per co
   for (const Edge& e : band.edges()) mobius += e.is_mobius, border += e.is_boundary();
   for (Index f = 0; f < band.num_faces(); ++f) triangles += band.face_degree(f) - 2;
   REQUIRE(mobius > 0);
-  CHECK(data.all_edges.count == band.num_edges());  // quads: no diagonal among the wire segments
-  CHECK(data.mobius_edges.count == mobius);
-  CHECK(data.border_edges.count == border);
-  CHECK(data.segments.size() == 2 * std::size_t(band.num_edges() + mobius + border));
-  CHECK(data.triangles.size() == 3 * std::size_t(triangles));
-  CHECK(data.corner_positions.size() == band.num_corners());
+  const render::DisplayTopology& t = *data.topology;
+  CHECK(t.all_edges.count == band.num_edges());  // quads: no diagonal among the wire segments
+  CHECK(t.mobius_edges.count == mobius);
+  CHECK(t.border_edges.count == border);
+  CHECK(t.segments.size() == 2 * std::size_t(band.num_edges() + mobius + border));
+  CHECK(t.triangles.size() == 3 * std::size_t(triangles));
+  REQUIRE(t.corner_vertices.size() == band.num_corners());
+  CHECK(data.positions.vertices.size() == band.num_vertices());
+  CHECK(data.positions.face_normals.size() == band.num_faces());
   std::set<std::pair<std::uint32_t, std::uint32_t>> mobius_pairs;
   for (const Edge& e : band.edges())
     if (e.is_mobius) mobius_pairs.insert({e.vertices[0], e.vertices[1]});
-  for (std::uint32_t s = data.mobius_edges.first; s < data.mobius_edges.first + data.mobius_edges.count; ++s)
-    CHECK(mobius_pairs.count({data.segments[2 * s], data.segments[2 * s + 1]}) == 1);
+  for (std::uint32_t s = t.mobius_edges.first; s < t.mobius_edges.first + t.mobius_edges.count; ++s)
+    CHECK(mobius_pairs.count({t.segments[2 * s], t.segments[2 * s + 1]}) == 1);
+  // Each corner names its vertex and carries its sign: a Möbius band has corners of both signs.
+  int negative = 0;
+  for (Index c = 0; c < band.num_corners(); ++c) {
+    CHECK((t.corner_vertices[c] & ~render::corner_sign_bit) == band.corner_vertex(c));
+    negative += (t.corner_vertices[c] & render::corner_sign_bit) != 0;
+    CHECK(((t.corner_vertices[c] & render::corner_sign_bit) != 0) == (band.corner_sign(c) < 0));
+  }
+  CHECK(negative > 0);
 }
 
 TEST_CASE("smooth normals follow each face's own orientation across Möbius edges", "[render]") {
@@ -35,9 +46,13 @@ TEST_CASE("smooth normals follow each face's own orientation across Möbius edge
   for (const PolygonSoup& soup : {test::mobius_band(32, 4), test::klein_bottle(24, 12), test::torus(16, 8)}) {
     const Mesh mesh = build_mesh(soup);
     const render::MeshDisplayData data = render::build_display_data(mesh);
+    // The shader's smooth normal: the corner's sign times its vertex normal.
     for (Index c = 0; c < mesh.num_corners(); ++c) {
-      REQUIRE(glm::length(data.smooth_normals[c]) == Approx(1.0f));
-      REQUIRE(glm::dot(data.smooth_normals[c], data.flat_normals[c]) > 0.5f);
+      const std::uint32_t corner = data.topology->corner_vertices[c];
+      const float sign = (corner & render::corner_sign_bit) ? -1.0f : 1.0f;
+      const glm::vec3 smooth = sign * data.positions.vertex_normals[corner & ~render::corner_sign_bit];
+      REQUIRE(glm::length(smooth) == Approx(1.0f));
+      REQUIRE(glm::dot(smooth, data.positions.face_normals[data.topology->corner_faces[c]]) > 0.5f);
     }
   }
 }

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "nome/mesh/topology_report.hpp"
 #include "viewer/session.hpp"
 #include "viewer/stage_pipeline.hpp"
@@ -24,7 +26,7 @@ PipelineInput two_pieces() {
 Mesh shown(StagePipeline& pipeline, const PipelineInput& soup, const PipelineSettings& settings) {
   const auto result = pipeline.run(soup, settings, std::stop_token{});
   REQUIRE(result);
-  CHECK(result->display.num_faces == result->mesh->num_faces());
+  CHECK(result->display.topology->num_faces == result->mesh->num_faces());
   CHECK(result->stage == settings.stage);
   CHECK(result->topology.faces == result->mesh->num_faces());
   return *result->mesh;
@@ -94,4 +96,48 @@ TEST_CASE("a stage's run reports the kernel's task and how far it got", "[app]")
   shown(pipeline, two_pieces(), settings);
   CHECK(pipeline.progress().task == "offset");
   CHECK(pipeline.progress().fraction == 1.0);
+}
+
+TEST_CASE("a slider tick that moves vertices shares the display topology, results held keep their positions",
+          "[app]") {
+  viewer::Session session = viewer::Session::open(NOME_SOURCE_DIR "/assets/funnel_cube_consolidated.nome");
+  StagePipeline pipeline;
+  PipelineSettings settings = viewer::initial_settings();
+  settings.stage = Stage::offset;
+  auto run = [&] { return pipeline.run(session.pipeline_input(), settings, std::stop_token{}); };
+  const auto first = run();
+  REQUIRE(first);
+  const Buffer<Vec3> first_positions = first->mesh->positions();
+  std::vector<std::optional<viewer::StageResult>> held;
+  for (const double h : {0.4, 0.5, 0.6, 0.7}) {
+    session.set_parameter("fp_h", h);
+    held.push_back(run());
+    REQUIRE(held.back());
+    const viewer::StageResult& moved = *held.back();
+    CHECK(moved.display.topology == first->display.topology);
+    CHECK(moved.borders == first->borders);
+    // The positions and normals are those of a fresh build of the moved mesh.
+    const render::MeshDisplayData fresh = render::build_display_data(*moved.mesh);
+    CHECK(moved.display.positions.vertices == fresh.positions.vertices);
+    CHECK(moved.display.positions.vertex_normals == fresh.positions.vertex_normals);
+    CHECK(moved.display.positions.face_normals == fresh.positions.face_normals);
+    CHECK(moved.mesh->positions() != first_positions);
+  }
+  // Every result still held shows the positions it was made with (no copy written while held).
+  CHECK(first->mesh->positions() == first_positions);
+  for (std::size_t i = 0; i + 1 < held.size(); ++i)
+    CHECK(held[i]->mesh->positions() != held[i + 1]->mesh->positions());
+  // A copy let go takes the next positions: no fresh mesh.
+  std::vector<const Mesh*> released;
+  for (const auto& result : held) released.push_back(result->mesh.get());
+  held.clear();
+  session.set_parameter("fp_h", 0.3);
+  const auto reused = run();
+  REQUIRE(reused);
+  CHECK(std::find(released.begin(), released.end(), reused->mesh.get()) != released.end());
+  session.set_parameter("fp_n", 7);  // another topology
+  const auto rebuilt = run();
+  REQUIRE(rebuilt);
+  CHECK(rebuilt->display.topology != first->display.topology);
+  CHECK(rebuilt->mesh->num_faces() != first->mesh->num_faces());
 }

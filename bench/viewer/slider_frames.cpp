@@ -1,0 +1,142 @@
+#include "slider_frames.hpp"
+
+#include <sys/resource.h>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "nome/ops/pipeline.hpp"
+#include "render/framebuffer.hpp"
+#include "render/gl.hpp"
+#include "render/scene_renderer.hpp"
+#include "viewer/session.hpp"
+#include "viewer/stage_pipeline.hpp"
+#include "viewer/stage_view.hpp"
+
+namespace nome::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using namespace nome::viewer;
+
+const char* const scene_path = NOME_SOURCE_DIR "/bench/viewer/slider_torus.nome";
+
+PipelineSettings torus_settings(int levels) {
+  PipelineSettings s = initial_settings();
+  s.stage = Stage::offset;
+  s.subdivision_levels = levels;
+  s.offset_distance = 0.02;
+  return s;
+}
+
+std::string load() {
+  double loads[3] = {};
+  if (getloadavg(loads, 3) < 1) return "load unknown";
+  char text[64];
+  std::snprintf(text, sizeof text, "load %.2f", loads[0]);
+  return text;
+}
+
+// Applies a stage result to the renderer as the window does (a new topology: new buffers).
+void show(render::SceneRenderer& renderer, const StageResult& result) {
+  renderer.set_mesh(result.display);
+}
+
+}  // namespace
+
+void million_figures() {
+  Session session = Session::open(scene_path);
+  const PipelineSettings settings = torus_settings(4);
+  Pipeline kernel;
+  StagePipeline stages;
+  const auto renderer = render::make_gl_scene_renderer();
+  kernel.set_input(session.pipeline_input());
+  const Index faces = kernel.run(settings).num_faces();
+  show(*renderer, *stages.run(session.pipeline_input(), settings, {}));
+  std::vector<double> kernel_ms, stage_ms, buffer_ms;
+  for (int i = 0; i < 11; ++i) {
+    session.set_parameter("t_r", i % 2 ? 0.35 : 0.36);
+    auto start = Clock::now();
+    kernel.set_input(session.pipeline_input());
+    kernel.run(settings);
+    kernel_ms.push_back(ms_since(start));
+    start = Clock::now();
+    const auto result = stages.run(session.pipeline_input(), settings, {});
+    stage_ms.push_back(ms_since(start));
+    if (!result) std::exit(1);
+    start = Clock::now();
+    show(*renderer, *result);
+    glFinish();
+    buffer_ms.push_back(ms_since(start));
+  }
+  const double k = median(kernel_ms), s = median(stage_ms), b = median(buffer_ms);
+  std::printf(
+      "  slider t_r (moves vertices) at %u faces, subdivision 4 + offset: kernel %.1f ms, display arrays "
+      "%.1f ms, buffer update %.1f ms: kernel + buffers %.1f ms (target < 16 ms) [%s]\n",
+      faces, k, s - k, b, s + b, load().c_str());
+}
+
+void frame_figures() {
+  Session session = Session::open(scene_path);
+  const PipelineSettings settings = torus_settings(3);
+  const auto renderer = render::make_gl_scene_renderer();
+  const glm::ivec2 size{1280, 800};
+  const render::Framebuffer framebuffer(size.x, size.y, 4);
+  framebuffer.bind();
+  StageView view;
+  view.settings() = settings;
+  render::Camera camera;
+  camera.set_view(30, 25);
+  const render::DisplaySettings display;
+  auto frame = [&](double now) {
+    // The window's frame: take a finished result if any, show it, draw.
+    view.request(session);
+    if (auto result = view.take_for_frame()) {
+      show(*renderer, *result);
+      view.show(std::move(*result), now);
+    }
+    renderer->draw(camera, size, {{0, 0}, size}, display, glm::vec3(1.0f));
+    glFinish();
+  };
+  while (!view.shown()) frame(0.0);
+  camera.fit(view.shown_mesh()->positions(), double(size.x) / size.y);
+  const Index faces = view.shown_mesh()->num_faces();
+  std::vector<double> draw_ms, move_ms;
+  for (int i = 0; i < 5; ++i) {
+    const auto start = Clock::now();
+    frame(0.0);
+    draw_ms.push_back(ms_since(start));
+  }
+  for (int i = 0; i < 11; ++i) {
+    session.set_parameter("t_r", i % 2 ? 0.35 : 0.36);
+    const auto start = Clock::now();
+    while (true) {
+      frame(0.0);
+      if (!view.is_busy()) break;
+    }
+    move_ms.push_back(ms_since(start));
+  }
+  std::printf(
+      "  slider t_r (moves vertices) at %u faces, 1280x800 4x MSAA: whole frame, draw included, %.1f ms "
+      "(target < 33 ms; the draw alone %.1f ms) [%s]\n",
+      faces, median(move_ms), median(draw_ms), load().c_str());
+  double longest = 0.0, until_shown = 0.0;
+  int frames = 0;
+  for (int i = 0; i < 4; ++i) {
+    session.set_parameter("t_segs", i % 2 ? 64 : 60);
+    const auto start = Clock::now();
+    do {
+      const auto frame_start = Clock::now();
+      frame(1.0);
+      longest = std::max(longest, ms_since(frame_start));
+      ++frames;
+    } while (view.is_busy());
+    until_shown = std::max(until_shown, ms_since(start));
+  }
+  std::printf(
+      "  slider t_segs (changes the topology) at about %u faces: the last solid stays up, %d frames drawn, "
+      "longest frame %.1f ms (target < 33 ms: never stalls), new solid shown after at most %.0f ms [%s]\n",
+      faces, frames, longest, until_shown, load().c_str());
+}
+
+}  // namespace nome::bench
