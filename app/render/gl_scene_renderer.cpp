@@ -14,7 +14,7 @@ class GlSceneRenderer final : public SceneRenderer {
   void set_mesh(const MeshDisplayData& data) override {
     // The same topology (a slider that moved vertices): positions, normals and colours in place.
     if (buffers_ && &buffers_->topology() == data.topology.get()) {
-      buffers_->update_positions(data.positions);
+      buffers_->update_positions(*data.positions);
       buffers_->set_face_colors(data.face_colors);
     } else {
       buffers_ = std::make_unique<MeshBuffers>(data);

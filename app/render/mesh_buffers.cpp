@@ -75,7 +75,7 @@ MeshBuffers::MeshBuffers(const MeshDisplayData& data) : topology_(data.topology)
 
   make_table(face_color_buffer_, face_color_texture_, GL_RGBA8, std::size_t(t.num_faces) * 4);
   make_table(face_flag_buffer_, face_flag_texture_, GL_R8UI, t.num_faces);
-  update_positions(data.positions);
+  update_positions(*data.positions);
   set_face_colors(data.face_colors);
   set_selected_faces({});
 }

@@ -70,7 +70,9 @@ MeshDisplayData build_display_data(const Mesh& mesh) {
   MeshDisplayData data;
   data.topology = std::make_shared<const DisplayTopology>(build_display_topology(mesh));
   Normals normals;
-  build_display_positions(mesh, normals, data.positions);
+  auto positions = std::make_shared<DisplayPositions>();
+  build_display_positions(mesh, normals, *positions);
+  data.positions = std::move(positions);
   data.face_colors = display_face_colors(mesh);
   return data;
 }

@@ -48,10 +48,11 @@ struct DisplayPositions {
 };
 
 // Everything the GPU needs of a kernel Mesh, built on the CPU (testable without GL). Results of the same
-// topology share one DisplayTopology: the renderer then updates the positions and normals only.
+// topology share one DisplayTopology: the renderer then updates the positions and normals only. The
+// positions are shared too, so that their maker can fill them again once no one else holds them.
 struct MeshDisplayData {
   std::shared_ptr<const DisplayTopology> topology;
-  DisplayPositions positions;
+  std::shared_ptr<const DisplayPositions> positions;
   std::vector<std::array<std::uint8_t, 4>> face_colors;  // RGBA per face; alpha 0 where it has none
 };
 

@@ -87,6 +87,21 @@ std::shared_ptr<const Mesh> StagePipeline::copy(const Mesh& mesh, bool is_same_t
   return copy;
 }
 
+std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions(const Mesh& mesh) {
+  auto free =
+      std::find_if(positions_.begin(), positions_.end(), [](const auto& p) { return p.use_count() == 1; });
+  std::shared_ptr<render::DisplayPositions> out;
+  if (free != positions_.end()) {
+    std::atomic_thread_fence(std::memory_order_acquire);  // as for the mesh copies
+    out = *free;
+  } else {
+    out = std::make_shared<render::DisplayPositions>();
+    if (positions_.size() < 3) positions_.push_back(out);
+  }
+  render::build_display_positions(mesh, normals_, *out);
+  return out;
+}
+
 void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result) {
   const bool is_same = is_same_topology(mesh, settings);
   if (is_same) {
@@ -99,7 +114,7 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
     result.borders = std::make_shared<const BorderLookup>(mesh);
     result.topology = topology_report(mesh);
   }
-  render::build_display_positions(mesh, normals_, result.display.positions);
+  result.display.positions = display_positions(mesh);
   result.display.face_colors = render::display_face_colors(mesh);
   result.mesh = copy(mesh, is_same);
   last_settings_ = settings;

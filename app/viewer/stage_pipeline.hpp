@@ -44,7 +44,7 @@ struct WorkProgress {
 // was requested before it began, or before its display data, gives up and returns none. The pipeline's
 // caches outlive a run: a slider that only moves vertices builds no mesh, and its result shares the last
 // one's display topology, borders and topology report (the renderer then updates positions only), its
-// mesh a copy no longer held elsewhere taking the new positions (no fresh pages).
+// mesh and display positions arrays no longer held elsewhere taking the new ones (no fresh pages).
 class StagePipeline {
  public:
   StagePipeline();
@@ -60,6 +60,7 @@ class StagePipeline {
   void display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result);
   bool is_same_topology(const Mesh& mesh, const PipelineSettings& settings) const;
   std::shared_ptr<const Mesh> copy(const Mesh& mesh, bool is_same_topology);
+  std::shared_ptr<const render::DisplayPositions> display_positions(const Mesh& mesh);
 
   std::mutex mutex_;
   std::optional<PipelineSettings> last_settings_;
@@ -72,6 +73,7 @@ class StagePipeline {
   };
   std::optional<Shared> last_;
   std::vector<std::shared_ptr<Mesh>> copies_;  // of the last topology, handed out in results
+  std::vector<std::shared_ptr<render::DisplayPositions>> positions_;  // likewise
   Normals normals_;
   mutable std::mutex progress_mutex_;
   WorkProgress progress_;

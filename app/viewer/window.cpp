@@ -270,7 +270,7 @@ void Window::show_result(StageResult result) {
   }
   for (const std::string& w : result.warnings) log_.warning(w);
   for (const std::string& note : result.notes) log_.info(note);
-  const render::BoundingBox box = result.display.positions.bounds;
+  const render::BoundingBox box = result.display.positions->bounds;
   shown_size_ = box.is_empty() ? glm::dvec3(0.0) : box.max - box.min;
   shown_low_ = box.is_empty() ? glm::dvec3(0.0) : box.min;
   shown_high_ = box.is_empty() ? glm::dvec3(0.0) : box.max;

@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <string>
 
 #include "nome/ops/pipeline.hpp"
@@ -45,9 +46,31 @@ double cpu_ms() {
          (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-3;
 }
 
-// Applies a stage result to the renderer as the window does (a new topology: new buffers).
+// Applies a stage result to the renderer as the window does (in place when its topology is on display).
 void show(render::SceneRenderer& renderer, const StageResult& result) {
   renderer.set_mesh(result.display);
+}
+
+// A slider that changes the topology: the frames go on while the job runs.
+void topology_figures(Session& session, const StageView& view, const std::function<void(double)>& frame,
+                      Index faces) {
+  double longest = 0.0, until_shown = 0.0;
+  int frames = 0;
+  for (int i = 0; i < 4; ++i) {
+    session.set_parameter("t_segs", i % 2 ? 64 : 60);
+    const auto start = Clock::now();
+    do {
+      const auto frame_start = Clock::now();
+      frame(1.0);
+      longest = std::max(longest, ms_since(frame_start));
+      ++frames;
+    } while (view.is_busy());
+    until_shown = std::max(until_shown, ms_since(start));
+  }
+  std::printf(
+      "  slider t_segs (changes the topology) at about %u faces: the last solid stays up, %d frames drawn, "
+      "longest frame %.1f ms (target < 33 ms: never stalls), new solid shown after at most %.0f ms [%s]\n",
+      faces, frames, longest, until_shown, load().c_str());
 }
 
 }  // namespace
@@ -148,23 +171,7 @@ void frame_figures() {
       "all threads; %.1f ms CPU into 16x16 pixels) [%s]\n",
       faces, median(frame_ms), median(latency_ms), median(draw_ms), median(draw_cpu), median(vertex_cpu),
       load().c_str());
-  double longest = 0.0, until_shown = 0.0;
-  int frames = 0;
-  for (int i = 0; i < 4; ++i) {
-    session.set_parameter("t_segs", i % 2 ? 64 : 60);
-    const auto start = Clock::now();
-    do {
-      const auto frame_start = Clock::now();
-      frame(1.0);
-      longest = std::max(longest, ms_since(frame_start));
-      ++frames;
-    } while (view.is_busy());
-    until_shown = std::max(until_shown, ms_since(start));
-  }
-  std::printf(
-      "  slider t_segs (changes the topology) at about %u faces: the last solid stays up, %d frames drawn, "
-      "longest frame %.1f ms (target < 33 ms: never stalls), new solid shown after at most %.0f ms [%s]\n",
-      faces, frames, longest, until_shown, load().c_str());
+  topology_figures(session, view, frame, faces);
 }
 
 }  // namespace nome::bench

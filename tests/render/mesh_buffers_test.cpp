@@ -16,7 +16,9 @@ render::MeshDisplayData moved(const Mesh& mesh, std::shared_ptr<const render::Di
   render::MeshDisplayData data;
   data.topology = std::move(topology);
   Normals scratch;
-  render::build_display_positions(mesh, scratch, data.positions);
+  auto positions = std::make_shared<render::DisplayPositions>();
+  render::build_display_positions(mesh, scratch, *positions);
+  data.positions = std::move(positions);
   data.face_colors = render::display_face_colors(mesh);
   return data;
 }
@@ -55,6 +57,6 @@ TEST_CASE("moved vertices update the buffers in place, drawn as fresh buffers of
     CHECK(picture.rgba != old_picture.rgba);
   }
   render::MeshBuffers buffers(render::build_display_data(before));
-  CHECK_THROWS_AS(buffers.update_positions(render::build_display_data(build_mesh(test::cube())).positions),
+  CHECK_THROWS_AS(buffers.update_positions(*render::build_display_data(build_mesh(test::cube())).positions),
                   InvalidInputError);
 }

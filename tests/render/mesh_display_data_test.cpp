@@ -23,8 +23,8 @@ TEST_CASE("display data: real edges, Möbius and border edges, one vertex per co
   CHECK(t.segments.size() == 2 * std::size_t(band.num_edges() + mobius + border));
   CHECK(t.triangles.size() == 3 * std::size_t(triangles));
   REQUIRE(t.corner_vertices.size() == band.num_corners());
-  CHECK(data.positions.vertices.size() == band.num_vertices());
-  CHECK(data.positions.face_normals.size() == band.num_faces());
+  CHECK(data.positions->vertices.size() == band.num_vertices());
+  CHECK(data.positions->face_normals.size() == band.num_faces());
   std::set<std::pair<std::uint32_t, std::uint32_t>> mobius_pairs;
   for (const Edge& e : band.edges())
     if (e.is_mobius) mobius_pairs.insert({e.vertices[0], e.vertices[1]});
@@ -50,9 +50,9 @@ TEST_CASE("smooth normals follow each face's own orientation across Möbius edge
     for (Index c = 0; c < mesh.num_corners(); ++c) {
       const std::uint32_t corner = data.topology->corner_vertices[c];
       const float sign = (corner & render::corner_sign_bit) ? -1.0f : 1.0f;
-      const glm::vec3 smooth = sign * data.positions.vertex_normals[corner & ~render::corner_sign_bit];
+      const glm::vec3 smooth = sign * data.positions->vertex_normals[corner & ~render::corner_sign_bit];
       REQUIRE(glm::length(smooth) == Approx(1.0f));
-      REQUIRE(glm::dot(smooth, data.positions.face_normals[data.topology->corner_faces[c]]) > 0.5f);
+      REQUIRE(glm::dot(smooth, data.positions->face_normals[data.topology->corner_faces[c]]) > 0.5f);
     }
   }
 }

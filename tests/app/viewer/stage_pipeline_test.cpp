@@ -118,15 +118,18 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
     CHECK(moved.borders == first->borders);
     // The positions and normals are those of a fresh build of the moved mesh.
     const render::MeshDisplayData fresh = render::build_display_data(*moved.mesh);
-    CHECK(moved.display.positions.vertices == fresh.positions.vertices);
-    CHECK(moved.display.positions.vertex_normals == fresh.positions.vertex_normals);
-    CHECK(moved.display.positions.face_normals == fresh.positions.face_normals);
+    CHECK(moved.display.positions->vertices == fresh.positions->vertices);
+    CHECK(moved.display.positions->vertex_normals == fresh.positions->vertex_normals);
+    CHECK(moved.display.positions->face_normals == fresh.positions->face_normals);
     CHECK(moved.mesh->positions() != first_positions);
   }
   // Every result still held shows the positions it was made with (no copy written while held).
   CHECK(first->mesh->positions() == first_positions);
   for (std::size_t i = 0; i + 1 < held.size(); ++i)
     CHECK(held[i]->mesh->positions() != held[i + 1]->mesh->positions());
+  for (const auto& result : held)
+    CHECK(result->display.positions->vertices ==
+          render::build_display_data(*result->mesh).positions->vertices);
   // A copy let go takes the next positions: no fresh mesh.
   std::vector<const Mesh*> released;
   for (const auto& result : held) released.push_back(result->mesh.get());
