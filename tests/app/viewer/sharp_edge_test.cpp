@@ -10,6 +10,8 @@
 #include "nome/query/pick_edge.hpp"
 #include "viewer/window.hpp"
 
+using nome::test::click_line;
+
 using namespace nome;
 
 namespace {
@@ -62,8 +64,7 @@ TEST_CASE(
   viewer::ViewerOptions options;
   options.file = dir + "/cube.nome";
   options.script = nome::test::write_script(
-      dir, "view 30 25\nmode edge\nclick " + std::to_string(int(pixel.x)) + " " +
-               std::to_string(int(pixel.y)) + "\nkey K\nsave " + dir + "/sharp.nome\nquit\n");
+      dir, "view 30 25\nmode edge\n" + click_line(pixel) + "key K\nsave " + dir + "/sharp.nome\nquit\n");
   nome::test::TestViewer viewer(options);
   CHECK(viewer.run() == 0);
   const std::string log = viewer.messages();
@@ -94,10 +95,9 @@ TEST_CASE(
   viewer::ViewerOptions options;
   options.file = dir + "/cube.nome";
   options.script = nome::test::write_script(
-      dir, "view 30 25\nmode edge\nclick " + std::to_string(int(pixel.x)) + " " +
-               std::to_string(int(pixel.y)) + "\nsetting sharpness 2.5\nkey K\nmode edge\nclick " +
-               std::to_string(int(pixel.x)) + " " + std::to_string(int(pixel.y)) +
-               "\nsetting sharpness 1\nkey K\nkey Ctrl+Z\nsave " + dir + "/weighted.nome\nquit\n");
+      dir, "view 30 25\nmode edge\n" + click_line(pixel) + "setting sharpness 2.5\nkey K\nmode edge\n" +
+               click_line(pixel) + "setting sharpness 1\nkey K\nkey Ctrl+Z\nsave " + dir +
+               "/weighted.nome\nquit\n");
   nome::test::TestViewer viewer(options);
   CHECK(viewer.run() == 0);
   const std::string log = viewer.messages();
