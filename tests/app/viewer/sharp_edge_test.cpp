@@ -51,6 +51,12 @@ Buffer<Vec3> edge_mode_subdivided(const SceneDocument& doc, int levels = 1) {
   return pipeline.run(s).positions();
 }
 
+// Writes the edge-mode cube as dir/cube.nome and returns one of its edges that a click selects.
+std::pair<glm::dvec2, std::pair<std::string, std::string>> write_edge_mode_cube(const std::string& dir) {
+  std::ofstream(dir + "/cube.nome") << edge_mode_cube_text;
+  return clickable_edge(glue_faces(read_scene(dir + "/cube.nome").combined_soup()).mesh);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -58,9 +64,7 @@ TEST_CASE(
     "the subdivision",
     "[app]") {
   const std::string dir = nome::test::private_scratch_dir("sharp_edge");
-  std::ofstream(dir + "/cube.nome") << edge_mode_cube_text;
-  const Mesh mesh = glue_faces(read_scene(dir + "/cube.nome").combined_soup()).mesh;
-  const auto [pixel, names] = clickable_edge(mesh);
+  const auto [pixel, names] = write_edge_mode_cube(dir);
   viewer::ViewerOptions options;
   options.file = dir + "/cube.nome";
   options.script = nome::test::write_script(
@@ -89,9 +93,7 @@ TEST_CASE(
     "weight subdivides as the text's sharp",
     "[app]") {
   const std::string dir = nome::test::private_scratch_dir("sharp_weight");
-  std::ofstream(dir + "/cube.nome") << edge_mode_cube_text;
-  const Mesh mesh = glue_faces(read_scene(dir + "/cube.nome").combined_soup()).mesh;
-  const auto [pixel, names] = clickable_edge(mesh);
+  const auto [pixel, names] = write_edge_mode_cube(dir);
   viewer::ViewerOptions options;
   options.file = dir + "/cube.nome";
   options.script = nome::test::write_script(
