@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include "nome/freed_memory.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/scene/scene.hpp"
@@ -57,6 +58,7 @@ std::string knot_scene() {
 }  // namespace
 
 int main() {
+  nome::keep_freed_memory();  // as the nome program does
   std::printf("sweep: 10,000 path samples x 32 cross-section points (320,000 quads), best of 5, CPU ms\n");
   // The core alone: frames, placement and faces.
   std::vector<PathSample> path;

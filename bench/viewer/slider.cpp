@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "nome/freed_memory.hpp"
 #include "nome/query/triangle_bvh.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/scene_renderer.hpp"
@@ -72,6 +73,7 @@ void funnel_figures() {
 }  // namespace
 
 int main() {
+  nome::keep_freed_memory();  // as the nome program does
   funnel_figures();
   const nome::render::OffscreenContext context(nome::render::Backend::egl);
   std::printf("issue 18 goal 3 (live at a million faces), %s (%s):\n", context.platform().c_str(),

@@ -7,6 +7,7 @@
 
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/topology_report.hpp"
+#include "nome/ops/pipeline.hpp"
 #include "nome/ops/subdivide.hpp"
 #include "nome/scene/save_nome.hpp"
 #include "nome/scene/sweep.hpp"
@@ -380,4 +381,26 @@ TEST_CASE("JIPCAD's arts_expo__antcolony.nom: eleven tubes, each a disc", "[scen
     CHECK(r.orientable);
     CHECK(r.mobius_edges == 0);
   }
+}
+
+TEST_CASE("a sweep's names are made once: its instance, the combined soup and the pipeline's mesh share them",
+          "[scene]") {
+  const std::string text = std::string(square_points) +
+                           "point a (0 0 0) endpoint\npoint b (0 0 3) endpoint\npoint c (2 0 5) endpoint\n"
+                           "polyline p (a b c) endpolyline\n"
+                           "sweep s crosssection sq endcrosssection path p endpath endsweep\n"
+                           "instance i s endinstance\n";
+  const Scene scene = Scene::from_text(text, "t.nome");
+  const PolygonSoup& placed = scene.instances().at(0).geometry.soup;
+  PolygonSoup soup = scene.combined_soup();
+  CHECK(&soup.vertex_names.list() == &placed.vertex_names.list());
+  CHECK(&soup.face_names.list() == &placed.face_names.list());
+  CHECK(soup.vertex_names[0] == "i_v0_0");
+  Pipeline pipeline;
+  pipeline.set_input(PipelineInput{soup, {}, {}});
+  PipelineSettings scene_stage;
+  scene_stage.stage = Stage::scene;
+  const Mesh& mesh = pipeline.run(scene_stage);
+  CHECK(&mesh.vertex_names().list() == &placed.vertex_names.list());
+  CHECK(&mesh.face_names().list() == &placed.face_names.list());
 }

@@ -7,6 +7,7 @@
 #include "mesh/sharpness.hpp"
 #include "nome/error.hpp"
 #include "nome/mesh/mesh.hpp"
+#include "query/union_find.hpp"
 
 namespace nome {
 namespace {
@@ -324,26 +325,19 @@ void Mesh::find_boundary_loops() {
 }
 
 void Mesh::find_components() {
-  // A breadth-first walk over faces across edges.
+  // Faces joined across each interior edge in one pass over the edges (faster than a walk, whose steps
+  // jump between faces and edges), then numbered by their smallest face, as a walk from face 0 would.
   const Index nf = num_faces();
-  arrays_.face_components.assign(nf, no_index);
+  UnionFind sets(nf);
+  for (const Edge& e : arrays_.edges)
+    if (!e.is_boundary()) sets.unite(e.faces[0], e.faces[1]);
+  std::vector<Index> number(nf, no_index);
+  resize_for_overwrite(arrays_.face_components, nf);
   arrays_.num_components = 0;
-  std::vector<Index> queue;
-  queue.reserve(nf);
-  for (Index f0 = 0; f0 < nf; ++f0) {
-    if (arrays_.face_components[f0] != no_index) continue;
-    const Index comp = arrays_.num_components++;
-    arrays_.face_components[f0] = comp;
-    queue.assign(1, f0);
-    for (size_t q = 0; q < queue.size(); ++q) {
-      for (Index e : face_edges(queue[q])) {
-        const Index g = arrays_.edges[e].other_face(queue[q]);
-        if (g != no_index && arrays_.face_components[g] == no_index) {
-          arrays_.face_components[g] = comp;
-          queue.push_back(g);
-        }
-      }
-    }
+  for (Index f = 0; f < nf; ++f) {
+    Index& n = number[sets.find(f)];
+    if (n == no_index) n = arrays_.num_components++;
+    arrays_.face_components[f] = n;
   }
 }
 

@@ -4,7 +4,22 @@
 
 namespace nome {
 
+namespace {
+
+bool is_empty(const PolygonSoup& s) {
+  return s.positions.empty() && s.face_vertices.empty() && s.face_offsets.size() == 1 &&
+         s.vertex_names.empty() && s.face_names.empty() && s.face_colors.empty() && s.sharp_edges.empty() &&
+         s.sharp_edge_weights.empty() && s.sharp_vertices.empty() && s.hole_faces.empty() &&
+         s.face_origins.empty();
+}
+
+}  // namespace
+
 void append_soup(PolygonSoup& into, const PolygonSoup& part) {
+  if (is_empty(into)) {
+    into = part;  // the same as appending, and the names are shared rather than copied
+    return;
+  }
   const Index base = into.num_vertices(), corner_base = Index(into.face_vertices.size());
   // The origins first, while into.num_faces() is where the part's faces will start.
   if (part.face_origins.empty() || part.face_origins.front().first_face != 0) into.note_origin({});
@@ -27,11 +42,11 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   for (size_t f = 1; f < part.face_offsets.size(); ++f)
     into.face_offsets.push_back(part.face_offsets[f] + corner_base);
   if (has_names) {
-    into.vertex_names.insert(into.vertex_names.end(), part.vertex_names.begin(), part.vertex_names.end());
+    into.vertex_names.append(part.vertex_names.begin(), part.vertex_names.end());
     into.vertex_names.resize(into.positions.size());
   }
   if (has_face_names) {
-    into.face_names.insert(into.face_names.end(), part.face_names.begin(), part.face_names.end());
+    into.face_names.append(part.face_names.begin(), part.face_names.end());
     into.face_names.resize(into.num_faces());
   }
   if (has_colors) {

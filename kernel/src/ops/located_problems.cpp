@@ -42,19 +42,26 @@ std::optional<TopologyError> located_error(const TopologyError& error, const Pol
 
 std::vector<std::string> coinciding_vertex_warnings(const Mesh& mesh, const PolygonSoup& soup,
                                                     size_t max_listed) {
-  const double distance = coincidence_distance(mesh);
+  const double distance = coincidence_distance(mesh), limit = distance * distance;
   std::vector<std::string> out;
   size_t count = 0;
   for (Index f = 0; f < mesh.num_faces(); ++f) {
     const auto corners = mesh.face_vertices(f);
+    const size_t n = corners.size();
+    auto coincide = [&](size_t i, size_t j) {
+      const Vec3 d = mesh.position(corners[i]) - mesh.position(corners[j]);
+      return glm::dot(d, d) <= limit;
+    };
     // All pairs in small faces; neighbours only in large ones (a sampled circle), to stay linear.
-    const size_t n = corners.size(), reach = n <= 32 ? n - 1 : 1;
     std::optional<std::pair<Index, Index>> pair;
-    for (size_t i = 0; i < n && !pair; ++i)
-      for (size_t k = 1; k <= reach && !pair; ++k) {
-        const Index a = corners[i], b = corners[(i + k) % n];
-        if (glm::length(mesh.position(a) - mesh.position(b)) <= distance) pair = {a, b};
+    for (size_t i = 0; i < n && !pair; ++i) {
+      if (n > 32) {
+        if (coincide(i, (i + 1) % n)) pair = {corners[i], corners[(i + 1) % n]};
+        continue;
       }
+      for (size_t j = i + 1; j < n && !pair; ++j)
+        if (coincide(i, j)) pair = {corners[i], corners[j]};
+    }
     if (!pair) continue;
     if (++count <= max_listed)
       out.push_back((soup.origin(f).empty() ? "scene: " : origin_prefix(soup, f)) + "face " +

@@ -396,9 +396,9 @@ MergeResult merge_by_plan(const Mesh& mesh, MergePlan plan) {
   PolygonSoup soup;
   merged_positions(mesh, plan, soup.positions);
   if (!mesh.vertex_names().empty()) {
-    soup.vertex_names.resize(plan.num_vertices);
-    for (Index v = mesh.num_vertices(); v-- > 0;)
-      soup.vertex_names[plan.vertex_map[v]] = mesh.vertex_names()[v];
+    std::vector<std::string>& names = soup.vertex_names.writable();
+    names.resize(plan.num_vertices);
+    for (Index v = mesh.num_vertices(); v-- > 0;) names[plan.vertex_map[v]] = mesh.vertex_names()[v];
   }
   soup.face_offsets = mesh.face_offsets();
   soup.face_vertices.reserve(mesh.num_corners());

@@ -38,7 +38,7 @@ class SceneStage {
     std::vector<float> sharp_edge_weights;
     std::vector<std::pair<Index, float>> sharp_vertices;
     std::vector<Index> hole_faces;
-    std::vector<std::string> vertex_names, face_names;
+    Names vertex_names, face_names;  // shared with the soup and the mesh, not copied
     Index num_vertices = 0;
     Joining joining = Joining::manifold;
     bool has_colors = false;

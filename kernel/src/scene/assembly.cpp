@@ -18,11 +18,27 @@ bool is_same_topology(const PolygonSoup& a, const PolygonSoup& b) {
 
 // Appends the piece's faces but the deleted ones, and its vertices unless every face using them is
 // deleted; returns whether any appended face carries its own colour.
+// Appends the whole piece: its arrays in bulk.
+bool append_whole_piece(Piece& out, const Piece& piece) {
+  const Index base = out.soup.num_vertices();
+  append_soup(out.soup, piece.soup);
+  out.face_has_color.insert(out.face_has_color.end(), piece.face_has_color.begin(),
+                            piece.face_has_color.end());
+  for (const RimLine& r : piece.rims) {
+    RimLine rim{r.name, r.vertices, r.is_loop};
+    for (Index& v : rim.vertices) v += base;
+    out.rims.push_back(std::move(rim));
+  }
+  return std::find(piece.face_has_color.begin(), piece.face_has_color.end(), 1) != piece.face_has_color.end();
+}
+
 bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::string>& deleted) {
   const PolygonSoup& s = piece.soup;
   std::vector<unsigned char> is_deleted(s.num_faces(), 0);
   if (!deleted.empty())
     for (Index f = 0; f < s.num_faces(); ++f) is_deleted[f] = deleted.count(s.face_names[f]) ? 1 : 0;
+  if (std::find(is_deleted.begin(), is_deleted.end(), 1) == is_deleted.end())
+    return append_whole_piece(out, piece);
   std::vector<unsigned char> is_used(s.num_vertices(), 0), is_kept(s.num_vertices(), 0);
   for (Index f = 0; f < s.num_faces(); ++f) {
     for (Index c = s.face_offsets[f]; c < s.face_offsets[f + 1]; ++c) {

@@ -133,8 +133,9 @@ Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std:
     p.color = color;
     p.is_mirrored = glm::determinant(m) < 0;
     if (p.is_mirrored) reverse_faces(piece.soup);
-    for (std::string& n : piece.soup.vertex_names) n = p.path + "_" + n;
-    for (std::string& n : piece.soup.face_names) n = p.path + "_" + n;
+    const std::string prefix = p.path + "_";
+    for (std::string& n : piece.soup.vertex_names.writable()) n.insert(0, prefix);
+    for (std::string& n : piece.soup.face_names.writable()) n.insert(0, prefix);
     for (RimLine& r : piece.rims) r.name = r.name.empty() ? p.path : p.path + "_" + r.name;
     if (color)
       for (Index f = 0; f < piece.soup.num_faces(); ++f)

@@ -167,8 +167,8 @@ class Mesh {
   Index vertex_component(Index v) const;
 
   // Optional attributes carried from the soup: empty when not given.
-  const std::vector<std::string>& vertex_names() const { return vertex_names_; }
-  const std::vector<std::string>& face_names() const { return face_names_; }
+  const Names& vertex_names() const { return vertex_names_; }
+  const Names& face_names() const { return face_names_; }
   const std::vector<Color>& face_colors() const { return arrays_.face_colors; }
   std::vector<Color>& face_colors() { return arrays_.face_colors; }
   // "v12" or the vertex's name: for messages.
@@ -195,8 +195,8 @@ class Mesh {
   std::vector<Index> loop_offsets_{0};
   std::vector<Index> loop_edges_;
   std::vector<Index> loop_vertices_;
-  std::vector<std::string> vertex_names_;
-  std::vector<std::string> face_names_;
+  Names vertex_names_;
+  Names face_names_;
 };
 
 // Assembles a mesh from arrays in O(corners), without build_mesh's search and checks: the caller

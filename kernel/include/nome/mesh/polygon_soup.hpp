@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "nome/mesh/buffer.hpp"
+#include "nome/mesh/names.hpp"
 #include "nome/mesh/types.hpp"
 
 namespace nome {
@@ -23,8 +24,8 @@ struct PolygonSoup {
   Buffer<Vec3> positions;
   Buffer<Index> face_offsets{0};  // face f has corners [face_offsets[f], face_offsets[f+1])
   Buffer<Index> face_vertices;
-  std::vector<std::string> vertex_names;             // empty, or one per vertex
-  std::vector<std::string> face_names;               // empty, or one per face
+  Names vertex_names;                                // empty, or one per vertex
+  Names face_names;                                  // empty, or one per face
   std::vector<Color> face_colors;                    // empty, or one per face
   std::vector<std::pair<Index, Index>> sharp_edges;  // vertex pairs whose edge is marked sharp
   // Empty: every sharp edge is infinitely sharp; otherwise one crease weight per sharp_edges pair
