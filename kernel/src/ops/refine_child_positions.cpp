@@ -91,20 +91,20 @@ struct ChildPass {
     const Vec3& b0 = in[vp + g.corner_vertex(cb)];
     const Vec3& b1 = in[vp + g.corner_vertex(nb)];
     // The four face points around, made again rather than read back from `out` (as in vertex_point).
-    const Vec3 at_ca = face_point(a0, here, fa, in[ep + g.corner_edge(g.prev_corner(ca))]);
-    const Vec3 at_na = face_point(a1, in[ep + g.corner_edge(na)], fa, here);
+    const Vec3 fp_ca = face_point(a0, here, fa, in[ep + g.corner_edge(g.prev_corner(ca))]);
+    const Vec3 fp_na = face_point(a1, in[ep + g.corner_edge(na)], fa, here);
     const Vec3 fp_cb = face_point(b0, here, fb, in[ep + g.corner_edge(g.prev_corner(cb))]);
     const Vec3 fp_nb = face_point(b1, in[ep + g.corner_edge(nb)], fb, here);
-    const Vec3 half0 = (first + at_ca + (mobius ? fp_cb : fp_nb)) * 0.25;
-    const Vec3 half1 = (second + at_na + (mobius ? fp_nb : fp_cb)) * 0.25;
+    const Vec3 half0 = (first + fp_ca + (mobius ? fp_cb : fp_nb)) * 0.25;
+    const Vec3 half1 = (second + fp_na + (mobius ? fp_nb : fp_cb)) * 0.25;
     out[out_ep + 2 * e] = half0;
     out[out_ep + 2 * e + 1] = half1;
     // Face b's quad at its edge's first corner (cb: neighbours fp(b), vp(v_cb)) and at the next one.
     const Vec3 at_cb = fb + b0;
     const Vec3 at_nb = b1 + fb;
     Vec3 face_sum(0.0), edge_sum(0.0);
-    face_sum += at_ca;
-    face_sum += at_na;
+    face_sum += fp_ca;
+    face_sum += fp_na;
     face_sum += mobius ? fp_nb : fp_cb;
     face_sum += mobius ? fp_cb : fp_nb;
     if (is_classic) {

@@ -147,6 +147,14 @@ void child_fans(const Parent& p, Level& child, int threads) {
   });
 }
 
+// Frees the edges and fans of a level built without them (left by an earlier build, see
+// Refinement::rebuild).
+void drop_adjacency(Level& level) {
+  level.edge_corners = {};
+  level.edge_flags = {};
+  level.fan_corner_offsets = level.fan_corners = level.fan_edge_offsets = level.fan_edges = {};
+}
+
 }  // namespace
 
 template <class Parent>
@@ -159,9 +167,7 @@ void refine_topology(const Parent& p, Level& child, LevelDetail detail, int thre
   resize_for_overwrite(child.corner_edges, full ? 4 * nc : 0);
   if (detail != LevelDetail::counts) child_corners(p, child, full, threads);
   if (!full) {
-    child.edge_corners = {};
-    child.edge_flags = {};
-    child.fan_corner_offsets = child.fan_corners = child.fan_edge_offsets = child.fan_edges = {};
+    drop_adjacency(child);
     return;
   }
   resize_for_overwrite(child.edge_corners, child.edge_count);
@@ -181,6 +187,8 @@ void refine_grandchild_quads(const Grandparent& g, Level& grandchild, int thread
   grandchild.vertex_count = vp + nf + ne + g.num_vertices();
   grandchild.edge_count = 2 * child_edges + 4 * nc;
   resize_for_overwrite(grandchild.corner_vertices, 16 * size_t(nc));
+  grandchild.corner_edges = {};
+  drop_adjacency(grandchild);
   parallel_for(nc, threads, [&](Index begin, Index end) {
     for (Index c = begin; c < end; ++c) {
       const Index v = g.corner_vertex(c), pc = g.prev_corner(c);
