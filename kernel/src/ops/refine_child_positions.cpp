@@ -2,6 +2,7 @@
 #include "ops/refinement_level.hpp"
 
 namespace nome {
+namespace {
 
 // The position pass from a child level P, read through the topology of its parent G. P is numbered
 // from G (refine_topology): its vertices are G's face points fp(f) = f, edge points ep(e) = F + e and
@@ -11,128 +12,161 @@ namespace nome {
 // order, and P itself needs no arrays at all. Each sum below adds the same terms in the same order as
 // refine_positions does over P's own fans (refine_positions.cpp), so both give the same bits.
 template <class Grandparent>
-void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, VertexRules rules,
-                            std::span<Vec3> out, int threads) {
-  const Index nf = g.num_faces(), ne = g.num_edges(), nc = g.num_corners();
-  const Index ep = nf, vp = nf + ne;                    // where P's edge and vertex points start in `in`
-  const Index out_ep = nc, out_interior = nc + 2 * ne;  // P's edge points in `out`, its interior edges'
-  const Index out_vp = 2 * (nc + ne);                   // P's vertex points in `out`
-  const bool classic = rules.rule == SubdivisionRule::classic;
+struct ChildPass {
+  const Grandparent& g;
+  std::span<const Vec3> in;
+  std::span<Vec3> out;
+  bool is_classic;
+  Index nf = g.num_faces(), ne = g.num_edges(), nc = g.num_corners();
+  Index ep = nf, vp = nf + ne;                    // where P's edge and vertex points start in `in`
+  Index out_ep = nc, out_interior = nc + 2 * ne;  // P's edge points in `out`, its interior edges'
+  Index out_vp = 2 * (nc + ne);                   // P's vertex points in `out`
 
   // The classic rule's corner sums count each neighbour twice.
-  auto smooth = [classic](const Vec3& here, const Vec3& edge_sum, const Vec3& face_sum, double n) {
-    return smooth_vertex_point(here, classic ? edge_sum * 0.5 : edge_sum, face_sum, n);
-  };
+  Vec3 smooth(const Vec3& here, const Vec3& edge_sum, const Vec3& face_sum, double n) const {
+    return smooth_vertex_point(here, is_classic ? edge_sum * 0.5 : edge_sum, face_sum, n);
+  }
+  // P's quad c: (vp(corner vertex), ep(leaving edge), fp(face), ep(arriving edge)).
+  static Vec3 face_point(const Vec3& vertex, const Vec3& leaving, const Vec3& face, const Vec3& arriving) {
+    Vec3 sum = vertex;
+    sum += leaving;
+    sum += face;
+    sum += arriving;
+    return sum * 0.25;
+  }
+  Vec3 face_point(Index f, Index c) const {
+    return face_point(in[vp + g.corner_vertex(c)], in[ep + g.corner_edge(c)], in[f],
+                      in[ep + g.corner_edge(g.prev_corner(c))]);
+  }
 
-  // phase: G face by G face, what reads only that face: the face points of its P quads, the edge points
-  // of its P interior edges (corner c's runs ep(leaving edge) -> fp, between quads c and next(c)), and the
-  // vertex point of its P face point, whose fan is the face's quads (P corner 4c+2 sits between ep(edge
-  // of c) and ep(edge of prev c); fan edge i is the interior edge of corner b + i - 1; never a crease).
-  parallel_for(nf, threads, [&](Index begin, Index end) {
-    for (Index f = begin; f < end; ++f) {
-      const Index b = g.face_begin(f), n = g.face_end(f) - b;
-      for (Index c = b; c < b + n; ++c) {
-        Vec3 sum = in[vp + g.corner_vertex(c)];
-        sum += in[ep + g.corner_edge(c)];
-        sum += in[f];
-        sum += in[ep + g.corner_edge(g.prev_corner(c))];
-        out[c] = sum * 0.25;
-      }
-      for (Index c = b; c < b + n; ++c) {
-        const Vec3 sum = in[ep + g.corner_edge(c)] + in[f];
-        out[out_interior + c] = (sum + out[c] + out[g.next_corner(c)]) * 0.25;
-      }
-      Vec3 face_sum(0.0), edge_sum(0.0);
-      for (Index c = b; c < b + n; ++c) {
-        face_sum += out[c];
-        if (classic) edge_sum += in[ep + g.corner_edge(g.prev_corner(c))] + in[ep + g.corner_edge(c)];
-      }
-      if (!classic)
-        for (Index i = 0; i < n; ++i) edge_sum += out[out_interior + b + (i == 0 ? n - 1 : i - 1)];
-      out[out_vp + f] = smooth(in[f], edge_sum, face_sum, double(n));
+  // G face f, what reads only that face: the face points of its P quads, the edge points of its P
+  // interior edges (corner c's runs ep(leaving edge) -> fp, between quads c and next(c)), and the vertex
+  // point of its P face point, whose fan is the face's quads (P corner 4c+2 sits between ep(edge of c)
+  // and ep(edge of prev c); fan edge i is the interior edge of corner b + i - 1; never a crease). Each
+  // face point is made once and kept for the next corner's interior edge, not read back.
+  void face(Index f) const {
+    const Index b = g.face_begin(f), n = g.face_end(f) - b;
+    const Vec3 first = face_point(f, b);
+    Vec3 here = first, face_sum(0.0), edge_sum(0.0);
+    for (Index c = b; c < b + n; ++c) {
+      const Index next = g.next_corner(c);
+      const Vec3 there = next == b ? first : face_point(f, next);
+      out[c] = here;
+      out[out_interior + c] = (in[ep + g.corner_edge(c)] + in[f] + here + there) * 0.25;
+      face_sum += here;
+      if (is_classic) edge_sum += in[ep + g.corner_edge(g.prev_corner(c))] + in[ep + g.corner_edge(c)];
+      here = there;
     }
-  });
+    if (!is_classic)
+      for (Index i = 0; i < n; ++i) edge_sum += out[out_interior + b + (i == 0 ? n - 1 : i - 1)];
+    out[out_vp + f] = smooth(in[f], edge_sum, face_sum, double(n));
+  }
 
-  // phase: G edge by G edge: the edge points of its halves and the vertex point of its P edge point.
-  // Half 2e runs vp(v0) -> ep(e) with P quads ca and, on the far side, nb (cb when e is Möbius: face b
-  // then starts at v0 too); half 2e+1 runs ep(e) -> vp(v1). The edge point's fan: corners 4ca+1, 4na+3
-  // and face b's two (in the order its direction gives), edges 2e, interior(ca), 2e+1, interior(cb). A
-  // crease edge's halves are creases.
-  parallel_for(ne, threads, [&](Index begin, Index end) {
-    for (Index e = begin; e < end; ++e) {
-      const Index ca = g.edge_corner(e, 0), cb = g.edge_corner(e, 1), na = g.next_corner(ca);
-      const Vec3& here = in[ep + e];
-      const Vec3& a0 = in[vp + g.corner_vertex(ca)];
-      const Vec3& a1 = in[vp + g.corner_vertex(na)];
-      const Vec3 first = a0 + here;
-      const Vec3 second = here + a1;
-      Vec3& result = out[out_vp + nf + e];
-      if (g.is_crease(e)) {
-        out[out_ep + 2 * e] = first * 0.5;
-        out[out_ep + 2 * e + 1] = second * 0.5;
-        Vec3 sharp_sum(0.0);
-        sharp_sum += a0;
-        sharp_sum += a1;
-        result = (6.0 * here + sharp_sum) * 0.125;
-        continue;
-      }
-      const Index nb = g.next_corner(cb);
-      const bool mobius = g.is_mobius(e);
-      out[out_ep + 2 * e] = (first + out[ca] + out[mobius ? cb : nb]) * 0.25;
-      out[out_ep + 2 * e + 1] = (second + out[na] + out[mobius ? nb : cb]) * 0.25;
-      const Vec3& fa = in[g.corner_face(ca)];
-      const Vec3& fb = in[g.corner_face(cb)];
-      // Face b's quad at its edge's first corner (cb: neighbours fp(b), vp(v_cb)) and at the next one.
-      const Vec3 at_cb = fb + in[vp + g.corner_vertex(cb)];
-      const Vec3 at_nb = in[vp + g.corner_vertex(nb)] + fb;
-      Vec3 face_sum(0.0), edge_sum(0.0);
-      face_sum += out[ca];
-      face_sum += out[na];
-      face_sum += out[mobius ? nb : cb];
-      face_sum += out[mobius ? cb : nb];
-      if (classic) {
-        edge_sum += fa + a0;
-        edge_sum += a1 + fa;
-        edge_sum += mobius ? at_nb : at_cb;
-        edge_sum += mobius ? at_cb : at_nb;
-      } else {
-        edge_sum += out[out_ep + 2 * e];
-        edge_sum += out[out_interior + ca];
-        edge_sum += out[out_ep + 2 * e + 1];
-        edge_sum += out[out_interior + cb];
-      }
-      result = smooth(here, edge_sum, face_sum, 4.0);
+  // G edge e: the edge points of its halves and the vertex point of its P edge point. Half 2e runs
+  // vp(v0) -> ep(e) with P quads ca and, on the far side, nb (cb when e is Möbius: face b then starts at
+  // v0 too); half 2e+1 runs ep(e) -> vp(v1). The edge point's fan: corners 4ca+1, 4na+3 and face b's two
+  // (in the order its direction gives), edges 2e, interior(ca), 2e+1, interior(cb). A crease edge's
+  // halves are creases.
+  void edge(Index e) const {
+    const Index ca = g.edge_corner(e, 0), cb = g.edge_corner(e, 1), na = g.next_corner(ca);
+    const Vec3& here = in[ep + e];
+    const Vec3& a0 = in[vp + g.corner_vertex(ca)];
+    const Vec3& a1 = in[vp + g.corner_vertex(na)];
+    const Vec3 first = a0 + here;
+    const Vec3 second = here + a1;
+    Vec3& result = out[out_vp + nf + e];
+    if (g.is_crease(e)) {
+      out[out_ep + 2 * e] = first * 0.5;
+      out[out_ep + 2 * e + 1] = second * 0.5;
+      Vec3 sharp_sum(0.0);
+      sharp_sum += a0;
+      sharp_sum += a1;
+      result = (6.0 * here + sharp_sum) * 0.125;
+      return;
     }
-  });
+    const Index nb = g.next_corner(cb);
+    const bool mobius = g.is_mobius(e);
+    const Vec3& fa = in[g.corner_face(ca)];
+    const Vec3& fb = in[g.corner_face(cb)];
+    const Vec3& b0 = in[vp + g.corner_vertex(cb)];
+    const Vec3& b1 = in[vp + g.corner_vertex(nb)];
+    // The four face points around, made again rather than read back from `out` (as in vertex_point).
+    const Vec3 fp_ca = face_point(a0, here, fa, in[ep + g.corner_edge(g.prev_corner(ca))]);
+    const Vec3 fp_na = face_point(a1, in[ep + g.corner_edge(na)], fa, here);
+    const Vec3 fp_cb = face_point(b0, here, fb, in[ep + g.corner_edge(g.prev_corner(cb))]);
+    const Vec3 fp_nb = face_point(b1, in[ep + g.corner_edge(nb)], fb, here);
+    const Vec3 half0 = (first + fp_ca + (mobius ? fp_cb : fp_nb)) * 0.25;
+    const Vec3 half1 = (second + fp_na + (mobius ? fp_nb : fp_cb)) * 0.25;
+    out[out_ep + 2 * e] = half0;
+    out[out_ep + 2 * e + 1] = half1;
+    // Face b's quad at its edge's first corner (cb: neighbours fp(b), vp(v_cb)) and at the next one.
+    const Vec3 at_cb = fb + b0;
+    const Vec3 at_nb = b1 + fb;
+    Vec3 face_sum(0.0), edge_sum(0.0);
+    face_sum += fp_ca;
+    face_sum += fp_na;
+    face_sum += mobius ? fp_nb : fp_cb;
+    face_sum += mobius ? fp_cb : fp_nb;
+    if (is_classic) {
+      edge_sum += fa + a0;
+      edge_sum += a1 + fa;
+      edge_sum += mobius ? at_nb : at_cb;
+      edge_sum += mobius ? at_cb : at_nb;
+    } else {
+      edge_sum += half0;
+      edge_sum += out[out_interior + ca];
+      edge_sum += half1;
+      edge_sum += out[out_interior + cb];
+    }
+    result = smooth(here, edge_sum, face_sum, 4.0);
+  }
 
-  // phase: G vertex by G vertex, the vertex points of P's vertex points: G's fan, quad c for corner c
-  // (P corner 4c, between ep(edge of c) and ep(edge of prev c)), half 2e or 2e+1 for edge e; each half
-  // keeps its parent's crease flag.
+  // G vertex v, the vertex point of P's vertex point: G's fan, quad c for corner c (P corner 4c, between
+  // ep(edge of c) and ep(edge of prev c)), half 2e or 2e+1 for edge e; each half keeps its parent's crease
+  // flag.
+  Vec3 vertex_point(Index v, VertexRules rules) const {
+    const Vec3& here = in[vp + v];
+    const auto edges = g.vertex_edges(v);
+    Index sharp_count = 0;
+    for (Index e : edges) sharp_count += g.is_crease(e) ? 1 : 0;
+    if (rules.is_fixed(edges.size(), g.vertex_corners(v).size(), sharp_count)) return here;
+    if (sharp_count == 2) {
+      Vec3 sharp_sum(0.0);
+      for (Index e : edges)
+        if (g.is_crease(e)) sharp_sum += in[ep + e];
+      return (6.0 * here + sharp_sum) * 0.125;
+    }
+    // The face points around are made again from what the edge sum reads anyway, rather than read back
+    // from `out`: scattered reads of a region far larger than the cache were most of this phase's time.
+    Vec3 face_sum(0.0), edge_sum(0.0);
+    for (Index c : g.vertex_corners(v)) {
+      const Vec3& leaving = in[ep + g.corner_edge(c)];
+      const Vec3& arriving = in[ep + g.corner_edge(g.prev_corner(c))];
+      face_sum += face_point(here, leaving, in[g.corner_face(c)], arriving);
+      if (is_classic) edge_sum += leaving + arriving;
+    }
+    if (!is_classic)
+      for (Index e : edges) edge_sum += out[out_ep + 2 * e + (g.edge_ends(e)[0] == v ? 0 : 1)];
+    return smooth(here, edge_sum, face_sum, double(edges.size()));
+  }
+};
+
+}  // namespace
+
+// Three phases, each of which reads only what the ones before it wrote: G's faces, edges, vertices.
+template <class Grandparent>
+void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, VertexRules rules,
+                            std::span<Vec3> out, int threads) {
+  const ChildPass<Grandparent> pass{g, in, out, rules.rule == SubdivisionRule::classic};
+  parallel_for(g.num_faces(), threads, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f) pass.face(f);
+  });
+  parallel_for(g.num_edges(), threads, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e) pass.edge(e);
+  });
+  const Index vertex_points = pass.out_vp + pass.nf + pass.ne;
   parallel_for(g.num_vertices(), threads, [&](Index begin, Index end) {
-    for (Index v = begin; v < end; ++v) {
-      const Vec3& here = in[vp + v];
-      Vec3& result = out[out_vp + nf + ne + v];
-      const auto edges = g.vertex_edges(v);
-      Index sharp_count = 0;
-      for (Index e : edges) sharp_count += g.is_crease(e) ? 1 : 0;
-      if (rules.is_fixed(edges.size(), g.vertex_corners(v).size(), sharp_count)) {
-        result = here;
-      } else if (sharp_count == 2) {
-        Vec3 sharp_sum(0.0);
-        for (Index e : edges)
-          if (g.is_crease(e)) sharp_sum += in[ep + e];
-        result = (6.0 * here + sharp_sum) * 0.125;
-      } else {
-        Vec3 face_sum(0.0), edge_sum(0.0);
-        for (Index c : g.vertex_corners(v)) {
-          face_sum += out[c];
-          if (classic) edge_sum += in[ep + g.corner_edge(c)] + in[ep + g.corner_edge(g.prev_corner(c))];
-        }
-        if (!classic)
-          for (Index e : edges) edge_sum += out[out_ep + 2 * e + (g.edge_ends(e)[0] == v ? 0 : 1)];
-        result = smooth(here, edge_sum, face_sum, double(edges.size()));
-      }
-    }
+    for (Index v = begin; v < end; ++v) pass.out[vertex_points + v] = pass.vertex_point(v, rules);
   });
 }
 

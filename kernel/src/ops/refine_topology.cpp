@@ -75,8 +75,8 @@ void child_fan_offsets(const Parent& p, Level& child) {
   const Index nf = p.num_faces(), ne = p.num_edges(), nv = p.num_vertices();
   auto& co = child.fan_corner_offsets;
   auto& eo = child.fan_edge_offsets;
-  co.resize(size_t(nf) + ne + nv + 1);
-  eo.resize(co.size());
+  resize_for_overwrite(co, size_t(nf) + ne + nv + 1);
+  resize_for_overwrite(eo, co.size());
   co[0] = eo[0] = 0;
   for (Index f = 0; f < nf; ++f) co[f + 1] = eo[f + 1] = p.face_end(f);
   Index c = co[nf], e = eo[nf];
@@ -96,8 +96,8 @@ template <class Parent>
 void child_fans(const Parent& p, Level& child, int threads) {
   const Index nf = p.num_faces(), ne = p.num_edges();
   child_fan_offsets(p, child);
-  child.fan_corners.resize(child.fan_corner_offsets.back());
-  child.fan_edges.resize(child.fan_edge_offsets.back());
+  resize_for_overwrite(child.fan_corners, child.fan_corner_offsets.back());
+  resize_for_overwrite(child.fan_edges, child.fan_edge_offsets.back());
   Index* fc = child.fan_corners.data();
   Index* fe = child.fan_edges.data();
   const Index* co = child.fan_corner_offsets.data();
@@ -147,6 +147,14 @@ void child_fans(const Parent& p, Level& child, int threads) {
   });
 }
 
+// Frees the edges and fans of a level built without them (left by an earlier build, see
+// Refinement::rebuild).
+void drop_adjacency(Level& level) {
+  level.edge_corners = {};
+  level.edge_flags = {};
+  level.fan_corner_offsets = level.fan_corners = level.fan_edge_offsets = level.fan_edges = {};
+}
+
 }  // namespace
 
 template <class Parent>
@@ -155,17 +163,15 @@ void refine_topology(const Parent& p, Level& child, LevelDetail detail, int thre
   const bool full = detail == LevelDetail::full;
   child.vertex_count = p.num_faces() + p.num_edges() + p.num_vertices();
   child.edge_count = Index(2 * size_t(p.num_edges()) + nc);
-  child.corner_vertices.resize(detail == LevelDetail::counts ? 0 : 4 * nc);
-  child.corner_edges.resize(full ? 4 * nc : 0);
+  resize_for_overwrite(child.corner_vertices, detail == LevelDetail::counts ? 0 : 4 * nc);
+  resize_for_overwrite(child.corner_edges, full ? 4 * nc : 0);
   if (detail != LevelDetail::counts) child_corners(p, child, full, threads);
   if (!full) {
-    child.edge_corners = {};
-    child.edge_flags = {};
-    child.fan_corner_offsets = child.fan_corners = child.fan_edge_offsets = child.fan_edges = {};
+    drop_adjacency(child);
     return;
   }
-  child.edge_corners.resize(child.edge_count);
-  child.edge_flags.resize(child.edge_count);
+  resize_for_overwrite(child.edge_corners, child.edge_count);
+  resize_for_overwrite(child.edge_flags, child.edge_count);
   child_edges(p, child, threads);
   child_fans(p, child, threads);
 }
@@ -180,7 +186,9 @@ void refine_grandchild_quads(const Grandparent& g, Level& grandchild, int thread
   const Index ep = nc, vp = nc + child_edges;  // the grandchild's edge and vertex points
   grandchild.vertex_count = vp + nf + ne + g.num_vertices();
   grandchild.edge_count = 2 * child_edges + 4 * nc;
-  grandchild.corner_vertices.resize(16 * size_t(nc));
+  resize_for_overwrite(grandchild.corner_vertices, 16 * size_t(nc));
+  grandchild.corner_edges = {};
+  drop_adjacency(grandchild);
   parallel_for(nc, threads, [&](Index begin, Index end) {
     for (Index c = begin; c < end; ++c) {
       const Index v = g.corner_vertex(c), pc = g.prev_corner(c);

@@ -67,28 +67,36 @@ PolygonSoup without_holes(const Mesh& full, const std::vector<bool>& is_base_fac
 }  // namespace
 
 Refinement::Refinement(const Mesh& base, int levels, BoundaryMode boundary, int threads,
-                       const CreaseOptions& creases)
-    : base_vertices_(base.num_vertices()),
-      base_faces_(base.num_faces()),
-      base_corners_(base.num_corners()),
-      base_edges_(base.num_edges()),
-      base_sharp_edges_(sharp_edges(base)),
-      base_edge_weights_(base.edge_sharpness_weights()),
-      base_vertex_weights_(base.vertex_sharpness_weights()),
-      boundary_(boundary),
-      creases_(creases),
-      is_hole_(hole_faces(base, boundary)) {
+                       const CreaseOptions& creases) {
+  rebuild(base, levels, boundary, threads, creases);
+}
+
+void Refinement::rebuild(const Mesh& base, int levels, BoundaryMode boundary, int threads,
+                         const CreaseOptions& creases) {
   if (levels < 1)
     throw InvalidInputError("Refinement: levels must be at least 1, got " + std::to_string(levels));
+  base_vertices_ = base.num_vertices();
+  base_faces_ = base.num_faces();
+  base_corners_ = base.num_corners();
+  base_edges_ = base.num_edges();
+  base_sharp_edges_ = sharp_edges(base);
+  base_edge_weights_ = base.edge_sharpness_weights();
+  base_vertex_weights_ = base.vertex_sharpness_weights();
+  boundary_ = boundary;
+  creases_ = creases;
+  is_hole_ = hole_faces(base, boundary);
   levels_.resize(size_t(levels));
   base_holes_ = holes_of(base);
   if (!base_holes_.empty()) {
     is_hole_.resize(base.num_faces(), false);
     for (Index f = 0; f < base.num_faces(); ++f) is_hole_[f] = is_hole_[f] || base_holes_[f];
   }
+  sharp_.clear();
   SharpLevel features = base_sharp_level(base, creases);
   if (!features.empty()) sharp_.push_back(std::move(features));
   build_levels(base, threads);
+  kept_vertices_.clear();
+  output_vertices_.clear();
   if (!is_hole_.empty()) find_kept_vertices(base);
 }
 
@@ -175,7 +183,7 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
   for (size_t k = 0; k < levels_.size(); ++k) {
     std::span<Vec3> target = out;
     if (k + 1 < levels_.size()) {
-      levels_[k].positions.resize(levels_[k].vertex_count);
+      resize_for_overwrite(levels_[k].positions, levels_[k].vertex_count);
       target = levels_[k].positions;
     }
     if (k == 0)
@@ -195,7 +203,7 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
 }
 
 std::span<const Vec3> Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, int threads) {
-  levels_.back().positions.resize(num_vertices());
+  resize_for_overwrite(levels_.back().positions, num_vertices());
   refine_positions(base, rule, levels_.back().positions, threads);
   return levels_.back().positions;
 }

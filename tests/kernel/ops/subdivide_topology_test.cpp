@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <random>
 
 #include "nome/error.hpp"
@@ -119,4 +120,35 @@ TEST_CASE("a refinement rejects levels below 1 and a base of another topology", 
   Mesh sharper = cube;
   sharper.set_sharp(0, true);
   CHECK_FALSE(refinement.fits(sharper));
+}
+
+TEST_CASE("a refinement rebuilt for another base gives what a new one gives", "[kernel]") {
+  // Bases in turn, each after a different one, with levels up and down: nothing of the last build may
+  // leak into the next (weights, holes, kept vertices, the roles of the levels).
+  Mesh weighted = build_mesh(test::torus(6, 4));
+  weighted.set_edge_sharpness(0, 1.5f);
+  weighted.set_vertex_sharpness(3, 2.0f);
+  Mesh holed = build_mesh(test::grid(4, 3));
+  holed.set_hole(5, true);
+  std::vector<std::pair<Mesh, int>> bases = {{weighted, 3},
+                                             {build_mesh(test::mobius_band(7, 2)), 4},
+                                             {holed, 2},
+                                             {build_mesh(test::cube()), 1},
+                                             {build_mesh(test::klein_bottle(6, 4)), 3},
+                                             {weighted, 2}};
+  for (BoundaryMode boundary : {BoundaryMode::edge_only, BoundaryMode::none}) {
+    Refinement kept(build_mesh(test::tetrahedron()), 3, boundary);
+    for (const auto& [base, levels] : bases) {
+      kept.rebuild(base, levels, boundary);
+      Refinement fresh(base, levels, boundary);
+      CHECK(kept.num_vertices() == fresh.num_vertices());
+      CHECK(std::ranges::equal(kept.quad_vertices(), fresh.quad_vertices()));
+      const auto kept_positions = kept.refine_positions(base, SubdivisionRule::classic);
+      CHECK(std::ranges::equal(kept_positions, fresh.refine_positions(base, SubdivisionRule::classic)));
+      const Mesh a = kept.mesh(base, {kept_positions.begin(), kept_positions.end()});
+      const Mesh b = fresh.mesh(base, {kept_positions.begin(), kept_positions.end()});
+      CHECK(a.num_vertices() == b.num_vertices());
+      CHECK(a.corner_vertices() == b.corner_vertices());
+    }
+  }
 }

@@ -54,6 +54,12 @@ class Refinement {
   Refinement& operator=(Refinement&&) noexcept;
   ~Refinement();
 
+  // The topology pass again, for `base` (any topology), into this refinement's blocks: the result and
+  // the throws of a new Refinement, without the fresh pages (first touches cost far more than writes)
+  // where the new levels fit in the old blocks.
+  void rebuild(const Mesh& base, int levels, BoundaryMode boundary = BoundaryMode::edge_only, int threads = 1,
+               const CreaseOptions& creases = {});
+
   int levels() const;
   BoundaryMode boundary() const { return boundary_; }
   const CreaseOptions& creases() const { return creases_; }
