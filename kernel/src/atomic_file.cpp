@@ -5,10 +5,10 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <random>
 
 #include "nome/error.hpp"
+#include "nome/file_blocks.hpp"
 
 namespace nome {
 namespace {
@@ -38,18 +38,26 @@ void sync_path(const std::filesystem::path& path) {
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& writer) {
+namespace {
+
+// Fills the temporary file by `fill` through FileBlocks, syncs it and renames it over `path`.
+void replace_atomically(const std::filesystem::path& path, const std::function<void(FileBlocks&)>& fill) {
   const std::filesystem::path tmp = temporary_sibling(path);
   try {
-    {
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      if (!out) throw IoError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
-      writer(out);
-      out.flush();
-      if (!out) throw IoError(path.string() + ": write failed (disk full?)");
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    if (fd < 0) throw IoError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+    int error = 0;
+    try {
+      FileBlocks blocks(fd);
+      fill(blocks);
+      error = blocks.finish();
+      if (error == 0 && ::fsync(fd) != 0) error = errno;
+    } catch (...) {
+      ::close(fd);
+      throw;
     }
-    sync_path(tmp);
+    ::close(fd);
+    if (error != 0) throw IoError(path.string() + ": write failed (" + std::strerror(error) + ")");
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) throw IoError(path.string() + ": cannot replace (" + ec.message() + ")");
@@ -60,6 +68,20 @@ void write_file_atomically(const std::filesystem::path& path,
     std::filesystem::remove(tmp, ignored);
     throw;
   }
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path,
+                           const std::function<void(std::ostream&)>& writer) {
+  replace_atomically(path, [&](FileBlocks& blocks) {
+    std::ostream out(&blocks);
+    writer(out);
+  });
+}
+
+void write_file_in_blocks(const std::filesystem::path& path, const std::function<void(FileBlocks&)>& writer) {
+  replace_atomically(path, writer);
 }
 
 }  // namespace nome

@@ -1,82 +1,63 @@
 #include <charconv>
-#include <vector>
+#include <ostream>
 
 #include "nome/atomic_file.hpp"
 #include "nome/io/obj.hpp"
+#include "nome/io/print_double.hpp"
 
 namespace nome {
 namespace {
 
-// Lines gathered into blocks of about this many bytes, one stream write each.
-constexpr std::size_t obj_block = std::size_t(1) << 20;
-constexpr std::size_t longest_line = 96;
+// Room for a vertex line: "v", three numbers of the 32 bytes print_double_g17 may take, spaces, newline.
+constexpr std::size_t longest_line = 104;
 
-// Positions as printf's %.17g (to_chars with a precision is specified to match it), integers in decimal.
-char* put_double(char* at, double value) {
-  return std::to_chars(at, at + 32, value, std::chars_format::general, 17).ptr;
-}
 char* put_index(char* at, Index value) {
   return std::to_chars(at, at + 16, value).ptr;
 }
 
-class BlockWriter {
- public:
-  explicit BlockWriter(std::ostream& out) : out_(out), block_(obj_block + longest_line), at_(block_.data()) {}
-  ~BlockWriter() { flush(); }
-  // Room for one line of up to longest_line bytes (a face of more corners flushes between corners).
-  char*& at() {
-    if (size_t(at_ - block_.data()) >= obj_block) flush();
-    return at_;
-  }
-  void flush() {
-    out_.write(block_.data(), at_ - block_.data());
-    at_ = block_.data();
-  }
-
- private:
-  std::ostream& out_;
-  std::vector<char> block_;
-  char* at_;
-};
-
 // Any surface with num_vertices(), num_faces(), face_vertices(f) and position(v): a Mesh or a QuadSurface.
 template <class Surface>
-void write_obj_surface(std::ostream& out, const Surface& surface) {
-  out << "# written by nome: " << surface.num_vertices() << " vertices, " << surface.num_faces()
-      << " faces\n";
-  BlockWriter writer(out);
+void write_obj_surface(FileBlocks& file, const Surface& surface) {
+  std::ostream(&file) << "# written by nome: " << surface.num_vertices() << " vertices, "
+                      << surface.num_faces() << " faces\n";
   for (Index v = 0; v < surface.num_vertices(); ++v) {
     const Vec3& p = surface.position(v);
-    char*& at = writer.at();
+    char* at = file.room(longest_line);
     *at++ = 'v';
     for (int k = 0; k < 3; ++k) {
       *at++ = ' ';
-      at = put_double(at, p[k]);
+      at = print_double_g17(at, p[k]);
     }
     *at++ = '\n';
+    file.commit(at);
   }
+  // Each corner " index" takes at most 11 bytes; a face of more corners than fit is written in pieces.
   for (Index f = 0; f < surface.num_faces(); ++f) {
-    *writer.at()++ = 'f';
+    char* at = file.room(2);
+    *at++ = 'f';
     for (Index v : surface.face_vertices(f)) {
-      char*& at = writer.at();
+      file.commit(at);
+      at = file.room(12);
       *at++ = ' ';
       at = put_index(at, v + 1);
     }
-    *writer.at()++ = '\n';
+    *at++ = '\n';
+    file.commit(at);
   }
 }
 
 }  // namespace
 
 void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSubdivisionTags& tags) {
-  write_file_atomically(path, [&](std::ostream& out) {
-    write_obj_surface(out, mesh);
+  write_file_in_blocks(path, [&](FileBlocks& file) {
+    write_obj_surface(file, mesh);
+    std::ostream out(&file);
     write_obj_tags(out, mesh, tags);
   });
 }
 
 void write_obj(const std::filesystem::path& path, const QuadSurface& surface) {
-  write_file_atomically(path, [&](std::ostream& out) { write_obj_surface(out, surface); });
+  write_file_in_blocks(path, [&](FileBlocks& file) { write_obj_surface(file, surface); });
 }
 
 }  // namespace nome

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <vector>
+#include <ostream>
 
 #include <glm/geometric.hpp>
 
@@ -18,10 +18,7 @@ Vec3 unit_or_zero(const Vec3& n) {
   return len > 0.0 ? n / len : Vec3(0.0);
 }
 
-// Binary records gathered into blocks of this many bytes: one stream write per block, not twelve per
-// triangle (the stream's per-call cost was most of the writer's time).
-constexpr std::size_t stl_block = std::size_t(1) << 20;
-constexpr std::size_t record_bytes = 50;
+constexpr std::size_t header_bytes = 84, record_bytes = 50;
 
 char* put_vec(char* at, const Vec3& v) {
   const float f[3] = {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
@@ -41,21 +38,21 @@ void put_ascii_facet(std::ostream& out, const Vec3& n, const Vec3* const (&corne
 }
 
 // Any surface with num_faces(), face_vertices(f), position(v) and positions: a Mesh or a QuadSurface.
+// Binary records go straight into the file's blocks; ASCII goes through a stream over them.
 template <class Surface>
-void write_stl_surface(std::ostream& out, const Surface& surface, StlFormat format,
-                       const Progress& progress) {
+void write_stl_surface(FileBlocks& file, const Surface& surface, StlFormat format, const Progress& progress) {
   std::uint32_t triangles = 0;
   for (Index f = 0; f < surface.num_faces(); ++f) triangles += surface.face_degree(f) - 2;
-  std::vector<char> block;
+  std::ostream ascii(&file);
   if (format == StlFormat::binary) {
-    block.resize(stl_block + record_bytes);
-    std::memset(block.data(), 0, 84);
-    std::snprintf(block.data(), 80, "nome binary STL");
-    std::memcpy(block.data() + 80, &triangles, 4);
+    char* at = file.room(header_bytes);
+    std::memset(at, 0, header_bytes);
+    std::snprintf(at, 80, "nome binary STL");
+    std::memcpy(at + 80, &triangles, 4);
+    file.commit(at + header_bytes);
   } else {
-    out << "solid nome\n";
+    ascii << "solid nome\n";
   }
-  char* at = block.data() + (block.empty() ? 0 : 84);
   for (Index f = 0; f < surface.num_faces(); ++f) {
     if (f % (Index(1) << 16) == 0) progress("writing STL", double(f) / surface.num_faces());
     const auto vs = surface.face_vertices(f);
@@ -64,30 +61,24 @@ void write_stl_surface(std::ostream& out, const Surface& surface, StlFormat form
       const Vec3* const corners[3] = {&surface.position(vs[0]), &surface.position(vs[i]),
                                       &surface.position(vs[i + 1])};
       if (format == StlFormat::ascii) {
-        put_ascii_facet(out, n, corners);
+        put_ascii_facet(ascii, n, corners);
         continue;
       }
-      at = put_vec(at, n);
+      char* at = put_vec(file.room(record_bytes), n);
       for (const Vec3* p : corners) at = put_vec(at, *p);
       *at++ = 0;
       *at++ = 0;
-      if (size_t(at - block.data()) >= stl_block) {
-        out.write(block.data(), at - block.data());
-        at = block.data();
-      }
+      file.commit(at);
     }
   }
-  if (format == StlFormat::binary)
-    out.write(block.data(), at - block.data());
-  else
-    out << "endsolid nome\n";
+  if (format == StlFormat::ascii) ascii << "endsolid nome\n";
 }
 
 }  // namespace
 
 void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat format,
                const Progress& progress) {
-  write_file_atomically(path, [&](std::ostream& out) {
+  write_file_in_blocks(path, [&](FileBlocks& out) {
     struct MeshSurface {
       const Mesh& mesh;
       std::span<const Vec3> positions;
@@ -102,7 +93,7 @@ void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat fo
 
 void write_stl(const std::filesystem::path& path, const QuadSurface& surface, StlFormat format,
                const Progress& progress) {
-  write_file_atomically(path, [&](std::ostream& out) { write_stl_surface(out, surface, format, progress); });
+  write_file_in_blocks(path, [&](FileBlocks& out) { write_stl_surface(out, surface, format, progress); });
 }
 
 }  // namespace nome

@@ -18,8 +18,12 @@ void check_distance(const char* who, double distance) {
                             std::to_string(distance));
 }
 
-// Output vertex pair of each input vertex: vertices without faces get none.
+// Output vertex pair of each input vertex: vertices without faces get none. Empty when every vertex has
+// faces (the usual case): the ranks are then the identity, and an array of them would cost fresh pages.
 std::vector<Index> vertex_ranks(const Mesh& mesh, Index& count) {
+  count = 0;
+  for (Index v = 0; v < mesh.num_vertices(); ++v) count += mesh.is_isolated_vertex(v) ? 0 : 1;
+  if (count == mesh.num_vertices()) return {};
   std::vector<Index> rank(mesh.num_vertices(), no_index);
   count = 0;
   for (Index v = 0; v < mesh.num_vertices(); ++v)
@@ -124,6 +128,7 @@ class OffsetBuilder {
  private:
   // Without isolated vertices (the usual case) the ranks are the identity: no lookup.
   Index out_vertex(Index v, int side) const { return 2 * (ranks_are_identity_ ? v : rank_[v]) + Index(side); }
+  bool has_output(Index v) const { return ranks_are_identity_ || rank_[v] != no_index; }
   // The side of v used by corner c's positive copy.
   int positive_side(Index c) const { return signs_all_positive_ || m_.corner_sign(c) > 0 ? 0 : 1; }
   // Negative copy of face f: corner i holds the vertex of parent corner (n - i) % n, and its edge is the
@@ -295,7 +300,7 @@ class OffsetBuilder {
     a.fan_corner_offsets[0] = 0;
     Index total = 0;
     for (Index v = 0; v < nv; ++v) {
-      if (rank_[v] == no_index) continue;
+      if (!has_output(v)) continue;
       const Index k = Index(m_.vertex_corners(v).size()) + (m_.is_boundary_vertex(v) ? 2 : 0);
       a.fan_corner_offsets[out_vertex(v, 0) + 1] = total += k;
       a.fan_corner_offsets[out_vertex(v, 1) + 1] = total += k;
@@ -304,7 +309,7 @@ class OffsetBuilder {
     resize_for_overwrite(a.fan_corners, a.fan_corner_offsets.back());
     resize_for_overwrite(a.fan_edges, a.fan_edge_offsets.back());
     for (Index v = 0; v < nv; ++v) {
-      if (rank_[v] == no_index) continue;
+      if (!has_output(v)) continue;
       const auto corners = m_.vertex_corners(v);
       const auto edges = m_.vertex_edges(v);
       // Both sides at once (each element's side is looked up once): v+ and v- are consecutive.
