@@ -138,6 +138,10 @@ void frame_figures() {
   while (!view.shown()) frame(0.0);
   camera.fit(view.shown_mesh()->positions(), double(size.x) / size.y);
   const Index faces = view.shown_mesh()->num_faces();
+  const render::DisplayTopology& topology = *view.shown()->display.topology;
+  std::printf("  at %u faces: %u GL vertices (%.2f per mesh vertex), %zu triangles\n", faces,
+              topology.num_gl_vertices(), double(topology.num_gl_vertices()) / topology.num_vertices,
+              topology.triangles.size() / 3);
   std::vector<double> draw_ms, draw_cpu, frame_ms, latency_ms;
   for (int i = 0; i < 5; ++i) {
     const auto start = Clock::now();
