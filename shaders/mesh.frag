@@ -12,7 +12,8 @@ uniform vec3 front_color;
 uniform vec3 back_color;
 uniform vec3 selection_color;
 uniform bool different_back_color;
-uniform bool use_face_colors;
+uniform bool use_face_colors;  // and some face has a colour of its own
+uniform bool has_selection;
 uniform samplerBuffer face_normals;  // three floats per face
 uniform samplerBuffer face_colors;   // RGBA per face; alpha 0 = the front colour
 uniform usamplerBuffer face_flags;   // bit 0: selected
@@ -53,7 +54,7 @@ void main() {
     gl_FragDepth = gl_FragCoord.z + 2.0 * fwidth(gl_FragCoord.z) + 1e-6;
     return;
   }
-  if ((texelFetch(face_flags, face).r & 1u) != 0u) base = mix(base, selection_color, 0.65);
+  if (has_selection && (texelFetch(face_flags, face).r & 1u) != 0u) base = mix(base, selection_color, 0.65);
   fragment = vec4(shade(base, n, view_position), opacity);
   // Back faces lose depth ties: along a silhouette the front and back triangles meet at equal depth,
   // and a back-colour fringe there would suggest a one-sided surface where there is none.

@@ -1,5 +1,6 @@
 #include "render/mesh_buffers.hpp"
 
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -120,6 +121,7 @@ void MeshBuffers::set_face_colors(std::span<const std::array<std::uint8_t, 4>> c
   if (colors.size() != topology_->num_faces)
     throw InvalidInputError("MeshBuffers::set_face_colors: " + std::to_string(colors.size()) +
                             " colours for " + std::to_string(topology_->num_faces) + " faces");
+  has_face_colors_ = std::any_of(colors.begin(), colors.end(), [](const auto& c) { return c[3] > 0; });
   glBindBuffer(GL_TEXTURE_BUFFER, face_color_buffer_);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(colors.size() * 4), colors.data());
 }
@@ -133,6 +135,7 @@ void MeshBuffers::set_selected_faces(std::span<const Index> faces) {
                               std::to_string(num_faces));
     flags[f] = 1;
   }
+  has_selection_ = !faces.empty();
   glBindBuffer(GL_TEXTURE_BUFFER, face_flag_buffer_);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(flags.size()), flags.data());
 }

@@ -39,6 +39,9 @@ class MeshBuffers {
   SegmentRange all_edges() const { return topology_->all_edges; }
   SegmentRange mobius_edges() const { return topology_->mobius_edges; }
   SegmentRange border_edges() const { return topology_->border_edges; }
+  // Whether some face has a colour of its own / is selected: else the fragments skip those tables.
+  bool has_face_colors() const { return has_face_colors_; }
+  bool has_selection() const { return has_selection_; }
   GLuint face_color_texture() const { return face_color_texture_; }
   GLuint face_flag_texture() const { return face_flag_texture_; }
   // Three floats per face (an R32F buffer texture).
@@ -56,6 +59,7 @@ class MeshBuffers {
   GLuint face_normal_buffer_ = 0, face_color_buffer_ = 0, face_flag_buffer_ = 0;
   GLuint face_normal_texture_ = 0, face_color_texture_ = 0, face_flag_texture_ = 0;
   std::vector<glm::vec3> extra_scratch_;  // kept for its block
+  bool has_face_colors_ = false, has_selection_ = false;
   BoundingBox bounds_;
 };
 

@@ -75,7 +75,8 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     p.set("back_color", settings.back_color);
     p.set("selection_color", settings.selection_color);
     p.set("different_back_color", settings.back_faces == BackFacePolicy::different ? 1 : 0);
-    p.set("use_face_colors", settings.uses_face_colors ? 1 : 0);
+    p.set("use_face_colors", settings.uses_face_colors && mesh.has_face_colors() ? 1 : 0);
+    p.set("has_selection", mesh.has_selection() ? 1 : 0);
     p.set("opacity", 1.0f);
     p.set("section_plane", settings.section_plane);
     p.set("fills_section", settings.fills_section && settings.section_plane != glm::vec4(0.0f) ? 1 : 0);

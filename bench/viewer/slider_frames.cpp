@@ -158,6 +158,23 @@ void frame_figures() {
     glFinish();
     vertex_cpu.push_back(cpu_ms() - cpu);
   }
+  // The floor: the mesh's own vertices and the same number of triangles over them, trivially shaded.
+  std::vector<std::uint32_t> triangles(topology.triangles);
+  for (std::uint32_t& u : triangles)
+    if (u >= topology.num_vertices)
+      u = topology.extra_vertices[u - topology.num_vertices] & ~render::corner_sign_bit;
+  const auto& positions = view.shown()->display.positions->vertices;
+  const TrivialDraw floor = trivial_draw(
+      positions, triangles, camera.projection_matrix(double(size.x) / size.y) * camera.view_matrix(), size);
+  const TrivialDraw tiny =
+      trivial_draw(positions, triangles,
+                   camera.projection_matrix(double(size.x) / size.y) * camera.view_matrix(), {16, 16});
+  std::printf(
+      "  the same %zu triangles with a trivial shader (llvmpipe's floor): %.1f ms (%.1f ms CPU, all "
+      "threads); "
+      "into 16x16 pixels %.1f ms (%.1f ms CPU) [%s]\n",
+      triangles.size() / 3, floor.wall_ms, floor.cpu_ms, tiny.wall_ms, tiny.cpu_ms, load().c_str());
+  framebuffer.bind();
   // From the slider's change to the frame that shows its result: the job runs beside the frames.
   for (int i = 0; i < 11; ++i) {
     session.set_parameter("t_r", i % 2 ? 0.35 : 0.36);
