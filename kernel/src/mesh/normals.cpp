@@ -4,8 +4,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "mesh/face_normal.hpp"
-
 namespace nome {
 
 namespace {
@@ -51,12 +49,26 @@ void compute_normals(const Mesh& mesh, Normals& out) {
   // corner's sign right away (streaming reads; gathering over the fans instead reads three arrays at
   // random per corner).
   for (Index f = 0; f < mesh.num_faces(); ++f) {
-    const Vec3 n = unit_face_normal(p, corners, offsets[f], offsets[f + 1]);
-    out.faces[f] = n;
-    if (n == Vec3(0.0)) {
+    // Newell's normal and the longest side in one walk round the face. The degeneracy threshold is
+    // relative: area against the squared length of the longest side.
+    Vec3 n(0.0);
+    double extent_squared = 0.0;
+    const Vec3* a = &p[corners[offsets[f + 1] - 1]];
+    for (Index c = offsets[f]; c < offsets[f + 1]; ++c) {
+      const Vec3& b = p[corners[c]];
+      n += newell_term(*a, b);
+      const Vec3 side = b - *a;
+      extent_squared = std::max(extent_squared, glm::dot(side, side));
+      a = &b;
+    }
+    const double len = glm::length(n);
+    if (!(len > 1e-14 * extent_squared) || extent_squared == 0.0) {
+      out.faces[f] = Vec3(0.0);
       out.degenerate_faces.push_back(f);
       continue;
     }
+    n *= 1.0 / len;
+    out.faces[f] = n;
     for (Index c = offsets[f]; c < offsets[f + 1]; ++c) {
       Vec3& sum = out.vertices[corners[c]];
       if (signs[c] > 0)

@@ -127,7 +127,7 @@ Mesh& SolidStages::offset_stage(const Mesh& in, const PipelineSettings& s) {
   }
   progress_("offset", 0.0);
   const Normals& normals = offset_.normals;
-  compute_normals(in, offset_.normals, s.threads);
+  compute_normals(in, offset_.normals);
   progress_("offset", 0.3);
   if (std::string warning = degeneracy_warning(in, normals); !warning.empty())
     warnings_.push_back("offset: " + warning);

@@ -27,10 +27,8 @@ struct Normals {
 Normals compute_normals(const Mesh& mesh);
 // The same into `out`, reusing its arrays' blocks (no fresh pages for a mesh no larger than the last).
 void compute_normals(const Mesh& mesh, Normals& out);
-// The same on up to `threads` threads, bit for bit: each vertex adds its faces' normals in face order.
-void compute_normals(const Mesh& mesh, Normals& out, int threads);
-// The same normals rounded to single precision (what a GPU draws with), on up to `threads` threads;
-// `scratch` keeps the double-precision face normals and the degenerate elements.
+// The same normals rounded to single precision (what a GPU draws with), rounded on up to `threads`
+// threads; `scratch` keeps the double-precision normals and the degenerate elements.
 void compute_float_normals(const Mesh& mesh, Normals& scratch, Buffer<glm::vec3>& faces,
                            Buffer<glm::vec3>& vertices, int threads);
 
