@@ -3,30 +3,47 @@
 // Klein bottle) both colours meet along the Möbius edges, which is how one-sidedness shows.
 in vec3 view_position;
 in vec3 view_normal;
+in float pinch;
 flat in uint face_id;
 
+uniform mat4 model_view;
+uniform bool use_flat_normals;
 uniform vec3 front_color;
 uniform vec3 back_color;
 uniform vec3 selection_color;
 uniform bool different_back_color;
-uniform bool use_face_colors;
-uniform samplerBuffer face_colors;  // RGBA per face; alpha 0 = the front colour
-uniform usamplerBuffer face_flags;  // bit 0: selected
+uniform bool use_face_colors;  // and some face has a colour of its own
+uniform bool has_selection;
+uniform samplerBuffer face_normals;  // three floats per face
+uniform samplerBuffer face_colors;   // RGBA per face; alpha 0 = the front colour
+uniform usamplerBuffer face_flags;   // bit 0: selected
 uniform float opacity;
 uniform bool fills_section;
 uniform vec3 section_color;
 
 out vec4 fragment;
 
+vec3 face_normal(int face) {
+  int at = 3 * face;
+  vec3 n = vec3(texelFetch(face_normals, at).r, texelFetch(face_normals, at + 1).r,
+                texelFetch(face_normals, at + 2).r);
+  return mat3(model_view) * n;
+}
+
 void main() {
+  int face = int(face_id);
   vec3 n = view_normal;
+  if (use_flat_normals)
+    n = face_normal(face);
+  else if (pinch > 0.0)
+    n += pinch * face_normal(face);
   // A degenerate face has a zero normal: fall back to the triangle's own plane.
   if (dot(n, n) < 1e-20) n = cross(dFdx(view_position), dFdy(view_position));
   n = normalize(n);
   if (!gl_FrontFacing) n = -n;
   vec3 base = front_color;
   if (use_face_colors) {
-    vec4 own = texelFetch(face_colors, int(face_id));
+    vec4 own = texelFetch(face_colors, face);
     if (own.a > 0.0) base = own.rgb;
   }
   if (!gl_FrontFacing && different_back_color) base = back_color;
@@ -37,7 +54,7 @@ void main() {
     gl_FragDepth = gl_FragCoord.z + 2.0 * fwidth(gl_FragCoord.z) + 1e-6;
     return;
   }
-  if ((texelFetch(face_flags, int(face_id)).r & 1u) != 0u) base = mix(base, selection_color, 0.65);
+  if (has_selection && (texelFetch(face_flags, face).r & 1u) != 0u) base = mix(base, selection_color, 0.65);
   fragment = vec4(shade(base, n, view_position), opacity);
   // Back faces lose depth ties: along a silhouette the front and back triangles meet at equal depth,
   // and a back-colour fringe there would suggest a one-sided surface where there is none.

@@ -1,5 +1,7 @@
 #include "render/mesh_buffers.hpp"
 
+#include <algorithm>
+#include <span>
 #include <vector>
 
 #include "nome/error.hpp"
@@ -31,20 +33,20 @@ void make_table(GLuint& buffer, GLuint& texture, GLenum format, std::size_t byte
   glTexBuffer(GL_TEXTURE_BUFFER, format, buffer);
 }
 
-// Three floats per element, read as R32F texels (GL 3.3 has no three-component buffer textures): sized
-// for at least one element, since an empty buffer texture is undefined to sample.
-void make_vectors(GLuint buffer, GLuint texture, std::size_t count) {
-  glBindBuffer(GL_TEXTURE_BUFFER, buffer);
-  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(count, 1) * sizeof(glm::vec3)), nullptr,
+// An array of three floats per vertex, written by update_positions().
+void vector_attribute(GLuint location, GLuint buffer, std::size_t count) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(std::max<std::size_t>(count, 1) * sizeof(glm::vec3)), nullptr,
                GL_DYNAMIC_DRAW);
-  glBindTexture(GL_TEXTURE_BUFFER, texture);
-  glTexBuffer(GL_TEXTURE_BUFFER, GL_R32F, buffer);
+  glEnableVertexAttribArray(location);
+  glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
 }
 
-void write_vectors(GLuint buffer, const Buffer<glm::vec3>& data) {
+void write_vectors(GLenum target, GLuint buffer, std::size_t first, std::span<const glm::vec3> data) {
   if (data.empty()) return;
-  glBindBuffer(GL_TEXTURE_BUFFER, buffer);
-  glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(data.size() * sizeof(glm::vec3)), data.data());
+  glBindBuffer(target, buffer);
+  glBufferSubData(target, GLintptr(first * sizeof(glm::vec3)), GLsizeiptr(data.size() * sizeof(glm::vec3)),
+                  data.data());
 }
 
 }  // namespace
@@ -52,27 +54,25 @@ void write_vectors(GLuint buffer, const Buffer<glm::vec3>& data) {
 MeshBuffers::MeshBuffers(const MeshDisplayData& data) : topology_(data.topology) {
   const DisplayTopology& t = *topology_;
   glGenBuffers(GLsizei(buffers_.size()), buffers_.data());
-  glGenTextures(GLsizei(textures_.size()), textures_.data());
-  make_vectors(buffers_[0], textures_[0], t.num_vertices);
-  make_vectors(buffers_[1], textures_[1], t.num_vertices);
-  make_vectors(buffers_[2], textures_[2], t.num_faces);
   glGenVertexArrays(1, &surface_vao_);
   glBindVertexArray(surface_vao_);
-  upload(GL_ARRAY_BUFFER, buffers_[3], t.corner_vertices);
-  uint_attribute(0, buffers_[3]);
-  upload(GL_ARRAY_BUFFER, buffers_[4], t.corner_faces);
-  uint_attribute(1, buffers_[4]);
-  upload(GL_ELEMENT_ARRAY_BUFFER, buffers_[5], t.triangles);
+  vector_attribute(0, buffers_[0], t.num_gl_vertices());
+  vector_attribute(1, buffers_[1], t.num_gl_vertices());
+  upload(GL_ARRAY_BUFFER, buffers_[2], t.vertex_faces);
+  uint_attribute(2, buffers_[2]);
+  upload(GL_ELEMENT_ARRAY_BUFFER, buffers_[3], t.triangles);
 
-  // The wireframe reads the positions buffer as a plain vertex array.
+  // The wireframe reads the mesh's own vertices, the first of the positions buffer.
   glGenVertexArrays(1, &edge_vao_);
   glBindVertexArray(edge_vao_);
   glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  upload(GL_ELEMENT_ARRAY_BUFFER, buffers_[6], t.segments);
+  upload(GL_ELEMENT_ARRAY_BUFFER, buffers_[4], t.segments);
   glBindVertexArray(0);
 
+  make_table(face_normal_buffer_, face_normal_texture_, GL_R32F,
+             std::size_t(t.num_faces) * sizeof(glm::vec3));
   make_table(face_color_buffer_, face_color_texture_, GL_RGBA8, std::size_t(t.num_faces) * 4);
   make_table(face_flag_buffer_, face_flag_texture_, GL_R8UI, t.num_faces);
   update_positions(*data.positions);
@@ -84,11 +84,10 @@ MeshBuffers::~MeshBuffers() {
   glDeleteVertexArrays(1, &surface_vao_);
   glDeleteVertexArrays(1, &edge_vao_);
   glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
-  glDeleteTextures(GLsizei(textures_.size()), textures_.data());
-  const GLuint tables[] = {face_color_buffer_, face_flag_buffer_};
-  glDeleteBuffers(2, tables);
-  const GLuint textures[] = {face_color_texture_, face_flag_texture_};
-  glDeleteTextures(2, textures);
+  const GLuint tables[] = {face_normal_buffer_, face_color_buffer_, face_flag_buffer_};
+  glDeleteBuffers(3, tables);
+  const GLuint textures[] = {face_normal_texture_, face_color_texture_, face_flag_texture_};
+  glDeleteTextures(3, textures);
 }
 
 void MeshBuffers::update_positions(const DisplayPositions& positions) {
@@ -98,16 +97,31 @@ void MeshBuffers::update_positions(const DisplayPositions& positions) {
     throw InvalidInputError("MeshBuffers::update_positions: " + std::to_string(positions.vertices.size()) +
                             " vertices and " + std::to_string(positions.face_normals.size()) + " faces for " +
                             std::to_string(t.num_vertices) + " and " + std::to_string(t.num_faces));
-  write_vectors(buffers_[0], positions.vertices);
-  write_vectors(buffers_[1], positions.vertex_normals);
-  write_vectors(buffers_[2], positions.face_normals);
+  write_vectors(GL_ARRAY_BUFFER, buffers_[0], 0, positions.vertices);
+  write_vectors(GL_ARRAY_BUFFER, buffers_[1], 0, positions.vertex_normals);
+  write_vectors(GL_TEXTURE_BUFFER, face_normal_buffer_, 0, positions.face_normals);
+  update_extra_vertices(positions);
   bounds_ = positions.bounds;
+}
+
+void MeshBuffers::update_extra_vertices(const DisplayPositions& positions) {
+  const std::vector<std::uint32_t>& extra = topology_->extra_vertices;
+  extra_scratch_.resize(extra.size());
+  for (std::size_t i = 0; i < extra.size(); ++i)
+    extra_scratch_[i] = positions.vertices[extra[i] & ~corner_sign_bit];
+  write_vectors(GL_ARRAY_BUFFER, buffers_[0], topology_->num_vertices, extra_scratch_);
+  for (std::size_t i = 0; i < extra.size(); ++i) {
+    const glm::vec3& n = positions.vertex_normals[extra[i] & ~corner_sign_bit];
+    extra_scratch_[i] = extra[i] & corner_sign_bit ? -n : n;
+  }
+  write_vectors(GL_ARRAY_BUFFER, buffers_[1], topology_->num_vertices, extra_scratch_);
 }
 
 void MeshBuffers::set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) {
   if (colors.size() != topology_->num_faces)
     throw InvalidInputError("MeshBuffers::set_face_colors: " + std::to_string(colors.size()) +
                             " colours for " + std::to_string(topology_->num_faces) + " faces");
+  has_face_colors_ = std::any_of(colors.begin(), colors.end(), [](const auto& c) { return c[3] > 0; });
   glBindBuffer(GL_TEXTURE_BUFFER, face_color_buffer_);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(colors.size() * 4), colors.data());
 }
@@ -121,6 +135,7 @@ void MeshBuffers::set_selected_faces(std::span<const Index> faces) {
                               std::to_string(num_faces));
     flags[f] = 1;
   }
+  has_selection_ = !faces.empty();
   glBindBuffer(GL_TEXTURE_BUFFER, face_flag_buffer_);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(flags.size()), flags.data());
 }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "nome/mesh/types.hpp"
 #include "render/gl.hpp"
@@ -11,8 +12,8 @@
 
 namespace nome::render {
 
-// A mesh on the GPU: its topology (corners naming their vertex and face, triangles, edge segments), the
-// positions and normals that the corners read from buffer textures, and two per-face tables (colour,
+// A mesh on the GPU: its topology (GL vertices carrying a face id, triangles, edge segments), positions and
+// normals as vertex arrays, and three per-face tables read through buffer textures (normal, colour,
 // selection flags). Positions, normals and tables are updated in place (glBufferSubData into the buffers
 // already there): a slider that moves vertices uploads three floats per vertex and per face, nothing
 // per corner. Needs a current context for its whole life.
@@ -38,22 +39,27 @@ class MeshBuffers {
   SegmentRange all_edges() const { return topology_->all_edges; }
   SegmentRange mobius_edges() const { return topology_->mobius_edges; }
   SegmentRange border_edges() const { return topology_->border_edges; }
+  // Whether some face has a colour of its own / is selected: else the fragments skip those tables.
+  bool has_face_colors() const { return has_face_colors_; }
+  bool has_selection() const { return has_selection_; }
   GLuint face_color_texture() const { return face_color_texture_; }
   GLuint face_flag_texture() const { return face_flag_texture_; }
-  // Three floats per vertex / per face (R32F buffer textures).
-  GLuint position_texture() const { return textures_[0]; }
-  GLuint vertex_normal_texture() const { return textures_[1]; }
-  GLuint face_normal_texture() const { return textures_[2]; }
+  // Three floats per face (an R32F buffer texture).
+  GLuint face_normal_texture() const { return face_normal_texture_; }
   const BoundingBox& bounds() const { return bounds_; }
 
  private:
   std::shared_ptr<const DisplayTopology> topology_;
+  // Writes the extra vertices' positions and normals (topology().extra_vertices) after the mesh's own.
+  void update_extra_vertices(const DisplayPositions& positions);
+
   GLuint surface_vao_ = 0, edge_vao_ = 0;
-  // positions, vertex normals, face normals, corner vertices, corner faces, triangles, segments
-  std::array<GLuint, 7> buffers_{};
-  std::array<GLuint, 3> textures_{};  // over the first three buffers
-  GLuint face_color_buffer_ = 0, face_flag_buffer_ = 0;
-  GLuint face_color_texture_ = 0, face_flag_texture_ = 0;
+  // positions, vertex normals, vertex faces, triangles, segments
+  std::array<GLuint, 5> buffers_{};
+  GLuint face_normal_buffer_ = 0, face_color_buffer_ = 0, face_flag_buffer_ = 0;
+  GLuint face_normal_texture_ = 0, face_color_texture_ = 0, face_flag_texture_ = 0;
+  std::vector<glm::vec3> extra_scratch_;  // kept for its block
+  bool has_face_colors_ = false, has_selection_ = false;
   BoundingBox bounds_;
 };
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <thread>
 
 #include "nome/query/display_triangles.hpp"
 
@@ -12,28 +14,82 @@ std::uint8_t to_byte(float channel) {
   return std::uint8_t(std::lround(std::clamp(channel, 0.0f, 1.0f) * 255.0f));
 }
 
-void to_floats(const Buffer<Vec3>& from, Buffer<glm::vec3>& to) {
-  resize_for_overwrite(to, from.size());
-  std::transform(from.begin(), from.end(), to.begin(), [](const Vec3& v) { return glm::vec3(v); });
+// The GL vertices of a DisplayTopology: a mesh vertex's own, its turned-round copy for corners of
+// negative sign, and repeats where a face finds no vertex free to carry its id.
+class GlVertices {
+ public:
+  GlVertices(const Mesh& mesh, DisplayTopology& out)
+      : mesh_(mesh), out_(out), negative_(mesh.num_vertices(), no_gl_vertex) {
+    out_.vertex_faces.assign(mesh.num_vertices(), no_face);
+  }
+  ~GlVertices() {
+    // Vertices that start no triangle: their face is never read.
+    std::replace(out_.vertex_faces.begin(), out_.vertex_faces.end(), no_face, 0u);
+  }
+  GlVertices(const GlVertices&) = delete;
+  GlVertices& operator=(const GlVertices&) = delete;
+
+  std::uint32_t of_corner(Index c) {
+    const Index v = mesh_.corner_vertex(c);
+    if (mesh_.corner_sign(c) > 0) return v;
+    if (negative_[v] == no_gl_vertex) negative_[v] = add(v | corner_sign_bit);
+    return negative_[v];
+  }
+  // The vertex that carries face f in place of u: u if it carries f already or nothing yet, else a repeat.
+  std::uint32_t carrier(std::uint32_t u, Index f) {
+    if (out_.vertex_faces[u] == no_face) out_.vertex_faces[u] = f;
+    if (out_.vertex_faces[u] == f) return u;
+    const std::uint32_t repeat = add(key(u));
+    out_.vertex_faces[repeat] = f;
+    return repeat;
+  }
+
+ private:
+  static constexpr std::uint32_t no_gl_vertex = 0xffffffffu, no_face = 0xffffffffu;
+  std::uint32_t key(std::uint32_t u) const {
+    return u < out_.num_vertices ? u : out_.extra_vertices[u - out_.num_vertices];
+  }
+  std::uint32_t add(std::uint32_t key) {
+    out_.extra_vertices.push_back(key);
+    out_.vertex_faces.push_back(no_face);
+    return out_.num_gl_vertices() - 1;
+  }
+
+  const Mesh& mesh_;
+  DisplayTopology& out_;
+  std::vector<std::uint32_t> negative_;  // per mesh vertex, its turned-round copy
+};
+
+// The triangles over GL vertices, each starting with a vertex that carries its face's id: a fan's apex
+// for all the fan's triangles, or each triangle's first vertex, repeated where it carries another face.
+// The triangles keep their corners' order: a rotation would change the rasteriser's tie-breaks between
+// coinciding triangles (a degenerate immersion such as the projective plane's).
+void provoking_triangles(const Mesh& mesh, const DisplayTriangles& triangles, DisplayTopology& out) {
+  GlVertices vertices(mesh, out);
+  out.triangles.reserve(std::size_t(triangles.size()) * 3);
+  for (Index t = 0; t < triangles.size();) {
+    const Index f = triangles.faces[t];
+    Index end = t;
+    bool is_fan = true;
+    for (; end < triangles.size() && triangles.faces[end] == f; ++end)
+      is_fan = is_fan && triangles.corners[end][0] == triangles.corners[t][0];
+    const std::uint32_t apex = vertices.carrier(vertices.of_corner(triangles.corners[t][0]), f);
+    for (; t < end; ++t) {
+      const auto& c = triangles.corners[t];
+      const std::uint32_t first = is_fan ? apex : vertices.carrier(vertices.of_corner(c[0]), f);
+      out.triangles.insert(out.triangles.end(), {first, vertices.of_corner(c[1]), vertices.of_corner(c[2])});
+    }
+  }
 }
 
 }  // namespace
 
 DisplayTopology build_display_topology(const Mesh& mesh) {
   DisplayTopology data;
-  const Index corners = mesh.num_corners();
   data.num_faces = mesh.num_faces();
   data.num_vertices = mesh.num_vertices();
-  data.corner_vertices.resize(corners);
-  data.corner_faces.resize(corners);
-  for (Index c = 0; c < corners; ++c) {
-    data.corner_vertices[c] = mesh.corner_vertex(c) | (mesh.corner_sign(c) < 0 ? corner_sign_bit : 0u);
-    data.corner_faces[c] = mesh.corner_face(c);
-  }
   // The same triangles the viewer picks on.
-  const DisplayTriangles triangulation = display_triangles(mesh);
-  data.triangles.reserve(triangulation.corners.size() * 3);
-  for (const auto& t : triangulation.corners) data.triangles.insert(data.triangles.end(), t.begin(), t.end());
+  provoking_triangles(mesh, display_triangles(mesh), data);
   auto add_edges = [&](auto keep) {
     SegmentRange range{std::uint32_t(data.segments.size() / 2), 0};
     for (const Edge& e : mesh.edges()) {
@@ -50,12 +106,28 @@ DisplayTopology build_display_topology(const Mesh& mesh) {
   return data;
 }
 
-void build_display_positions(const Mesh& mesh, Normals& normals, DisplayPositions& out) {
-  compute_normals(mesh, normals);
-  to_floats(mesh.positions(), out.vertices);
-  to_floats(normals.vertices, out.vertex_normals);
-  to_floats(normals.faces, out.face_normals);
-  out.bounds = BoundingBox::of(mesh.positions());
+void build_display_positions(const Mesh& mesh, Normals& normals, DisplayPositions& out, int threads) {
+  compute_float_normals(mesh, normals, out.face_normals, out.vertex_normals, threads);
+  const Buffer<Vec3>& positions = mesh.positions();
+  resize_for_overwrite(out.vertices, positions.size());
+  auto part = [&](std::size_t begin, std::size_t end, BoundingBox& box) {
+    for (std::size_t i = begin; i < end; ++i) {
+      out.vertices[i] = glm::vec3(positions[i]);
+      box.add(positions[i]);
+    }
+  };
+  // The second half of a large mesh on a thread of its own.
+  const std::size_t half =
+      threads > 1 && positions.size() >= (1u << 16) ? positions.size() / 2 : positions.size();
+  BoundingBox second;
+  std::thread helper;
+  if (half < positions.size()) helper = std::thread(part, half, positions.size(), std::ref(second));
+  out.bounds = {};
+  part(0, half, out.bounds);
+  if (!helper.joinable()) return;
+  helper.join();
+  out.bounds.add(second.min);
+  out.bounds.add(second.max);
 }
 
 std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh) {

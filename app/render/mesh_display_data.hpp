@@ -20,19 +20,26 @@ struct SegmentRange {
   std::uint32_t count = 0;
 };
 
-// What the GPU draws of a mesh that stays while only its vertices move: one GL vertex per face corner
-// naming its mesh vertex (with the corner's orientation sign, so that the smooth normal turns into the
-// face's own orientation: Möbius-aware) and its face, the kernel's triangles over the corners, and the
-// mesh's real edges as segments over its vertices: all edges, the Möbius ones, the border ones.
+// What the GPU draws of a mesh that stays while only its vertices move. One GL vertex per mesh vertex,
+// shared by the triangles around it (llvmpipe shades it about once, not once per corner), plus extra
+// vertices: a second one with the normal turned round where a vertex's fan crosses a Möbius edge (the
+// corners of negative sign: the smooth normal follows each face's own orientation), and repeats that
+// carry a face id. Each triangle starts with a vertex that carries its face id (the provoking vertex, by
+// the first-vertex convention: the fragment shader reads it as a flat input, for the face's colour,
+// selection and normal; gl_PrimitiveID would cost llvmpipe a copy of every triangle's vertices). Segments:
+// the mesh's real edges over its vertices: all edges, the Möbius ones, the border ones.
 struct DisplayTopology {
-  // Vertex id, with corner_sign_bit set where the corner's sign is negative.
-  std::vector<std::uint32_t> corner_vertices;
-  std::vector<std::uint32_t> corner_faces;
-  std::vector<std::uint32_t> triangles;  // three corner ids each
-  std::vector<std::uint32_t> segments;   // two vertex ids each
+  // GL vertex num_vertices + i repeats mesh vertex extra_vertices[i] & ~corner_sign_bit, its normal
+  // turned round where corner_sign_bit is set.
+  std::vector<std::uint32_t> extra_vertices;
+  std::vector<std::uint32_t> vertex_faces;  // per GL vertex: the face of the triangles it starts
+  std::vector<std::uint32_t> triangles;     // three GL vertex ids each, the face's own vertex first
+  std::vector<std::uint32_t> segments;      // two vertex ids each
   SegmentRange all_edges, mobius_edges, border_edges;
   std::uint32_t num_faces = 0;
   std::uint32_t num_vertices = 0;
+
+  std::uint32_t num_gl_vertices() const { return num_vertices + std::uint32_t(extra_vertices.size()); }
 };
 inline constexpr std::uint32_t corner_sign_bit = 0x80000000u;
 
@@ -57,8 +64,9 @@ struct MeshDisplayData {
 };
 
 DisplayTopology build_display_topology(const Mesh& mesh);
-// Fills `out` for the mesh's positions; `normals` is scratch space kept between calls (its blocks reused).
-void build_display_positions(const Mesh& mesh, Normals& normals, DisplayPositions& out);
+// Fills `out` for the mesh's positions on up to `threads` threads; `normals` is scratch space kept between
+// calls (its blocks reused).
+void build_display_positions(const Mesh& mesh, Normals& normals, DisplayPositions& out, int threads = 1);
 std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh);
 MeshDisplayData build_display_data(const Mesh& mesh);
 

@@ -75,7 +75,8 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     p.set("back_color", settings.back_color);
     p.set("selection_color", settings.selection_color);
     p.set("different_back_color", settings.back_faces == BackFacePolicy::different ? 1 : 0);
-    p.set("use_face_colors", settings.uses_face_colors ? 1 : 0);
+    p.set("use_face_colors", settings.uses_face_colors && mesh.has_face_colors() ? 1 : 0);
+    p.set("has_selection", mesh.has_selection() ? 1 : 0);
     p.set("opacity", 1.0f);
     p.set("section_plane", settings.section_plane);
     p.set("fills_section", settings.fills_section && settings.section_plane != glm::vec4(0.0f) ? 1 : 0);
@@ -86,14 +87,9 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_BUFFER, mesh.face_flag_texture());
     p.set("face_flags", 1);
-    const std::pair<const char*, GLuint> vectors[] = {{"positions", mesh.position_texture()},
-                                                      {"vertex_normals", mesh.vertex_normal_texture()},
-                                                      {"face_normals", mesh.face_normal_texture()}};
-    for (int unit = 2; const auto& [name, texture] : vectors) {
-      glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-      glBindTexture(GL_TEXTURE_BUFFER, texture);
-      p.set(name, unit++);
-    }
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_BUFFER, mesh.face_normal_texture());
+    p.set("face_normals", 2);
     glActiveTexture(GL_TEXTURE0);
     if (settings.back_faces == BackFacePolicy::cull) {
       glEnable(GL_CULL_FACE);
@@ -104,8 +100,12 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
     glBindVertexArray(mesh.surface_vao());
-    glEnable(GL_CLIP_DISTANCE0);
+    // Clipping costs llvmpipe a test of every vertex: only with a section.
+    if (settings.section_plane != glm::vec4(0.0f)) glEnable(GL_CLIP_DISTANCE0);
+    // Each triangle's first vertex carries its face id (render/mesh_display_data.hpp).
+    glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
     glDrawElements(GL_TRIANGLES, mesh.triangle_index_count(), GL_UNSIGNED_INT, nullptr);
+    glProvokingVertex(GL_LAST_VERTEX_CONVENTION);
     glDisable(GL_CLIP_DISTANCE0);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);

@@ -87,7 +87,8 @@ std::shared_ptr<const Mesh> StagePipeline::copy(const Mesh& mesh, bool is_same_t
   return copy;
 }
 
-std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions(const Mesh& mesh) {
+std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions(const Mesh& mesh,
+                                                                                 int threads) {
   auto free =
       std::find_if(positions_.begin(), positions_.end(), [](const auto& p) { return p.use_count() == 1; });
   std::shared_ptr<render::DisplayPositions> out;
@@ -98,7 +99,7 @@ std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions
     out = std::make_shared<render::DisplayPositions>();
     if (positions_.size() < 3) positions_.push_back(out);
   }
-  render::build_display_positions(mesh, normals_, *out);
+  render::build_display_positions(mesh, normals_, *out, threads);
   return out;
 }
 
@@ -114,7 +115,7 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
     result.borders = std::make_shared<const BorderLookup>(mesh);
     result.topology = topology_report(mesh);
   }
-  result.display.positions = display_positions(mesh);
+  result.display.positions = display_positions(mesh, settings.threads);
   result.display.face_colors = render::display_face_colors(mesh);
   result.mesh = copy(mesh, is_same);
   last_settings_ = settings;

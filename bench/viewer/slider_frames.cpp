@@ -73,6 +73,27 @@ void topology_figures(Session& session, const StageView& view, const std::functi
       faces, frames, longest, until_shown, load().c_str());
 }
 
+// The shown mesh's GL vertices, and its triangles drawn with a trivial shader: llvmpipe's floor.
+void floor_figures(const StageResult& shown, const glm::mat4& transform, glm::ivec2 size) {
+  const render::DisplayTopology& topology = *shown.display.topology;
+  std::printf("  at %u faces: %u GL vertices (%.2f per mesh vertex), %zu triangles\n", topology.num_faces,
+              topology.num_gl_vertices(), double(topology.num_gl_vertices()) / topology.num_vertices,
+              topology.triangles.size() / 3);
+  // The mesh's own vertices and the same triangles over them.
+  std::vector<std::uint32_t> triangles(topology.triangles);
+  for (std::uint32_t& u : triangles)
+    if (u >= topology.num_vertices)
+      u = topology.extra_vertices[u - topology.num_vertices] & ~render::corner_sign_bit;
+  const auto& positions = shown.display.positions->vertices;
+  const TrivialDraw floor = trivial_draw(positions, triangles, transform, size);
+  const TrivialDraw tiny = trivial_draw(positions, triangles, transform, {16, 16});
+  std::printf(
+      "  the same %zu triangles with a trivial shader (llvmpipe's floor): %.1f ms (%.1f ms CPU, all "
+      "threads); "
+      "into 16x16 pixels %.1f ms (%.1f ms CPU) [%s]\n",
+      triangles.size() / 3, floor.wall_ms, floor.cpu_ms, tiny.wall_ms, tiny.cpu_ms, load().c_str());
+}
+
 }  // namespace
 
 void million_figures() {
@@ -138,6 +159,8 @@ void frame_figures() {
   while (!view.shown()) frame(0.0);
   camera.fit(view.shown_mesh()->positions(), double(size.x) / size.y);
   const Index faces = view.shown_mesh()->num_faces();
+  floor_figures(*view.shown(), camera.projection_matrix(double(size.x) / size.y) * camera.view_matrix(),
+                size);
   std::vector<double> draw_ms, draw_cpu, frame_ms, latency_ms;
   for (int i = 0; i < 5; ++i) {
     const auto start = Clock::now();
@@ -154,6 +177,7 @@ void frame_figures() {
     glFinish();
     vertex_cpu.push_back(cpu_ms() - cpu);
   }
+  framebuffer.bind();
   // From the slider's change to the frame that shows its result: the job runs beside the frames.
   for (int i = 0; i < 11; ++i) {
     session.set_parameter("t_r", i % 2 ? 0.35 : 0.36);

@@ -2,7 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <span>
 #include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 namespace nome::bench {
 
@@ -20,5 +26,13 @@ inline double ms_since(std::chrono::steady_clock::time_point start) {
 // for a slider that moves vertices and one that changes the topology.
 void million_figures();
 void frame_figures();
+
+// The floor of a draw on this GL: the same triangles with a trivial shader (transform, constant colour)
+// into the bound framebuffer, median wall and CPU (all threads) milliseconds.
+struct TrivialDraw {
+  double wall_ms = 0.0, cpu_ms = 0.0;
+};
+TrivialDraw trivial_draw(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
+                         const glm::mat4& transform, glm::ivec2 size);
 
 }  // namespace nome::bench

@@ -4,25 +4,36 @@
 
 #include <glm/geometric.hpp>
 
+#include "nome/query/display_triangles.hpp"
 #include "render/mesh_display_data.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
 
-TEST_CASE("display data: real edges, Möbius and border edges, one vertex per corner", "[render]") {
+namespace {
+
+// What GL vertex u of `t` repeats: a mesh vertex, with corner_sign_bit where its normal turns round.
+std::uint32_t key(const render::DisplayTopology& t, std::uint32_t u) {
+  return u < t.num_vertices ? u : t.extra_vertices[u - t.num_vertices];
+}
+
+std::uint32_t corner_key(const Mesh& mesh, Index c) {
+  return mesh.corner_vertex(c) | (mesh.corner_sign(c) < 0 ? render::corner_sign_bit : 0u);
+}
+
+}  // namespace
+
+TEST_CASE("display data: real edges, Möbius and border edges, triangles over shared vertices", "[render]") {
   const Mesh band = build_mesh(test::mobius_band(24, 3));
   const render::MeshDisplayData data = render::build_display_data(band);
-  Index mobius = 0, border = 0, triangles = 0;
+  Index mobius = 0, border = 0;
   for (const Edge& e : band.edges()) mobius += e.is_mobius, border += e.is_boundary();
-  for (Index f = 0; f < band.num_faces(); ++f) triangles += band.face_degree(f) - 2;
   REQUIRE(mobius > 0);
   const render::DisplayTopology& t = *data.topology;
   CHECK(t.all_edges.count == band.num_edges());  // quads: no diagonal among the wire segments
   CHECK(t.mobius_edges.count == mobius);
   CHECK(t.border_edges.count == border);
   CHECK(t.segments.size() == 2 * std::size_t(band.num_edges() + mobius + border));
-  CHECK(t.triangles.size() == 3 * std::size_t(triangles));
-  REQUIRE(t.corner_vertices.size() == band.num_corners());
   CHECK(data.positions->vertices.size() == band.num_vertices());
   CHECK(data.positions->face_normals.size() == band.num_faces());
   std::set<std::pair<std::uint32_t, std::uint32_t>> mobius_pairs;
@@ -30,30 +41,47 @@ TEST_CASE("display data: real edges, Möbius and border edges, one vertex per co
     if (e.is_mobius) mobius_pairs.insert({e.vertices[0], e.vertices[1]});
   for (std::uint32_t s = t.mobius_edges.first; s < t.mobius_edges.first + t.mobius_edges.count; ++s)
     CHECK(mobius_pairs.count({t.segments[2 * s], t.segments[2 * s + 1]}) == 1);
-  // Each corner names its vertex and carries its sign: a Möbius band has corners of both signs.
-  int negative = 0;
-  for (Index c = 0; c < band.num_corners(); ++c) {
-    CHECK((t.corner_vertices[c] & ~render::corner_sign_bit) == band.corner_vertex(c));
-    negative += (t.corner_vertices[c] & render::corner_sign_bit) != 0;
-    CHECK(((t.corner_vertices[c] & render::corner_sign_bit) != 0) == (band.corner_sign(c) < 0));
+  // Each triangle is the picking triangle's corners, turned so that its first vertex carries its face;
+  // each vertex carries the corner's sign: a Möbius band has vertices of both signs.
+  const DisplayTriangles triangles = display_triangles(band);
+  REQUIRE(t.triangles.size() == 3 * std::size_t(triangles.size()));
+  REQUIRE(t.vertex_faces.size() == t.num_gl_vertices());
+  for (Index k = 0; k < triangles.size(); ++k) {
+    const std::uint32_t* gl = &t.triangles[3 * std::size_t(k)];
+    CHECK(t.vertex_faces[gl[0]] == triangles.faces[k]);
+    int matching_turns = 0;
+    for (int turn = 0; turn < 3; ++turn) {
+      bool same = true;
+      for (int i = 0; i < 3; ++i)
+        same = same && key(t, gl[(i + turn) % 3]) == corner_key(band, triangles.corners[k][i]);
+      matching_turns += same;
+    }
+    CHECK(matching_turns >= 1);
   }
+  int negative = 0;
+  for (std::uint32_t e : t.extra_vertices) negative += (e & render::corner_sign_bit) != 0;
   CHECK(negative > 0);
+  // Shared: no more GL vertices than one per vertex and sign and one per face.
+  CHECK(t.num_gl_vertices() < std::uint32_t(band.num_corners()));
 }
 
 TEST_CASE("smooth normals follow each face's own orientation across Möbius edges", "[render]") {
   // Averaging normals without the corner signs would cancel or flip them next to a Möbius edge;
-  // with the signs, each corner's smooth normal leans the same way as its face's normal.
+  // with the signs, each triangle vertex's smooth normal leans the same way as its face's normal.
   for (const PolygonSoup& soup : {test::mobius_band(32, 4), test::klein_bottle(24, 12), test::torus(16, 8)}) {
     const Mesh mesh = build_mesh(soup);
     const render::MeshDisplayData data = render::build_display_data(mesh);
-    // The shader's smooth normal: the corner's sign times its vertex normal.
-    for (Index c = 0; c < mesh.num_corners(); ++c) {
-      const std::uint32_t corner = data.topology->corner_vertices[c];
-      const float sign = (corner & render::corner_sign_bit) ? -1.0f : 1.0f;
-      const glm::vec3 smooth = sign * data.positions->vertex_normals[corner & ~render::corner_sign_bit];
-      REQUIRE(glm::length(smooth) == Approx(1.0f));
-      REQUIRE(glm::dot(smooth, data.positions->face_normals[data.topology->corner_faces[c]]) > 0.5f);
-    }
+    const render::DisplayTopology& t = *data.topology;
+    const DisplayTriangles triangles = display_triangles(mesh);
+    // The shader's smooth normal: the vertex normal, turned round for a vertex that has the sign bit.
+    for (Index k = 0; k < triangles.size(); ++k)
+      for (int i = 0; i < 3; ++i) {
+        const std::uint32_t u = key(t, t.triangles[3 * std::size_t(k) + i]);
+        const float sign = (u & render::corner_sign_bit) ? -1.0f : 1.0f;
+        const glm::vec3 smooth = sign * data.positions->vertex_normals[u & ~render::corner_sign_bit];
+        REQUIRE(glm::length(smooth) == Approx(1.0f));
+        REQUIRE(glm::dot(smooth, data.positions->face_normals[triangles.faces[k]]) > 0.5f);
+      }
   }
 }
 

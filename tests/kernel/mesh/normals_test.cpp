@@ -50,3 +50,29 @@ TEST_CASE("degenerate faces give zero normals and a warning that names them, nev
   CHECK_THAT(warning, Catch::Contains("1 degenerate faces") && Catch::Contains("flat"));
   CHECK_THAT(warning, Catch::Contains("v2") && Catch::Contains("v5"));
 }
+
+TEST_CASE("single-precision normals are the normals rounded, the degenerate faces listed", "[kernel]") {
+  // Large enough that the rounding splits over two threads; faces reversed at random give corners of
+  // both signs; two folded faces are degenerate.
+  std::mt19937 rng{7};
+  PolygonSoup soup = test::reverse_random_faces(test::torus(320, 256), 0.3, rng);
+  for (Index f : {Index(5), Index(70000)}) {
+    const Index* corners = soup.face_vertices.data() + soup.face_offsets[f];
+    soup.positions[corners[2]] = soup.positions[corners[1]];
+    soup.positions[corners[3]] = soup.positions[corners[0]];
+  }
+  const Mesh m = build_mesh(soup);
+  REQUIRE(m.num_faces() > 2 * (1u << 15));
+  const Normals one = compute_normals(m);
+  REQUIRE(one.degenerate_faces.size() >= 2);
+  Normals scratch;
+  Buffer<glm::vec3> faces, vertices;
+  compute_float_normals(m, scratch, faces, vertices, 2);
+  REQUIRE(faces.size() == m.num_faces());
+  REQUIRE(vertices.size() == m.num_vertices());
+  bool same = true;
+  for (Index f = 0; f < m.num_faces(); ++f) same = same && faces[f] == glm::vec3(one.faces[f]);
+  for (Index v = 0; v < m.num_vertices(); ++v) same = same && vertices[v] == glm::vec3(one.vertices[v]);
+  CHECK(same);
+  CHECK(scratch.degenerate_faces == one.degenerate_faces);
+}

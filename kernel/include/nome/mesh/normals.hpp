@@ -27,6 +27,10 @@ struct Normals {
 Normals compute_normals(const Mesh& mesh);
 // The same into `out`, reusing its arrays' blocks (no fresh pages for a mesh no larger than the last).
 void compute_normals(const Mesh& mesh, Normals& out);
+// The same normals rounded to single precision (what a GPU draws with), rounded on up to `threads`
+// threads; `scratch` keeps the double-precision normals and the degenerate elements.
+void compute_float_normals(const Mesh& mesh, Normals& scratch, Buffer<glm::vec3>& faces,
+                           Buffer<glm::vec3>& vertices, int threads);
 
 // A warning naming the degenerate faces and vertices of `normals` (the first few of each, by label),
 // or "" when there are none: for the caller to show, since the kernel never prints.
