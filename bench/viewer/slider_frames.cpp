@@ -38,14 +38,6 @@ std::string load() {
   return text;
 }
 
-// CPU time of the whole process (every thread), for figures on a loaded machine.
-double cpu_ms() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return (usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1e3 +
-         (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-3;
-}
-
 // Applies a stage result to the renderer as the window does (in place when its topology is on display).
 void show(render::SceneRenderer& renderer, const StageResult& result) {
   renderer.set_mesh(result.display);
@@ -196,6 +188,13 @@ void frame_figures() {
       faces, median(frame_ms), median(latency_ms), median(draw_ms), median(draw_cpu), median(vertex_cpu),
       load().c_str());
   topology_figures(session, view, frame, faces);
+}
+
+double cpu_ms() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return (usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1e3 +
+         (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-3;
 }
 
 }  // namespace nome::bench

@@ -1,4 +1,3 @@
-#include <sys/resource.h>
 #include <chrono>
 #include <vector>
 
@@ -28,13 +27,6 @@ GLuint program() {
   }
   glLinkProgram(p);
   return p;
-}
-
-double cpu_ms() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return (usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1e3 +
-         (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-3;
 }
 
 }  // namespace
