@@ -3,13 +3,17 @@
 
 #include "nome/atomic_file.hpp"
 #include "nome/io/obj.hpp"
-#include "nome/io/print_double.hpp"
 
 namespace nome {
 namespace {
 
-// Room for a vertex line: "v", three numbers of the 32 bytes print_double_g17 may take, spaces, newline.
+// Room for a vertex line: "v", three numbers of up to 32 bytes, spaces, newline.
 constexpr std::size_t longest_line = 104;
+
+// Positions as printf's %.17g (to_chars with a precision is specified to match it).
+char* put_double(char* at, double value) {
+  return std::to_chars(at, at + 32, value, std::chars_format::general, 17).ptr;
+}
 
 char* put_index(char* at, Index value) {
   return std::to_chars(at, at + 16, value).ptr;
@@ -26,7 +30,7 @@ void write_obj_surface(FileBlocks& file, const Surface& surface) {
     *at++ = 'v';
     for (int k = 0; k < 3; ++k) {
       *at++ = ' ';
-      at = print_double_g17(at, p[k]);
+      at = put_double(at, p[k]);
     }
     *at++ = '\n';
     file.commit(at);
