@@ -14,17 +14,19 @@ namespace nome {
 namespace {
 
 // Created exclusively, so two writers (threads or processes) never share one; a writer killed before
-// its rename leaves this sibling behind, which no later save reads or reuses.
-std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
+// its rename leaves this sibling behind, which no later save reads or reuses. Returned open for writing.
+struct TemporarySibling {
+  std::filesystem::path path;
+  int fd = -1;
+};
+
+TemporarySibling temporary_sibling(const std::filesystem::path& path) {
   std::random_device seed;
   for (;;) {
     std::filesystem::path tmp = path;
     tmp += "." + std::to_string(::getpid()) + "." + std::to_string(seed() % 1000000) + ".tmp";
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0) {
-      ::close(fd);
-      return tmp;
-    }
+    if (fd >= 0) return {tmp, fd};
     if (errno != EEXIST) throw IoError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
   }
 }
@@ -38,14 +40,10 @@ void sync_path(const std::filesystem::path& path) {
 
 }  // namespace
 
-namespace {
-
-// Fills the temporary file by `fill` through FileBlocks, syncs it and renames it over `path`.
-void replace_atomically(const std::filesystem::path& path, const std::function<void(FileBlocks&)>& fill) {
-  const std::filesystem::path tmp = temporary_sibling(path);
+// Fills a temporary sibling through FileBlocks, syncs it and renames it over `path`.
+void write_file_in_blocks(const std::filesystem::path& path, const std::function<void(FileBlocks&)>& fill) {
+  const auto [tmp, fd] = temporary_sibling(path);
   try {
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-    if (fd < 0) throw IoError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
     int error = 0;
     try {
       FileBlocks blocks(fd);
@@ -70,18 +68,12 @@ void replace_atomically(const std::filesystem::path& path, const std::function<v
   }
 }
 
-}  // namespace
-
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& writer) {
-  replace_atomically(path, [&](FileBlocks& blocks) {
+  write_file_in_blocks(path, [&](FileBlocks& blocks) {
     std::ostream out(&blocks);
     writer(out);
   });
-}
-
-void write_file_in_blocks(const std::filesystem::path& path, const std::function<void(FileBlocks&)>& writer) {
-  replace_atomically(path, writer);
 }
 
 }  // namespace nome
