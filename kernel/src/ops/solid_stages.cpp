@@ -101,7 +101,18 @@ Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int 
       stage.refinement->boundary() != s.boundary || stage.refinement->creases() != s.creases ||
       !stage.refinement->fits(in)) {
     progress_("subdivision", 0.0);
-    stage.refinement.emplace(in, levels, s.boundary, s.threads, s.creases);
+    // Into the last refinement's blocks where there is one: a slider that changes the topology then
+    // faults in no fresh pages. A refinement that throws is dropped, as a new one would not be kept.
+    if (!stage.refinement) {
+      stage.refinement.emplace(in, levels, s.boundary, s.threads, s.creases);
+    } else {
+      try {
+        stage.refinement->rebuild(in, levels, s.boundary, s.threads, s.creases);
+      } catch (...) {
+        stage.refinement.reset();
+        throw;
+      }
+    }
     stage.levels = levels;
     progress_("subdivision", 0.4);
     Buffer<Vec3> positions(stage.refinement->num_vertices());
