@@ -383,24 +383,30 @@ TEST_CASE("JIPCAD's arts_expo__antcolony.nom: eleven tubes, each a disc", "[scen
   }
 }
 
-TEST_CASE("a sweep's names are made once: its instance, the combined soup and the pipeline's mesh share them",
+TEST_CASE("a sweep's names are a rule: its instance, the combined soup and the pipeline's mesh share it",
           "[scene]") {
   const std::string text = std::string(square_points) +
                            "point a (0 0 0) endpoint\npoint b (0 0 3) endpoint\npoint c (2 0 5) endpoint\n"
                            "polyline p (a b c) endpolyline\n"
-                           "sweep s crosssection sq endcrosssection path p endpath endsweep\n"
+                           "sweep s crosssection sq begincap endcap endcrosssection path p endpath endsweep\n"
                            "instance i s endinstance\n";
+  const std::uint64_t made = Names::lists_made();
   const Scene scene = Scene::from_text(text, "t.nome");
   const PolygonSoup& placed = scene.instances().at(0).geometry.soup;
   PolygonSoup soup = scene.combined_soup();
-  CHECK(&soup.vertex_names.list() == &placed.vertex_names.list());
-  CHECK(&soup.face_names.list() == &placed.face_names.list());
-  CHECK(soup.vertex_names[0] == "i_v0_0");
+  CHECK(soup.vertex_names.shares_with(placed.vertex_names));
+  CHECK(soup.face_names.shares_with(placed.face_names));
   Pipeline pipeline;
   pipeline.set_input(PipelineInput{soup, {}, {}});
   PipelineSettings scene_stage;
   scene_stage.stage = Stage::scene;
   const Mesh& mesh = pipeline.run(scene_stage);
-  CHECK(&mesh.vertex_names().list() == &placed.vertex_names.list());
-  CHECK(&mesh.face_names().list() == &placed.face_names.list());
+  CHECK(mesh.vertex_names().shares_with(placed.vertex_names));
+  CHECK(mesh.face_names().shares_with(placed.face_names));
+  CHECK(Names::lists_made() == made);  // no name was made into a string on the way
+  CHECK(soup.vertex_names[0] == "i_v0_0");
+  CHECK(soup.vertex_names[11] == "i_v2_3");
+  CHECK(soup.face_names[7] == "i_f1_3");
+  CHECK(soup.face_names[8] == "i_begincap");
+  CHECK(soup.face_names[9] == "i_endcap");
 }

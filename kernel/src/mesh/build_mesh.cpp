@@ -1,9 +1,11 @@
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <sstream>
 #include <string>
 
+#include "mesh/grid_mesh.hpp"
 #include "mesh/sharpness.hpp"
 #include "nome/error.hpp"
 #include "nome/mesh/mesh.hpp"
@@ -35,7 +37,7 @@ class Problems {
   size_t count_ = 0;
 };
 
-std::string label(const std::vector<std::string>& names, const char* prefix, Index i) {
+std::string label(const Names& names, const char* prefix, Index i) {
   if (i < names.size() && !names[i].empty()) return names[i];
   return prefix + std::to_string(i);
 }
@@ -50,8 +52,8 @@ Buffer<Index> csr_offsets(std::span<const Index> keys, Index num_keys) {
 
 // Element names for messages: the soup's own, or `v12` / `f3`.
 struct Labels {
-  const std::vector<std::string>& vertex_names;
-  const std::vector<std::string>& face_names;
+  const Names& vertex_names;
+  const Names& face_names;
   std::string vertex(Index v) const { return label(vertex_names, "v", v); }
   std::string face(Index f) const { return label(face_names, "f", f); }
 };
@@ -79,12 +81,12 @@ void check_arrays(const PolygonSoup& soup) {
     throw InvalidInputError("build_mesh: face_colors must be empty or one per face");
 }
 
-// Degree, index range, repeated vertices (a stamp array makes the check O(degree)), finite positions.
-void check_faces(const PolygonSoup& soup, const Labels& labels, Problems& problems) {
-  const Index nv = soup.num_vertices();
+// Degree, index range, repeated vertices (a stamp array makes the check O(degree)).
+void check_faces(const MeshArrays& m, const Labels& labels, Problems& problems) {
+  const Index nv = Index(m.positions.size()), nf = Index(m.face_offsets.size() - 1);
   std::vector<Index> stamp(nv, no_index);
-  for (Index f = 0; f < soup.num_faces(); ++f) {
-    const Index b = soup.face_offsets[f], e = soup.face_offsets[f + 1];
+  for (Index f = 0; f < nf; ++f) {
+    const Index b = m.face_offsets[f], e = m.face_offsets[f + 1];
     if (e < b) throw InvalidInputError("build_mesh: face_offsets are not increasing");
     if (e - b < 3) {
       problems.add(
@@ -92,7 +94,7 @@ void check_faces(const PolygonSoup& soup, const Labels& labels, Problems& proble
       continue;
     }
     for (Index c = b; c < e; ++c) {
-      const Index v = soup.face_vertices[c];
+      const Index v = m.corner_vertices[c];
       if (v >= nv) {
         problems.add("face " + labels.face(f) + " refers to vertex " + std::to_string(v) +
                          " but there are only " + std::to_string(nv) + " vertices",
@@ -104,8 +106,11 @@ void check_faces(const PolygonSoup& soup, const Labels& labels, Problems& proble
       }
     }
   }
-  for (size_t i = 0; i < soup.positions.size(); ++i) {
-    const Vec3& p = soup.positions[i];
+}
+
+void check_positions(const Buffer<Vec3>& positions, const Labels& labels, Problems& problems) {
+  for (size_t i = 0; i < positions.size(); ++i) {
+    const Vec3& p = positions[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       problems.add("vertex " + labels.vertex(Index(i)) + " has a non-finite position", no_index);
   }
@@ -218,8 +223,8 @@ bool walk_fan(MeshArrays& m, Index v, std::span<const Index> corners, std::vecto
   return count == k && (borders_here == 0 || borders_here == 2);
 }
 
-// Corners bucketed by vertex, then each vertex's fan walked.
-void find_fans(MeshArrays& m, Index nv, const Labels& labels, Problems& problems) {
+// Corners bucketed by vertex, then each vertex's fan walked (or, inside a grid, written out).
+void find_fans(MeshArrays& m, Index nv, const SoupGrid* grid, const Labels& labels, Problems& problems) {
   const Index nc = Index(m.corner_vertices.size());
   m.fan_corner_offsets = csr_offsets(m.corner_vertices, nv);
   Buffer<Index> vertex_corner_list(nc);
@@ -227,25 +232,36 @@ void find_fans(MeshArrays& m, Index nv, const Labels& labels, Problems& problems
     std::vector<Index> fill(m.fan_corner_offsets.begin(), m.fan_corner_offsets.end() - 1);
     for (Index c = 0; c < nc; ++c) vertex_corner_list[fill[m.corner_vertices[c]]++] = c;
   }
-  m.fan_corners.resize(nc);
+  resize_for_overwrite(m.fan_corners, nc);
   m.corner_signs.assign(nc, 0);
   m.fan_edge_offsets.assign(size_t(nv) + 1, 0);
   m.fan_edges.clear();
   m.fan_edges.reserve(size_t(nc) + nv);
   std::vector<char> visited(nc, 0);
-  for (Index v = 0; v < nv; ++v) {
+  std::array<Index, 4> corners, edges;
+  const Index points = grid ? grid->ring_points : 1;
+  // (i, j): v's ring and point in the grid.
+  for (Index v = 0, i = 0, j = 0; v < nv; ++v, j = j + 1 == points ? 0 : j + 1, i += j == 0 ? 1 : 0) {
     const Index b = m.fan_corner_offsets[v], k = m.fan_corner_offsets[v + 1] - b;
     m.fan_edge_offsets[v + 1] = m.fan_edge_offsets[v];
     if (k == 0) continue;
-    if (!walk_fan(m, v, std::span<const Index>(vertex_corner_list.data() + b, k), visited))
+    if (grid && find_grid_inner_fan(m, *grid, i, j, corners, edges)) {
+      for (Index t = 0; t < 4; ++t) {
+        m.fan_corners[b + t] = corners[t];
+        m.corner_signs[corners[t]] = 1;
+      }
+      m.fan_edges.insert(m.fan_edges.end(), edges.begin(), edges.end());
+    } else if (!walk_fan(m, v, std::span<const Index>(vertex_corner_list.data() + b, k), visited)) {
       problems.add("vertex " + labels.vertex(v) + ": its " + std::to_string(k) +
                        " faces do not form one fan (the surface touches itself there)",
                    m.corner_faces[vertex_corner_list[b]]);
+    }
     m.fan_edge_offsets[v + 1] = static_cast<Index>(m.fan_edges.size());
   }
 }
 
 std::atomic<std::uint64_t> meshes_built{0};
+std::atomic<std::uint64_t> grid_meshes_built{0};
 
 }  // namespace
 
@@ -253,33 +269,59 @@ std::uint64_t build_mesh_count() {
   return meshes_built.load(std::memory_order_relaxed);
 }
 
+std::uint64_t build_mesh_grid_count() {
+  return grid_meshes_built.load(std::memory_order_relaxed);
+}
+
 Mesh build_mesh(PolygonSoup soup) {
+  return build_mesh_from(soup);
+}
+
+Mesh build_mesh_from(PolygonSoup& soup) {
   meshes_built.fetch_add(1, std::memory_order_relaxed);
   check_arrays(soup);
   Mesh m;
   m.vertex_names_ = std::move(soup.vertex_names);
   m.face_names_ = std::move(soup.face_names);
   m.arrays_.face_colors = std::move(soup.face_colors);
-  const Labels labels{m.vertex_names_, m.face_names_};
-  const Index nv = soup.num_vertices();
-  Problems problems;
-  check_faces(soup, labels, problems);
-  problems.throw_if_any();
-
   m.arrays_.positions = std::move(soup.positions);
   m.arrays_.face_offsets = std::move(soup.face_offsets);
   m.arrays_.corner_vertices = std::move(soup.face_vertices);
-  m.find_corner_faces();
-  find_edges(m.arrays_, nv, labels, problems);
-  problems.throw_if_any();
-  number_edges_in_face_order(m.arrays_);
-  find_fans(m.arrays_, nv, labels, problems);
-  problems.throw_if_any();
-
-  apply_soup_features(m, soup);
-
-  m.find_boundary_loops();
-  m.find_components();
+  const Labels labels{m.vertex_names_, m.face_names_};
+  const Index nv = m.num_vertices();
+  try {
+    // A grid layout, checked against the faces, gives the edges without the search (and the faces' checks).
+    const bool is_grid = soup.grid && find_grid_edges(m.arrays_, *soup.grid);
+    if (is_grid) grid_meshes_built.fetch_add(1, std::memory_order_relaxed);
+    Problems problems;
+    if (!is_grid) check_faces(m.arrays_, labels, problems);
+    check_positions(m.arrays_.positions, labels, problems);
+    problems.throw_if_any();
+    m.find_corner_faces();
+    if (!is_grid) {
+      find_edges(m.arrays_, nv, labels, problems);
+      problems.throw_if_any();
+      number_edges_in_face_order(m.arrays_);
+    }
+    find_fans(m.arrays_, nv, is_grid ? &*soup.grid : nullptr, labels, problems);
+    problems.throw_if_any();
+    apply_soup_features(m, soup);
+    m.find_boundary_loops();
+    if (is_grid) {  // bands join every ring to the next: one component
+      m.arrays_.face_components.assign(m.num_faces(), 0);
+      m.arrays_.num_components = 1;
+    } else {
+      m.find_components();
+    }
+  } catch (...) {
+    soup.vertex_names = std::move(m.vertex_names_);
+    soup.face_names = std::move(m.face_names_);
+    soup.face_colors = std::move(m.arrays_.face_colors);
+    soup.positions = std::move(m.arrays_.positions);
+    soup.face_offsets = std::move(m.arrays_.face_offsets);
+    soup.face_vertices = std::move(m.arrays_.corner_vertices);
+    throw;
+  }
   return m;
 }
 

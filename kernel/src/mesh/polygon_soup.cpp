@@ -10,7 +10,7 @@ bool is_empty(const PolygonSoup& s) {
   return s.positions.empty() && s.face_vertices.empty() && s.face_offsets.size() == 1 &&
          s.vertex_names.empty() && s.face_names.empty() && s.face_colors.empty() && s.sharp_edges.empty() &&
          s.sharp_edge_weights.empty() && s.sharp_vertices.empty() && s.hole_faces.empty() &&
-         s.face_origins.empty();
+         s.face_origins.empty() && !s.grid;
 }
 
 }  // namespace
@@ -20,6 +20,7 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
     into = part;  // the same as appending, and the names are shared rather than copied
     return;
   }
+  into.grid.reset();  // the layout described the whole soup
   const Index base = into.num_vertices(), corner_base = Index(into.face_vertices.size());
   // The origins first, while into.num_faces() is where the part's faces will start.
   if (part.face_origins.empty() || part.face_origins.front().first_face != 0) into.note_origin({});
@@ -42,11 +43,11 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   for (size_t f = 1; f < part.face_offsets.size(); ++f)
     into.face_offsets.push_back(part.face_offsets[f] + corner_base);
   if (has_names) {
-    into.vertex_names.append(part.vertex_names.begin(), part.vertex_names.end());
+    into.vertex_names.append(part.vertex_names);
     into.vertex_names.resize(into.positions.size());
   }
   if (has_face_names) {
-    into.face_names.append(part.face_names.begin(), part.face_names.end());
+    into.face_names.append(part.face_names);
     into.face_names.resize(into.num_faces());
   }
   if (has_colors) {

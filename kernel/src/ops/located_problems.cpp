@@ -1,6 +1,9 @@
 #include "ops/located_problems.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <span>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -25,6 +28,35 @@ double coincidence_distance(const Mesh& mesh) {
   return 1e-9 * glm::length(high - low);
 }
 
+double squared_distance(const Mesh& mesh, Index a, Index b) {
+  const Vec3 d = mesh.position(a) - mesh.position(b);
+  return glm::dot(d, d);
+}
+
+// Two corners of the face closer than sqrt(limit): all pairs in small faces, neighbours only in large ones
+// (a sampled circle), to stay linear. Quads, most faces, compare their six pairs without branching.
+std::optional<std::pair<Index, Index>> coinciding_pair(const Mesh& mesh, std::span<const Index> corners,
+                                                       double limit) {
+  const size_t n = corners.size();
+  if (n == 4) {
+    const Index a = corners[0], b = corners[1], c = corners[2], d = corners[3];
+    const double nearest =
+        std::min({squared_distance(mesh, a, b), squared_distance(mesh, a, c), squared_distance(mesh, a, d),
+                  squared_distance(mesh, b, c), squared_distance(mesh, b, d), squared_distance(mesh, c, d)});
+    if (nearest > limit) return std::nullopt;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (n > 32) {
+      if (squared_distance(mesh, corners[i], corners[(i + 1) % n]) <= limit)
+        return std::pair{corners[i], corners[(i + 1) % n]};
+      continue;
+    }
+    for (size_t j = i + 1; j < n; ++j)
+      if (squared_distance(mesh, corners[i], corners[j]) <= limit) return std::pair{corners[i], corners[j]};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<TopologyError> located_error(const TopologyError& error, const PolygonSoup& soup) {
@@ -46,22 +78,7 @@ std::vector<std::string> coinciding_vertex_warnings(const Mesh& mesh, const Poly
   std::vector<std::string> out;
   size_t count = 0;
   for (Index f = 0; f < mesh.num_faces(); ++f) {
-    const auto corners = mesh.face_vertices(f);
-    const size_t n = corners.size();
-    auto coincide = [&](size_t i, size_t j) {
-      const Vec3 d = mesh.position(corners[i]) - mesh.position(corners[j]);
-      return glm::dot(d, d) <= limit;
-    };
-    // All pairs in small faces; neighbours only in large ones (a sampled circle), to stay linear.
-    std::optional<std::pair<Index, Index>> pair;
-    for (size_t i = 0; i < n && !pair; ++i) {
-      if (n > 32) {
-        if (coincide(i, (i + 1) % n)) pair = {corners[i], corners[(i + 1) % n]};
-        continue;
-      }
-      for (size_t j = i + 1; j < n && !pair; ++j)
-        if (coincide(i, j)) pair = {corners[i], corners[j]};
-    }
+    const std::optional<std::pair<Index, Index>> pair = coinciding_pair(mesh, mesh.face_vertices(f), limit);
     if (!pair) continue;
     if (++count <= max_listed)
       out.push_back((soup.origin(f).empty() ? "scene: " : origin_prefix(soup, f)) + "face " +

@@ -45,11 +45,12 @@ TopologyError located_in_part(const TopologyError& error, const InputPart& part)
   return TopologyError(text, error.problems());
 }
 
-// build_mesh on the whole input; a topology error names the part at fault, with element numbers of that
-// part alone: the parts are built one by one (only on this error path) to find it.
-Mesh build_naming_the_part(const PipelineInput& input) {
+// build_mesh on the whole input (its arrays move into the mesh); a topology error names the part at fault,
+// with element numbers of that part alone: the parts are built one by one (only on this error path) to
+// find it.
+Mesh build_naming_the_part(PipelineInput& input) {
   try {
-    return build_mesh(PolygonSoup(input.soup));
+    return build_mesh_from(input.soup);
   } catch (const TopologyError& e) {
     if (std::optional<TopologyError> located = located_error(e, input.soup)) throw *located;
     if (input.parts.empty()) throw;

@@ -46,6 +46,7 @@ glm::dmat4 transform_matrix(const TransformDecl& t, const double* a) {
 
 // A reflection turns every face inside out: reverse the corner order so normals stay outward.
 void reverse_faces(PolygonSoup& soup) {
+  soup.grid.reset();
   for (Index f = 0; f < soup.num_faces(); ++f)
     std::reverse(soup.face_vertices.begin() + soup.face_offsets[f],
                  soup.face_vertices.begin() + soup.face_offsets[f + 1]);
@@ -134,8 +135,8 @@ Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std:
     p.is_mirrored = glm::determinant(m) < 0;
     if (p.is_mirrored) reverse_faces(piece.soup);
     const std::string prefix = p.path + "_";
-    for (std::string& n : piece.soup.vertex_names.writable()) n.insert(0, prefix);
-    for (std::string& n : piece.soup.face_names.writable()) n.insert(0, prefix);
+    piece.soup.vertex_names.add_prefix(prefix);
+    piece.soup.face_names.add_prefix(prefix);
     for (RimLine& r : piece.rims) r.name = r.name.empty() ? p.path : p.path + "_" + r.name;
     if (color)
       for (Index f = 0; f < piece.soup.num_faces(); ++f)

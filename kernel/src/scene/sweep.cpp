@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <numbers>
 
@@ -95,26 +94,13 @@ double nearest_correspondence(std::span<const Vec3> end, std::span<const Vec3> s
   return best_worst;
 }
 
-// `kind` i `_` j `suffix`, written once (such names fit a string's own buffer: no allocation).
-std::string element_name(char kind, std::size_t i, std::size_t j, const char* suffix = "") {
-  char text[64];
-  char* end = text;
-  *end++ = kind;
-  end = std::to_chars(end, text + 30, i).ptr;
-  *end++ = '_';
-  end = std::to_chars(end, text + 60, j).ptr;
-  while (*suffix) *end++ = *suffix++;
-  return std::string(text, end);
-}
-
-void add_band_face(Piece& piece, const std::array<Index, 4>& quad, std::size_t i, std::size_t j,
-                   FaceShape shape) {
+void add_band_face(PolygonSoup& soup, const std::array<Index, 4>& quad, FaceShape shape) {
   if (shape == FaceShape::quadrilaterals) {
-    piece.add_face(quad, element_name('f', i, j));
+    soup.add_face(quad);
     return;
   }
-  piece.add_face(std::array<Index, 3>{quad[0], quad[1], quad[2]}, element_name('f', i, j, "a"));
-  piece.add_face(std::array<Index, 3>{quad[0], quad[2], quad[3]}, element_name('f', i, j, "b"));
+  soup.add_face(std::array<Index, 3>{quad[0], quad[1], quad[2]});
+  soup.add_face(std::array<Index, 3>{quad[0], quad[2], quad[3]});
 }
 
 void check_input(std::span<const PathSample> path, std::span<const CrossSection> sections,
@@ -172,11 +158,12 @@ class Sweeper {
 
   SweepResult run() {
     reserve();
+    PolygonSoup& soup = result_.piece.soup;
     for (std::size_t i = first_; i <= last_; ++i) {
       const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
-      for (std::size_t j = 0; j < m_; ++j)
-        result_.piece.add_vertex(placed(i, j, c, s), element_name('v', i, j));
+      for (std::size_t j = 0; j < m_; ++j) soup.positions.push_back(placed(i, j, c, s));
     }
+    soup.vertex_names = Names::grid({'v', first_, m_}, soup.positions.size());
     if (m_ == 1) {
       RimLine rim{"", {}, o_.is_path_closed};
       for (std::size_t i = first_; i <= last_; ++i) rim.vertices.push_back(vertex(i, 0));
@@ -187,14 +174,25 @@ class Sweeper {
     for (std::size_t i = first_; i < last_; ++i)
       for (std::size_t j = 0; j < around_; ++j) {
         const std::size_t k = (j + 1) % m_;
-        add_band_face(result_.piece, {vertex(i, j), vertex(i, k), vertex(i + 1, k), vertex(i + 1, j)}, i, j,
-                      o_.faces);
+        add_band_face(soup, {vertex(i, j), vertex(i, k), vertex(i + 1, k), vertex(i + 1, j)}, o_.faces);
       }
     std::vector<Index> to;
-    if (o_.is_path_closed)
-      join_ends(to);
-    else
-      add_caps();
+    if (o_.is_path_closed) join_ends(to);
+    const bool is_triangles = o_.faces == FaceShape::triangles;
+    soup.face_names =
+        Names::grid({'f', first_, around_,
+                     is_triangles ? std::vector<std::string>{"a", "b"} : std::vector<std::string>{""}},
+                    soup.num_faces());
+    if (!o_.is_path_closed) add_caps();
+    soup.grid = SoupGrid{Index(last_ - first_ + 1),
+                         Index(m_),
+                         sections_[0].is_closed,
+                         is_triangles,
+                         to,
+                         !o_.is_path_closed && o_.has_begin_cap && m_ >= 3,
+                         !o_.is_path_closed && o_.has_end_cap && m_ >= 3};
+    soup.face_colors.assign(soup.num_faces(), Color(0));
+    result_.piece.face_has_color.assign(soup.num_faces(), 0);
     result_.piece.topology_key = topology_key(to);
     return std::move(result_);
   }
@@ -214,12 +212,8 @@ class Sweeper {
     const std::size_t per_quad = o_.faces == FaceShape::triangles ? 2 : 1;
     const std::size_t faces = (last_ - first_ + 1) * around_ * per_quad + 2;
     soup.positions.reserve(vertices);
-    soup.vertex_names.reserve(vertices);
     soup.face_vertices.reserve(faces * 4);
     soup.face_offsets.reserve(faces + 1);
-    soup.face_names.reserve(faces);
-    soup.face_colors.reserve(faces);
-    result_.piece.face_has_color.reserve(faces);
   }
 
   // Which first-section point each point of a closed path's last section joins (warned about when no
@@ -256,21 +250,24 @@ class Sweeper {
     join_correspondence(result_.piece.soup.positions, to);
     for (std::size_t j = 0; j < around_; ++j) {
       const std::size_t k = (j + 1) % m_;
-      add_band_face(result_.piece, {vertex(n_ - 1, j), vertex(n_ - 1, k), to[k], to[j]}, n_ - 1, j, o_.faces);
+      add_band_face(result_.piece.soup, {vertex(n_ - 1, j), vertex(n_ - 1, k), to[k], to[j]}, o_.faces);
     }
   }
 
   // Caps close a closed section; on an open one (JIPCAD's files cap those too) they span its ends.
   void add_caps() {
     if (m_ < 3) return;
+    PolygonSoup& soup = result_.piece.soup;
     std::vector<Index> cap(m_);
     if (o_.has_begin_cap) {
       for (std::size_t j = 0; j < m_; ++j) cap[j] = vertex(first_, m_ - 1 - j);
-      result_.piece.add_face(cap, "begincap");
+      soup.add_face(cap);
+      soup.face_names.append(Names{"begincap"});
     }
     if (o_.has_end_cap) {
       for (std::size_t j = 0; j < m_; ++j) cap[j] = vertex(last_, j);
-      result_.piece.add_face(cap, "endcap");
+      soup.add_face(cap);
+      soup.face_names.append(Names{"endcap"});
     }
   }
 

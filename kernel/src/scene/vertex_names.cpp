@@ -33,7 +33,7 @@ const Scene::VertexRef* Scene::lookup_vertex(const Name& name, std::vector<Diagn
   if (!is_vertex_index_current_) build_vertex_index();
   const auto it = vertex_suffixes_.find(name.text);
   if (it != vertex_suffixes_.end() && it->second.size() == 1) return &it->second.front();
-  const auto full_name = [&](const VertexRef& r) -> const std::string& {
+  const auto full_name = [&](const VertexRef& r) -> std::string {
     return placements_[r.placement].world.soup.vertex_names[r.vertex];
   };
   if (it == vertex_suffixes_.end()) {

@@ -28,9 +28,9 @@ PolygonSoup two_grids() {
     PolygonSoup left = named_grid("left", 2, 2, 0.0), right = named_grid("right", 2, 2, 3.0);
     PolygonSoup s = test::disjoint_union(left, right);
     s.vertex_names = left.vertex_names;
-    s.vertex_names.append(right.vertex_names.begin(), right.vertex_names.end());
+    s.vertex_names.append(right.vertex_names);
     s.face_names = left.face_names;
-    s.face_names.append(right.face_names.begin(), right.face_names.end());
+    s.face_names.append(right.face_names);
     return s;
   }();
 }
@@ -150,9 +150,9 @@ TEST_CASE("edits follow vertex names through geometry changes and report what va
   PolygonSoup left = named_grid("left", 2, 2, 0.0), right = named_grid("right", 1, 1, 2.5);
   PolygonSoup smaller = test::disjoint_union(left, right);
   smaller.vertex_names = left.vertex_names;
-  smaller.vertex_names.append(right.vertex_names.begin(), right.vertex_names.end());
+  smaller.vertex_names.append(right.vertex_names);
   smaller.face_names = left.face_names;
-  smaller.face_names.append(right.face_names.begin(), right.face_names.end());
+  smaller.face_names.append(right.face_names);
   doc.set_scene_geometry(smaller);
   const std::vector<UnresolvedEdit> gone = doc.unresolved();
   REQUIRE(gone.size() == 2);

@@ -8,6 +8,7 @@
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/offset.hpp"
 #include "support/mesh_measures.hpp"
+#include "support/same_mesh.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
@@ -117,34 +118,6 @@ TEST_CASE("offset_polygons gives offset()'s positions, polygons and colours with
                   InvalidInputError);
 }
 
-namespace {
-
-// Every array of the two meshes, compared: what a rebuild must reproduce.
-void check_same_mesh(const Mesh& a, const Mesh& b) {
-  CHECK(validate(a).empty());
-  CHECK(a.positions() == b.positions());
-  CHECK(a.face_offsets() == b.face_offsets());
-  CHECK(a.corner_vertices() == b.corner_vertices());
-  CHECK(a.corner_edges() == b.corner_edges());
-  CHECK(a.corner_faces() == b.corner_faces());
-  CHECK(a.corner_signs() == b.corner_signs());
-  REQUIRE(a.num_edges() == b.num_edges());
-  for (Index e = 0; e < a.num_edges(); ++e) {
-    const Edge &x = a.edge(e), &y = b.edge(e);
-    CHECK((x.vertices == y.vertices && x.faces == y.faces && x.corners == y.corners &&
-           x.is_mobius == y.is_mobius && x.is_sharp == y.is_sharp));
-  }
-  CHECK(a.fan_corner_offsets() == b.fan_corner_offsets());
-  CHECK(a.fan_corners() == b.fan_corners());
-  CHECK(a.fan_edge_offsets() == b.fan_edge_offsets());
-  CHECK(a.fan_edges() == b.fan_edges());
-  CHECK(a.num_components() == b.num_components());
-  for (Index f = 0; f < a.num_faces(); ++f) CHECK(a.face_component(f) == b.face_component(f));
-  CHECK(a.face_colors() == b.face_colors());
-}
-
-}  // namespace
-
 TEST_CASE("offset_into rebuilds in the blocks of the solid it replaces what offset() builds", "[kernel]") {
   PolygonSoup band = test::mobius_band(12, 3);
   for (Index f = 0; f < band.num_faces(); ++f)
@@ -162,7 +135,7 @@ TEST_CASE("offset_into rebuilds in the blocks of the solid it replaces what offs
     const Mesh m = build_mesh(shape);
     compute_normals(m, normals);
     offset_into(m, normals, 0.04, solid);
-    check_same_mesh(solid, offset(m, {0.04}));
+    test::check_same_mesh(solid, offset(m, {0.04}));
     CHECK(normals.vertices == compute_normals(m).vertices);
   }
   // Rebuilt with the same counts, the solid keeps its blocks: no fresh memory.
@@ -174,12 +147,12 @@ TEST_CASE("offset_into rebuilds in the blocks of the solid it replaces what offs
   CHECK(solid.positions().data() == positions);
   CHECK(solid.edges().data() == edges);
   CHECK(solid.fan_corners().data() == fans);
-  check_same_mesh(solid, offset(torus, {0.05}));
+  test::check_same_mesh(solid, offset(torus, {0.05}));
   // Two threads build the same arrays (the meshes are large enough to be split: 2^15 faces and more).
   for (const PolygonSoup& shape : {test::torus(256, 128), test::mobius_band(512, 64)}) {
     const Mesh m = build_mesh(shape);
     offset_into(m, compute_normals(m), 0.01, solid, 2);
-    check_same_mesh(solid, offset(m, {0.01}));
+    test::check_same_mesh(solid, offset(m, {0.01}));
   }
   // A refused distance leaves the solid as it was.
   CHECK_THROWS_AS(offset_into(torus, compute_normals(torus), -1.0, solid), InvalidInputError);

@@ -12,6 +12,9 @@ namespace nome {
 // machines) about 500-fold.
 void* allocate_buffer(std::size_t bytes);
 void free_buffer(void* block, std::size_t bytes) noexcept;
+// Keeps freed blocks of 2 MB or more, up to `limit` bytes in all, for the next allocation of their size
+// (0, the default, keeps none; keep_freed_memory() sets it for a program).
+void keep_freed_buffers(std::size_t limit);
 
 // The allocator of Buffer: new elements are default-initialized, so arrays of trivial types are not
 // zero-filled before the code that sized them writes every element (a whole extra pass over the memory

@@ -176,7 +176,7 @@ class Mesh {
   std::string face_label(Index f) const;
 
  private:
-  friend Mesh build_mesh(PolygonSoup soup);
+  friend Mesh build_mesh_from(PolygonSoup& soup);
   friend Mesh assemble_mesh(MeshArrays arrays);
 
   friend MeshArrays take_arrays(Mesh&& mesh);
@@ -217,10 +217,15 @@ std::vector<std::string> validate(const Mesh& mesh);
 // third face on an edge, a vertex whose faces do not form one fan. Vertices used by no face are kept
 // as isolated vertices (they belong to no component).
 Mesh build_mesh(PolygonSoup soup);
+// build_mesh on the soup's own arrays, without a copy: they move into the mesh, or stay in the soup when it
+// throws (for a caller that explains the error from them).
+Mesh build_mesh_from(PolygonSoup& soup);
 
 // How many meshes build_mesh has been asked to build in this process: the interactive paths build none
 // when only positions move, and tests hold them to it.
 std::uint64_t build_mesh_count();
+// How many of them found their edges from the soup's grid layout rather than by searching.
+std::uint64_t build_mesh_grid_count();
 
 // The mesh's polygons and attributes as a soup (round trip: build_mesh(to_soup(m)) equals m).
 PolygonSoup to_soup(const Mesh& mesh);

@@ -1,12 +1,14 @@
 #pragma once
 
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "nome/mesh/buffer.hpp"
 #include "nome/mesh/names.hpp"
+#include "nome/mesh/soup_grid.hpp"
 #include "nome/mesh/types.hpp"
 
 namespace nome {
@@ -34,6 +36,7 @@ struct PolygonSoup {
   std::vector<std::pair<Index, float>> sharp_vertices;  // corner vertices and their sharpness
   std::vector<Index> hole_faces;         // faces refined for their neighbours' sake but not output
   std::vector<FaceOrigin> face_origins;  // empty, or runs sorted by first_face
+  std::optional<SoupGrid> grid;          // the faces' layout, when a generator made them as a grid
 
   Index add_vertex(const Vec3& p) {
     positions.push_back(p);
@@ -60,7 +63,7 @@ struct PolygonSoup {
 
 // Appends `part` to `into` as separate vertices and faces, keeping names, colours, origins and sharp marks:
 // where only one of them has names, the other's elements get empty ones; where only one has colours, the
-// other's faces get default_face_color.
+// other's faces get default_face_color. A grid layout is kept when `into` was empty.
 void append_soup(PolygonSoup& into, const PolygonSoup& part);
 
 }  // namespace nome
