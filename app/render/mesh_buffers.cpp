@@ -121,7 +121,10 @@ void MeshBuffers::set_face_colors(std::span<const std::array<std::uint8_t, 4>> c
   if (colors.size() != topology_->num_faces)
     throw InvalidInputError("MeshBuffers::set_face_colors: " + std::to_string(colors.size()) +
                             " colours for " + std::to_string(topology_->num_faces) + " faces");
+  const bool had_face_colors = has_face_colors_;
   has_face_colors_ = std::any_of(colors.begin(), colors.end(), [](const auto& c) { return c[3] > 0; });
+  // Without colours the table is never read: a slider on an uncoloured mesh uploads none.
+  if (!has_face_colors_ && !had_face_colors) return;
   glBindBuffer(GL_TEXTURE_BUFFER, face_color_buffer_);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(colors.size() * 4), colors.data());
 }

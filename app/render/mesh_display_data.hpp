@@ -9,7 +9,6 @@
 
 #include "nome/mesh/buffer.hpp"
 #include "nome/mesh/mesh.hpp"
-#include "nome/mesh/normals.hpp"
 #include "render/bounding_box.hpp"
 
 namespace nome::render {
@@ -64,9 +63,8 @@ struct MeshDisplayData {
 };
 
 DisplayTopology build_display_topology(const Mesh& mesh);
-// Fills `out` for the mesh's positions on up to `threads` threads; `normals` is scratch space kept between
-// calls (its blocks reused).
-void build_display_positions(const Mesh& mesh, Normals& normals, DisplayPositions& out, int threads = 1);
+// Fills `out` for the mesh's positions on up to `threads` threads (into its arrays' blocks).
+void build_display_positions(const Mesh& mesh, DisplayPositions& out, int threads = 1);
 std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh);
 MeshDisplayData build_display_data(const Mesh& mesh);
 

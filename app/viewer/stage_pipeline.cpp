@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <future>
 #include <thread>
 
 namespace nome::viewer {
@@ -99,7 +100,7 @@ std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions
     out = std::make_shared<render::DisplayPositions>();
     if (positions_.size() < 3) positions_.push_back(out);
   }
-  render::build_display_positions(mesh, normals_, *out, threads);
+  render::build_display_positions(mesh, *out, threads);
   return out;
 }
 
@@ -115,9 +116,12 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
     result.borders = std::make_shared<const BorderLookup>(mesh);
     result.topology = topology_report(mesh);
   }
+  // The mesh's copy (memory bound) beside the display arrays (arithmetic and scatters).
+  std::future<std::shared_ptr<const Mesh>> copied = std::async(
+      settings.threads > 1 ? std::launch::async : std::launch::deferred, [&] { return copy(mesh, is_same); });
   result.display.positions = display_positions(mesh, settings.threads);
   result.display.face_colors = render::display_face_colors(mesh);
-  result.mesh = copy(mesh, is_same);
+  result.mesh = copied.get();
   last_settings_ = settings;
   last_ = Shared{result.display.topology, result.borders,     result.topology, mesh.num_vertices(),
                  mesh.num_faces(),        mesh.num_corners(), mesh.num_edges()};

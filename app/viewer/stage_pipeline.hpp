@@ -74,7 +74,6 @@ class StagePipeline {
   std::optional<Shared> last_;
   std::vector<std::shared_ptr<Mesh>> copies_;  // of the last topology, handed out in results
   std::vector<std::shared_ptr<render::DisplayPositions>> positions_;  // likewise
-  Normals normals_;
   mutable std::mutex progress_mutex_;
   WorkProgress progress_;
   Pipeline pipeline_;
