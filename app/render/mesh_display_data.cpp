@@ -106,10 +106,14 @@ DisplayTopology build_display_topology(const Mesh& mesh) {
   return data;
 }
 
-void build_display_positions(const Mesh& mesh, DisplayPositions& out, int threads) {
+void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, DisplayPositions& out,
+                             int threads) {
   compute_float_face_normals(mesh, out.face_normals, threads);
   const Buffer<Vec3>& positions = mesh.positions();
+  const std::vector<std::uint32_t>& extra = topology.extra_vertices;
   resize_for_overwrite(out.vertices, positions.size());
+  resize_for_overwrite(out.extra_vertices, extra.size());
+  resize_for_overwrite(out.extra_normals, extra.size());
   auto round_positions = [&] {
     BoundingBox box;
     for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -117,15 +121,23 @@ void build_display_positions(const Mesh& mesh, DisplayPositions& out, int thread
       box.add(positions[i]);
     }
     out.bounds = box;
+    for (std::size_t i = 0; i < extra.size(); ++i)
+      out.extra_vertices[i] = out.vertices[extra[i] & ~corner_sign_bit];
   };
   // The vertex normals' scatter takes one thread (see compute_float_normals); a large mesh's positions
   // are rounded beside it.
-  std::jthread helper;
-  if (threads > 1 && positions.size() >= (1u << 16))
-    helper = std::jthread(round_positions);
-  else
-    round_positions();
-  compute_float_vertex_normals(mesh, out.face_normals, out.vertex_normals);
+  {
+    std::jthread helper;
+    if (threads > 1 && positions.size() >= (1u << 16))
+      helper = std::jthread(round_positions);
+    else
+      round_positions();
+    compute_float_vertex_normals(mesh, out.face_normals, out.vertex_normals);
+  }
+  for (std::size_t i = 0; i < extra.size(); ++i) {
+    const glm::vec3& n = out.vertex_normals[extra[i] & ~corner_sign_bit];
+    out.extra_normals[i] = extra[i] & corner_sign_bit ? -n : n;
+  }
 }
 
 std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh) {
@@ -140,7 +152,7 @@ MeshDisplayData build_display_data(const Mesh& mesh) {
   MeshDisplayData data;
   data.topology = std::make_shared<const DisplayTopology>(build_display_topology(mesh));
   auto positions = std::make_shared<DisplayPositions>();
-  build_display_positions(mesh, *positions);
+  build_display_positions(mesh, *data.topology, *positions);
   data.positions = std::move(positions);
   data.face_colors = display_face_colors(mesh);
   return data;

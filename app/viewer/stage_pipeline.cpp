@@ -88,8 +88,8 @@ std::shared_ptr<const Mesh> StagePipeline::copy(const Mesh& mesh, bool is_same_t
   return copy;
 }
 
-std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions(const Mesh& mesh,
-                                                                                 int threads) {
+std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions(
+    const Mesh& mesh, const render::DisplayTopology& topology, int threads) {
   auto free =
       std::find_if(positions_.begin(), positions_.end(), [](const auto& p) { return p.use_count() == 1; });
   std::shared_ptr<render::DisplayPositions> out;
@@ -100,7 +100,7 @@ std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions
     out = std::make_shared<render::DisplayPositions>();
     if (positions_.size() < 3) positions_.push_back(out);
   }
-  render::build_display_positions(mesh, *out, threads);
+  render::build_display_positions(mesh, topology, *out, threads);
   return out;
 }
 
@@ -119,7 +119,7 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
   // The mesh's copy (memory bound) beside the display arrays (arithmetic and scatters).
   std::future<std::shared_ptr<const Mesh>> copied = std::async(
       settings.threads > 1 ? std::launch::async : std::launch::deferred, [&] { return copy(mesh, is_same); });
-  result.display.positions = display_positions(mesh, settings.threads);
+  result.display.positions = display_positions(mesh, *result.display.topology, settings.threads);
   result.display.face_colors = render::display_face_colors(mesh);
   result.mesh = copied.get();
   last_settings_ = settings;

@@ -60,7 +60,9 @@ class StagePipeline {
   void display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result);
   bool is_same_topology(const Mesh& mesh, const PipelineSettings& settings) const;
   std::shared_ptr<const Mesh> copy(const Mesh& mesh, bool is_same_topology);
-  std::shared_ptr<const render::DisplayPositions> display_positions(const Mesh& mesh, int threads);
+  std::shared_ptr<const render::DisplayPositions> display_positions(const Mesh& mesh,
+                                                                    const render::DisplayTopology& topology,
+                                                                    int threads);
 
   std::mutex mutex_;
   std::optional<PipelineSettings> last_settings_;

@@ -16,7 +16,7 @@ render::MeshDisplayData moved(const Mesh& mesh, std::shared_ptr<const render::Di
   render::MeshDisplayData data;
   data.topology = std::move(topology);
   auto positions = std::make_shared<render::DisplayPositions>();
-  render::build_display_positions(mesh, *positions);
+  render::build_display_positions(mesh, *data.topology, *positions);
   data.positions = std::move(positions);
   data.face_colors = render::display_face_colors(mesh);
   return data;
