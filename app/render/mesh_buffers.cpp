@@ -92,36 +92,31 @@ MeshBuffers::~MeshBuffers() {
 
 void MeshBuffers::update_positions(const DisplayPositions& positions) {
   const DisplayTopology& t = *topology_;
+  const std::size_t extra = t.extra_vertices.size();
   if (positions.vertices.size() != t.num_vertices || positions.vertex_normals.size() != t.num_vertices ||
-      positions.face_normals.size() != t.num_faces)
+      positions.face_normals.size() != t.num_faces || positions.extra_vertices.size() != extra ||
+      positions.extra_normals.size() != extra)
     throw InvalidInputError("MeshBuffers::update_positions: " + std::to_string(positions.vertices.size()) +
-                            " vertices and " + std::to_string(positions.face_normals.size()) + " faces for " +
-                            std::to_string(t.num_vertices) + " and " + std::to_string(t.num_faces));
+                            " vertices, " + std::to_string(positions.extra_vertices.size()) +
+                            " extra vertices and " + std::to_string(positions.face_normals.size()) +
+                            " faces for " + std::to_string(t.num_vertices) + ", " + std::to_string(extra) +
+                            " and " + std::to_string(t.num_faces));
   write_vectors(GL_ARRAY_BUFFER, buffers_[0], 0, positions.vertices);
+  write_vectors(GL_ARRAY_BUFFER, buffers_[0], t.num_vertices, positions.extra_vertices);
   write_vectors(GL_ARRAY_BUFFER, buffers_[1], 0, positions.vertex_normals);
+  write_vectors(GL_ARRAY_BUFFER, buffers_[1], t.num_vertices, positions.extra_normals);
   write_vectors(GL_TEXTURE_BUFFER, face_normal_buffer_, 0, positions.face_normals);
-  update_extra_vertices(positions);
   bounds_ = positions.bounds;
-}
-
-void MeshBuffers::update_extra_vertices(const DisplayPositions& positions) {
-  const std::vector<std::uint32_t>& extra = topology_->extra_vertices;
-  extra_scratch_.resize(extra.size());
-  for (std::size_t i = 0; i < extra.size(); ++i)
-    extra_scratch_[i] = positions.vertices[extra[i] & ~corner_sign_bit];
-  write_vectors(GL_ARRAY_BUFFER, buffers_[0], topology_->num_vertices, extra_scratch_);
-  for (std::size_t i = 0; i < extra.size(); ++i) {
-    const glm::vec3& n = positions.vertex_normals[extra[i] & ~corner_sign_bit];
-    extra_scratch_[i] = extra[i] & corner_sign_bit ? -n : n;
-  }
-  write_vectors(GL_ARRAY_BUFFER, buffers_[1], topology_->num_vertices, extra_scratch_);
 }
 
 void MeshBuffers::set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) {
   if (colors.size() != topology_->num_faces)
     throw InvalidInputError("MeshBuffers::set_face_colors: " + std::to_string(colors.size()) +
                             " colours for " + std::to_string(topology_->num_faces) + " faces");
+  const bool had_face_colors = has_face_colors_;
   has_face_colors_ = std::any_of(colors.begin(), colors.end(), [](const auto& c) { return c[3] > 0; });
+  // Without colours the table is never read: a slider on an uncoloured mesh uploads none.
+  if (!has_face_colors_ && !had_face_colors) return;
   glBindBuffer(GL_TEXTURE_BUFFER, face_color_buffer_);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(colors.size() * 4), colors.data());
 }

@@ -50,15 +50,12 @@ class MeshBuffers {
 
  private:
   std::shared_ptr<const DisplayTopology> topology_;
-  // Writes the extra vertices' positions and normals (topology().extra_vertices) after the mesh's own.
-  void update_extra_vertices(const DisplayPositions& positions);
 
   GLuint surface_vao_ = 0, edge_vao_ = 0;
   // positions, vertex normals, vertex faces, triangles, segments
   std::array<GLuint, 5> buffers_{};
   GLuint face_normal_buffer_ = 0, face_color_buffer_ = 0, face_flag_buffer_ = 0;
   GLuint face_normal_texture_ = 0, face_color_texture_ = 0, face_flag_texture_ = 0;
-  std::vector<glm::vec3> extra_scratch_;  // kept for its block
   bool has_face_colors_ = false, has_selection_ = false;
   BoundingBox bounds_;
 };

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <thread>
 
+#include "nome/mesh/normals.hpp"
 #include "nome/query/display_triangles.hpp"
 
 namespace nome::render {
@@ -106,28 +106,38 @@ DisplayTopology build_display_topology(const Mesh& mesh) {
   return data;
 }
 
-void build_display_positions(const Mesh& mesh, Normals& normals, DisplayPositions& out, int threads) {
-  compute_float_normals(mesh, normals, out.face_normals, out.vertex_normals, threads);
+void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, DisplayPositions& out,
+                             int threads) {
+  compute_float_face_normals(mesh, out.face_normals, threads);
   const Buffer<Vec3>& positions = mesh.positions();
+  const std::vector<std::uint32_t>& extra = topology.extra_vertices;
   resize_for_overwrite(out.vertices, positions.size());
-  auto part = [&](std::size_t begin, std::size_t end, BoundingBox& box) {
-    for (std::size_t i = begin; i < end; ++i) {
+  resize_for_overwrite(out.extra_vertices, extra.size());
+  resize_for_overwrite(out.extra_normals, extra.size());
+  auto round_positions = [&] {
+    BoundingBox box;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
       out.vertices[i] = glm::vec3(positions[i]);
       box.add(positions[i]);
     }
+    out.bounds = box;
+    for (std::size_t i = 0; i < extra.size(); ++i)
+      out.extra_vertices[i] = out.vertices[extra[i] & ~corner_sign_bit];
   };
-  // The second half of a large mesh on a thread of its own.
-  const std::size_t half =
-      threads > 1 && positions.size() >= (1u << 16) ? positions.size() / 2 : positions.size();
-  BoundingBox second;
-  std::thread helper;
-  if (half < positions.size()) helper = std::thread(part, half, positions.size(), std::ref(second));
-  out.bounds = {};
-  part(0, half, out.bounds);
-  if (!helper.joinable()) return;
-  helper.join();
-  out.bounds.add(second.min);
-  out.bounds.add(second.max);
+  // The vertex normals' scatter takes one thread (see compute_float_normals); a large mesh's positions
+  // are rounded beside it.
+  {
+    std::jthread helper;
+    if (threads > 1 && positions.size() >= (1u << 16))
+      helper = std::jthread(round_positions);
+    else
+      round_positions();
+    compute_float_vertex_normals(mesh, out.face_normals, out.vertex_normals);
+  }
+  for (std::size_t i = 0; i < extra.size(); ++i) {
+    const glm::vec3& n = out.vertex_normals[extra[i] & ~corner_sign_bit];
+    out.extra_normals[i] = extra[i] & corner_sign_bit ? -n : n;
+  }
 }
 
 std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh) {
@@ -141,9 +151,8 @@ std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh) {
 MeshDisplayData build_display_data(const Mesh& mesh) {
   MeshDisplayData data;
   data.topology = std::make_shared<const DisplayTopology>(build_display_topology(mesh));
-  Normals normals;
   auto positions = std::make_shared<DisplayPositions>();
-  build_display_positions(mesh, normals, *positions);
+  build_display_positions(mesh, *data.topology, *positions);
   data.positions = std::move(positions);
   data.face_colors = display_face_colors(mesh);
   return data;

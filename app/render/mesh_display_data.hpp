@@ -9,7 +9,6 @@
 
 #include "nome/mesh/buffer.hpp"
 #include "nome/mesh/mesh.hpp"
-#include "nome/mesh/normals.hpp"
 #include "render/bounding_box.hpp"
 
 namespace nome::render {
@@ -45,12 +44,15 @@ inline constexpr std::uint32_t corner_sign_bit = 0x80000000u;
 
 // What a slider that moves vertices changes: per vertex its position and unit normal (relative to the
 // first face of its fan; zero at a pinch, where the shader takes the face's normal), per face its unit
-// normal, in single precision. Buffer blocks: arrays of a million faces get huge pages, not fresh 4 KB
+// normal, in single precision; and the same for the topology's extra GL vertices (gathered here, off the
+// thread that uploads them). Buffer blocks: arrays of a million faces get huge pages, not fresh 4 KB
 // pages one by one.
 struct DisplayPositions {
   Buffer<glm::vec3> vertices;
   Buffer<glm::vec3> vertex_normals;
   Buffer<glm::vec3> face_normals;
+  Buffer<glm::vec3> extra_vertices;  // per DisplayTopology::extra_vertices, its normal turned round if so
+  Buffer<glm::vec3> extra_normals;
   BoundingBox bounds;
 };
 
@@ -64,9 +66,10 @@ struct MeshDisplayData {
 };
 
 DisplayTopology build_display_topology(const Mesh& mesh);
-// Fills `out` for the mesh's positions on up to `threads` threads; `normals` is scratch space kept between
-// calls (its blocks reused).
-void build_display_positions(const Mesh& mesh, Normals& normals, DisplayPositions& out, int threads = 1);
+// Fills `out` for the mesh's positions and the GL vertices of `topology` (the mesh's), on up to `threads`
+// threads (into its arrays' blocks).
+void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, DisplayPositions& out,
+                             int threads = 1);
 std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh);
 MeshDisplayData build_display_data(const Mesh& mesh);
 

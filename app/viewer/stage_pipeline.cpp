@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <future>
 #include <thread>
 
 namespace nome::viewer {
@@ -87,8 +88,8 @@ std::shared_ptr<const Mesh> StagePipeline::copy(const Mesh& mesh, bool is_same_t
   return copy;
 }
 
-std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions(const Mesh& mesh,
-                                                                                 int threads) {
+std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions(
+    const Mesh& mesh, const render::DisplayTopology& topology, int threads) {
   auto free =
       std::find_if(positions_.begin(), positions_.end(), [](const auto& p) { return p.use_count() == 1; });
   std::shared_ptr<render::DisplayPositions> out;
@@ -99,7 +100,7 @@ std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions
     out = std::make_shared<render::DisplayPositions>();
     if (positions_.size() < 3) positions_.push_back(out);
   }
-  render::build_display_positions(mesh, normals_, *out, threads);
+  render::build_display_positions(mesh, topology, *out, threads);
   return out;
 }
 
@@ -115,9 +116,12 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
     result.borders = std::make_shared<const BorderLookup>(mesh);
     result.topology = topology_report(mesh);
   }
-  result.display.positions = display_positions(mesh, settings.threads);
+  // The mesh's copy (memory bound) beside the display arrays (arithmetic and scatters).
+  std::future<std::shared_ptr<const Mesh>> copied = std::async(
+      settings.threads > 1 ? std::launch::async : std::launch::deferred, [&] { return copy(mesh, is_same); });
+  result.display.positions = display_positions(mesh, *result.display.topology, settings.threads);
   result.display.face_colors = render::display_face_colors(mesh);
-  result.mesh = copy(mesh, is_same);
+  result.mesh = copied.get();
   last_settings_ = settings;
   last_ = Shared{result.display.topology, result.borders,     result.topology, mesh.num_vertices(),
                  mesh.num_faces(),        mesh.num_corners(), mesh.num_edges()};

@@ -60,7 +60,9 @@ class StagePipeline {
   void display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result);
   bool is_same_topology(const Mesh& mesh, const PipelineSettings& settings) const;
   std::shared_ptr<const Mesh> copy(const Mesh& mesh, bool is_same_topology);
-  std::shared_ptr<const render::DisplayPositions> display_positions(const Mesh& mesh, int threads);
+  std::shared_ptr<const render::DisplayPositions> display_positions(const Mesh& mesh,
+                                                                    const render::DisplayTopology& topology,
+                                                                    int threads);
 
   std::mutex mutex_;
   std::optional<PipelineSettings> last_settings_;
@@ -74,7 +76,6 @@ class StagePipeline {
   std::optional<Shared> last_;
   std::vector<std::shared_ptr<Mesh>> copies_;  // of the last topology, handed out in results
   std::vector<std::shared_ptr<render::DisplayPositions>> positions_;  // likewise
-  Normals normals_;
   mutable std::mutex progress_mutex_;
   WorkProgress progress_;
   Pipeline pipeline_;

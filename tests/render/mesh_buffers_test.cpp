@@ -15,9 +15,8 @@ namespace {
 render::MeshDisplayData moved(const Mesh& mesh, std::shared_ptr<const render::DisplayTopology> topology) {
   render::MeshDisplayData data;
   data.topology = std::move(topology);
-  Normals scratch;
   auto positions = std::make_shared<render::DisplayPositions>();
-  render::build_display_positions(mesh, scratch, *positions);
+  render::build_display_positions(mesh, *data.topology, *positions);
   data.positions = std::move(positions);
   data.face_colors = render::display_face_colors(mesh);
   return data;

@@ -73,14 +73,20 @@ TEST_CASE("smooth normals follow each face's own orientation across Möbius edge
     const render::MeshDisplayData data = render::build_display_data(mesh);
     const render::DisplayTopology& t = *data.topology;
     const DisplayTriangles triangles = display_triangles(mesh);
-    // The shader's smooth normal: the vertex normal, turned round for a vertex that has the sign bit.
+    // The shader's smooth normal: the GL vertex's, an extra vertex's turned round where it has the sign
+    // bit; its position the mesh vertex's.
+    const render::DisplayPositions& p = *data.positions;
+    REQUIRE(p.extra_normals.size() == t.extra_vertices.size());
+    REQUIRE(p.extra_vertices.size() == t.extra_vertices.size());
     for (Index k = 0; k < triangles.size(); ++k)
       for (int i = 0; i < 3; ++i) {
-        const std::uint32_t u = key(t, t.triangles[3 * std::size_t(k) + i]);
-        const float sign = (u & render::corner_sign_bit) ? -1.0f : 1.0f;
-        const glm::vec3 smooth = sign * data.positions->vertex_normals[u & ~render::corner_sign_bit];
+        const std::uint32_t g = t.triangles[3 * std::size_t(k) + i];
+        const bool is_extra = g >= t.num_vertices;
+        const glm::vec3 smooth = is_extra ? p.extra_normals[g - t.num_vertices] : p.vertex_normals[g];
+        const glm::vec3 position = is_extra ? p.extra_vertices[g - t.num_vertices] : p.vertices[g];
+        REQUIRE(position == glm::vec3(mesh.position(key(t, g) & ~render::corner_sign_bit)));
         REQUIRE(glm::length(smooth) == Approx(1.0f));
-        REQUIRE(glm::dot(smooth, data.positions->face_normals[triangles.faces[k]]) > 0.5f);
+        REQUIRE(glm::dot(smooth, p.face_normals[triangles.faces[k]]) > 0.5f);
       }
   }
 }

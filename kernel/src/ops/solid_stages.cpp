@@ -138,7 +138,7 @@ Mesh& SolidStages::offset_stage(const Mesh& in, const PipelineSettings& s) {
   }
   progress_("offset", 0.0);
   const Normals& normals = offset_.normals;
-  compute_normals(in, offset_.normals);
+  compute_normals(in, offset_.normals, s.threads);
   progress_("offset", 0.3);
   if (std::string warning = degeneracy_warning(in, normals); !warning.empty())
     warnings_.push_back("offset: " + warning);
@@ -148,7 +148,7 @@ Mesh& SolidStages::offset_stage(const Mesh& in, const PipelineSettings& s) {
     offset_.work = StageWork::rebuilt;
     has_new_topology_ = has_new_positions_ = true;
   } else {
-    offset_positions(in, normals, s.distance(), offset_.result.positions());
+    offset_positions(in, normals, s.distance(), offset_.result.positions(), s.threads);
     offset_.work = StageWork::positions;
   }
   progress_("offset", 1.0);

@@ -99,6 +99,19 @@ TEST_CASE("offset_positions moves the vertices of a kept offset topology", "[ker
   CHECK(solid.positions() == offset(moved, {0.05}).positions());
 }
 
+TEST_CASE("offset_positions on two threads writes the positions of one", "[kernel]") {
+  // Large enough to split over two threads; a Möbius band, whose vertex normals follow each fan's sign.
+  const Mesh band = build_mesh(test::mobius_band(700, 100));
+  REQUIRE(band.num_vertices() > 2 * (1u << 15));
+  const Normals normals = compute_normals(band);
+  std::vector<Vec3> one(2 * std::size_t(band.num_vertices())), two(one.size());
+  offset_positions(band, normals, 0.05, one);
+  offset_positions(band, normals, 0.05, two, 2);
+  CHECK(two == one);
+  const Mesh solid = offset(band, {0.05});
+  CHECK(one == std::vector<Vec3>(solid.positions().begin(), solid.positions().end()));
+}
+
 TEST_CASE("offset_polygons gives offset()'s positions, polygons and colours without the adjacency",
           "[kernel]") {
   PolygonSoup band = test::mobius_band(10, 2);

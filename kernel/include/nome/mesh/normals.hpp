@@ -25,12 +25,18 @@ struct Normals {
 // orientation sign (Möbius-aware: no dot-product guessing). Degenerate elements get a zero normal and
 // are listed, never NaN.
 Normals compute_normals(const Mesh& mesh);
-// The same into `out`, reusing its arrays' blocks (no fresh pages for a mesh no larger than the last).
-void compute_normals(const Mesh& mesh, Normals& out);
-// The same normals rounded to single precision (what a GPU draws with), rounded on up to `threads`
-// threads; `scratch` keeps the double-precision normals and the degenerate elements.
-void compute_float_normals(const Mesh& mesh, Normals& scratch, Buffer<glm::vec3>& faces,
-                           Buffer<glm::vec3>& vertices, int threads);
+// The same into `out`, reusing its arrays' blocks (no fresh pages for a mesh no larger than the last), on
+// up to `threads` threads (the same normals and lists on any number).
+void compute_normals(const Mesh& mesh, Normals& out, int threads = 1);
+// The normals a GPU draws with, straight into `faces` and `vertices`: compute_normals' face normals
+// rounded, on up to `threads` threads; vertex normals summed and normalized in single precision, on one
+// (within about 1e-6 of compute_normals' rounded, and zero where those are).
+void compute_float_normals(const Mesh& mesh, Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices,
+                           int threads);
+// Its two passes, for a caller that runs other work beside the second: `faces` from the first.
+void compute_float_face_normals(const Mesh& mesh, Buffer<glm::vec3>& faces, int threads);
+void compute_float_vertex_normals(const Mesh& mesh, std::span<const glm::vec3> faces,
+                                  Buffer<glm::vec3>& vertices);
 
 // A warning naming the degenerate faces and vertices of `normals` (the first few of each, by label),
 // or "" when there are none: for the caller to show, since the kernel never prints.

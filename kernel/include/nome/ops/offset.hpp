@@ -41,8 +41,10 @@ void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh
 PolygonSoup offset_polygons(const Mesh& mesh, const Normals& normals, double distance);
 
 // The position pass alone: writes the positions offset(mesh, {distance}) would have into `out`
-// (2 per vertex that has faces), for a caller that keeps the topology and moves only the vertices.
+// (2 per vertex that has faces), for a caller that keeps the topology and moves only the vertices; on up
+// to `threads` threads when every vertex has faces.
 void offset_positions(const Mesh& mesh, double distance, std::span<Vec3> out);
-void offset_positions(const Mesh& mesh, const Normals& normals, double distance, std::span<Vec3> out);
+void offset_positions(const Mesh& mesh, const Normals& normals, double distance, std::span<Vec3> out,
+                      int threads = 1);
 
 }  // namespace nome
