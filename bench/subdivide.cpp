@@ -124,7 +124,7 @@ LevelSix torus_levels(int threads_available, bool with_peers) {
   std::printf("%5s %10s %10s %10s %12s %9s %10s %12s %9s %9s\n", "level", "faces", "ms (1 thr)", "fresh",
               "Mfaces/s", "B/face", "ms (2 thr)", "speed-up", "OpenMesh", "CGAL");
   for (int level = 1; level <= 6; ++level) {
-    const int runs = level <= 4 ? 10 : 5;
+    const int runs = level <= 4 ? 10 : 8;
     double faces = 0;
     bench::reset_peak();
     const double fresh = best_ms(runs, [&] { faces = refine(torus, level, 1).refinement.num_faces(); });

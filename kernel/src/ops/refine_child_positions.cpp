@@ -194,7 +194,7 @@ void refine_child_positions_by_tile(const Refinement::Level& g, const BaseTiles&
   const Index vertex_points = pass.out_vp + pass.nf + pass.ne;
   const unsigned corner_shift = 2 * unsigned(counts.size() - 1);  // base corner -> its first G corner
   const Index base_faces = Index(tiles.face_corners.size() - 1);
-  const Index per_tile = std::max<Index>(1, g.num_faces() / std::max<Index>(1, base_faces));
+  const Index per_tile = std::max<Index>(1, g.num_faces() / std::max<Index>(1, base_faces));  // G faces
   // About 2^11 faces of G a tile: what a tile reads and rewrites then fits in a 1 MB L2 cache, and its
   // index ranges are long enough for the hardware prefetchers (one base face a tile was 20 % slower).
   const Index tile = std::max<Index>(1, (Index(1) << 11) / per_tile);
@@ -215,7 +215,8 @@ void refine_child_positions_by_tile(const Refinement::Level& g, const BaseTiles&
       visit_tile(tiles, counts, b, b_end, faces, edges, vertices);
     }
   };
-  parallel_for(base_faces, threads, tiles_from, std::max<Index>(1, (Index(1) << 15) / per_tile));
+  // A G face is a few hundred instructions here: 2^12 of them a thread are worth a thread's start.
+  parallel_for(base_faces, threads, tiles_from, std::max<Index>(1, (Index(1) << 12) / per_tile));
   for (Index v : tiles.lone_vertices) {
     const Index at = tile_lone_vertex(counts, v);
     out[vertex_points + at] = pass.vertex_point(at, rules);
