@@ -31,9 +31,10 @@ void group_by_face(std::span<const Index> owner, Index faces, std::vector<Index>
 
 }  // namespace
 
-BaseTiles::BaseTiles(const Mesh& base)
-    : face_corners(base.face_offsets().begin(), base.face_offsets().end()) {
-  std::vector<Index> owner(base.num_edges());
+void BaseTiles::build(const Mesh& base) {
+  face_corners.assign(base.face_offsets().begin(), base.face_offsets().end());
+  lone_vertices.clear();
+  owner.resize(base.num_edges());
   for (Index e = 0; e < base.num_edges(); ++e) {
     const Edge& edge = base.edge(e);
     owner[e] = edge.faces[1] == no_index ? edge.faces[0] : std::max(edge.faces[0], edge.faces[1]);

@@ -24,11 +24,13 @@ std::vector<LevelCounts> level_counts(const Mesh& base, int k);
 // visited in order finds the other sides of its edges and vertices recently visited (in the cache). Vertices
 // of no face are left over (lone_vertices).
 struct BaseTiles {
-  explicit BaseTiles(const Mesh& base);
+  // Groups the elements of `base`, in the vectors of the last build (Refinement::rebuild).
+  void build(const Mesh& base);
 
   std::vector<Index> face_corners;  // the base's face offsets: face b has corners [b], [b + 1] - 1
   std::vector<Index> edge_offsets, edges, vertex_offsets, vertices;  // per base face (CSR)
   std::vector<Index> lone_vertices;
+  std::vector<Index> owner;  // scratch: the face each edge or vertex goes with
 };
 
 // Calls faces(begin, end), edges(begin, end) and vertices(begin, end) on the index ranges of level k's

@@ -96,7 +96,10 @@ void Refinement::rebuild(const Mesh& base, int levels, BoundaryMode boundary, in
   SharpLevel features = base_sharp_level(base, creases);
   if (!features.empty()) sharp_.push_back(std::move(features));
   build_levels(base, threads);
-  tiles_ = levels >= 3 ? std::make_unique<BaseTiles>(base) : nullptr;
+  if (levels >= 3) {
+    if (!tiles_) tiles_ = std::make_unique<BaseTiles>();
+    tiles_->build(base);
+  }
   kept_vertices_.clear();
   output_vertices_.clear();
   if (!is_hole_.empty()) find_kept_vertices(base);
