@@ -27,7 +27,7 @@ struct BaseTiles {
   // Groups the elements of `base`, in the vectors of the last build (Refinement::rebuild).
   void build(const Mesh& base);
 
-  std::vector<Index> face_corners;  // the base's face offsets: face b has corners [b], [b + 1] - 1
+  std::vector<Index> face_corners;  // the base's face offsets: b's corners are [face_corners[b], [b + 1])
   std::vector<Index> edge_offsets, edges, vertex_offsets, vertices;  // per base face (CSR)
   std::vector<Index> lone_vertices;
   std::vector<Index> owner;  // scratch: the face each edge or vertex goes with

@@ -7,13 +7,6 @@
 namespace nome {
 namespace {
 
-// The position pass from a child level P, read through the topology of its parent G. P is numbered
-// from G (refine_topology): its vertices are G's face points fp(f) = f, edge points ep(e) = F + e and
-// vertex points vp(v) = F + E + v; its quad c (one per G corner) is (vp, ep(leaving edge), fp, ep(arriving
-// edge)); its edges are the halves 2e, 2e+1 of G's edges and the face-interior edges 2E + c. So every
-// neighbourhood of P is a short arithmetic walk over G's arrays, which are four times smaller and read in
-// order, and P itself needs no arrays at all. Each sum below adds the same terms in the same order as
-// refine_positions does over P's own fans (refine_positions.cpp), so both give the same bits.
 // The G corners whose P face points are already in `out`, written by this thread (see
 // refine_child_positions_by_tile): read back there instead of made again. Empty in the phase-by-phase pass.
 struct ReadyCorners {
@@ -21,6 +14,13 @@ struct ReadyCorners {
   bool has(Index c) const { return c - begin < end - begin; }
 };
 
+// The position pass from a child level P, read through the topology of its parent G. P is numbered
+// from G (refine_topology): its vertices are G's face points fp(f) = f, edge points ep(e) = F + e and
+// vertex points vp(v) = F + E + v; its quad c (one per G corner) is (vp, ep(leaving edge), fp, ep(arriving
+// edge)); its edges are the halves 2e, 2e+1 of G's edges and the face-interior edges 2E + c. So every
+// neighbourhood of P is a short arithmetic walk over G's arrays, which are four times smaller and read in
+// order, and P itself needs no arrays at all. Each sum below adds the same terms in the same order as
+// refine_positions does over P's own fans (refine_positions.cpp), so both give the same bits.
 template <class Grandparent>
 struct ChildPass {
   const Grandparent& g;
@@ -100,7 +100,7 @@ struct ChildPass {
     const Vec3& fb = in[g.corner_face(cb)];
     const Vec3& b0 = in[vp + g.corner_vertex(cb)];
     const Vec3& b1 = in[vp + g.corner_vertex(nb)];
-    // The four face points around, made again rather than read back from `out` (as in vertex_point).
+    // The four face points around, made again unless `ready` has them (as in vertex_point).
     const Vec3 fp_ca =
         ready.has(ca) ? out[ca] : face_point(a0, here, fa, in[ep + g.corner_edge(g.prev_corner(ca))]);
     const Vec3 fp_na = ready.has(na) ? out[na] : face_point(a1, in[ep + g.corner_edge(na)], fa, here);
