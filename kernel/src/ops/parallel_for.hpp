@@ -9,10 +9,10 @@
 namespace nome {
 
 // Runs body(begin, end) over [0, n) split into `threads` contiguous ranges, the calling thread taking the
-// first. Small ranges stay on one thread: starting a thread costs more than it saves below ~10^5 items.
+// first. Small ranges stay on one thread: starting a thread costs more than it saves below ~10^5 items
+// (fewer where an item is more work).
 template <class Body>
-void parallel_for(Index n, int threads, const Body& body) {
-  constexpr Index min_items_per_thread = 1 << 15;
+void parallel_for(Index n, int threads, const Body& body, Index min_items_per_thread = 1 << 15) {
   const Index useful = std::max<Index>(1, n / min_items_per_thread);
   const Index count = std::min<Index>(Index(std::max(threads, 1)), useful);
   if (count <= 1) {

@@ -131,4 +131,13 @@ template <class Grandparent>
 void refine_child_positions(const Grandparent& grandparent, std::span<const Vec3> in, VertexRules rules,
                             std::span<Vec3> out, int threads);
 
+struct BaseTiles;
+struct LevelCounts;
+
+// The classic rule's pass of refine_child_positions from a refined level G (level k >= 1; counts of levels
+// 0 .. k), base face by base face: the same results bit for bit, in an order that keeps them in cache.
+void refine_child_positions_by_tile(const Refinement::Level& grandparent, const BaseTiles& tiles,
+                                    std::span<const LevelCounts> counts, std::span<const Vec3> in,
+                                    VertexRules rules, std::span<Vec3> out, int threads);
+
 }  // namespace nome

@@ -5,6 +5,7 @@
 
 #include "nome/error.hpp"
 #include "nome/mesh/glue_faces.hpp"
+#include "ops/base_tiles.hpp"
 #include "ops/refinement_level.hpp"
 #include "ops/sharp_level.hpp"
 
@@ -95,6 +96,10 @@ void Refinement::rebuild(const Mesh& base, int levels, BoundaryMode boundary, in
   SharpLevel features = base_sharp_level(base, creases);
   if (!features.empty()) sharp_.push_back(std::move(features));
   build_levels(base, threads);
+  if (levels >= 3) {
+    if (!tiles_) tiles_ = std::make_unique<BaseTiles>();
+    tiles_->build(base);
+  }
   kept_vertices_.clear();
   output_vertices_.clear();
   if (!is_hole_.empty()) find_kept_vertices(base);
@@ -180,6 +185,7 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
   std::span<const Vec3> in = base.positions();
   const VertexRules rules{rule, boundary_ == BoundaryMode::edge_and_corner};
   const SharpRules sharp_rules{creases_.method, rules};
+  const std::vector<LevelCounts> counts = level_counts(base, levels());
   for (size_t k = 0; k < levels_.size(); ++k) {
     std::span<Vec3> target = out;
     if (k + 1 < levels_.size()) {
@@ -190,6 +196,9 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
       nome::refine_positions(MeshLevelView(base), in, rules, target, threads);
     else if (k == 1)
       refine_child_positions(MeshLevelView(base), in, rules, target, threads);
+    else if (rule == SubdivisionRule::classic)
+      refine_child_positions_by_tile(levels_[k - 2], *tiles_, std::span(counts).first(k), in, rules, target,
+                                     threads);
     else
       refine_child_positions(levels_[k - 2], in, rules, target, threads);
     if (k < sharp_.size()) {

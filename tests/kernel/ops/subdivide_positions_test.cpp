@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
 #include "nome/ops/subdivide.hpp"
@@ -288,4 +289,47 @@ TEST_CASE("refining several levels at once gives the bits of refining one level 
       refinement.refine_positions(build_mesh(soup), rule, two_threads, 2);
       CHECK(two_threads == stepwise.positions());
     }
+}
+
+TEST_CASE("the classic pass by base-face tiles gives the bits of one level at a time", "[kernel]") {
+  // From level 3 on, the classic rule's position pass runs tile by tile over the base faces (base_tiles.hpp):
+  // every element of a level must be made once, by the same sums, whatever the tile. Unwritten outputs
+  // would stay NaN.
+  PolygonSoup with_lone_vertex = jittered(test::disjoint_union(test::tetrahedron(), test::grid(3, 2)), 0.1);
+  with_lone_vertex.add_vertex(Vec3(5.0, 5.0, 5.0));
+  std::vector<Index> pentagon;
+  for (int k = 0; k < 5; ++k)
+    pentagon.push_back(
+        with_lone_vertex.add_vertex(Vec3(std::cos(1.3 * k), std::sin(1.3 * k), 0.1 * k - 3.0)));
+  with_lone_vertex.add_face(pentagon);
+  PolygonSoup creased = jittered(test::torus(6, 5), 0.05);
+  creased.sharp_edges = {{0, 1}, {1, 2}, {2, 3}, {0, 5}};
+  const std::vector<PolygonSoup> soups = {
+      jittered(test::klein_bottle(8, 6), 0.05),
+      test::projective_plane(),
+      jittered(test::mobius_band(9, 2), 0.05),
+      with_lone_vertex,
+      creased,
+      jittered(test::disjoint_union(test::cube(), test::torus(5, 4)), 0.1)};
+  for (size_t i = 0; i < soups.size(); ++i) {
+    INFO("shape " << i);
+    const Mesh base = build_mesh(soups[i]);
+    Mesh stepwise = base;
+    for (int level = 1; level <= 4; ++level) {
+      stepwise = subdivide(stepwise, {1, SubdivisionRule::classic});
+      for (int threads : {1, 2}) {
+        Refinement refinement(base, level, BoundaryMode::edge_only, threads);
+        Buffer<Vec3> out(refinement.num_vertices(), Vec3(std::nan("")));
+        refinement.refine_positions(base, SubdivisionRule::classic, out, threads);
+        CHECK(out == stepwise.positions());
+      }
+    }
+  }
+  // Enough tiles that two threads split them: each thread reads back only the face points it wrote.
+  const Mesh torus = build_mesh(jittered(test::torus(32, 32), 0.01));
+  Refinement refinement(torus, 5);
+  Buffer<Vec3> one(refinement.num_vertices()), two(refinement.num_vertices(), Vec3(std::nan("")));
+  refinement.refine_positions(torus, SubdivisionRule::classic, one, 1);
+  refinement.refine_positions(torus, SubdivisionRule::classic, two, 2);
+  CHECK(one == two);
 }

@@ -11,6 +11,7 @@
 namespace nome {
 
 struct SharpLevel;
+struct BaseTiles;
 
 // The smooth-vertex rule of Catmull-Clark (report 004 section 4.1.3; see spec/README.md on names).
 enum class SubdivisionRule {
@@ -101,6 +102,7 @@ class Refinement {
   BoundaryMode boundary_ = BoundaryMode::edge_only;
   CreaseOptions creases_;
   std::vector<SharpLevel> sharp_;     // per parent level from the base while it has semi-sharp features
+  std::unique_ptr<BaseTiles> tiles_;  // the base's elements by face, for the tiled position pass
   std::vector<bool> is_hole_;         // per base face; empty when there is none
   std::vector<Index> kept_vertices_;  // with holes: the last level's vertices mesh() keeps, in order
   // With holes: the last level's vertex of each vertex of the mesh() made last (kept_vertices_, unless
