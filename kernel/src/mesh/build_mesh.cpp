@@ -223,17 +223,28 @@ bool walk_fan(MeshArrays& m, Index v, std::span<const Index> corners, std::vecto
   return count == k && (borders_here == 0 || borders_here == 2);
 }
 
+// Which vertices' fans are walked: all, or in a grid all but the inner ones (written out instead).
+std::vector<char> walked_vertices(Index nv, const SoupGrid* grid) {
+  std::vector<char> walked(nv, 1);
+  if (!grid) return walked;
+  for (Index i = 0, v = 0; i < grid->rings; ++i)
+    for (Index j = 0; j < grid->ring_points; ++j, ++v) walked[v] = is_grid_inner_vertex(*grid, i, j) ? 0 : 1;
+  return walked;
+}
+
 // Corners bucketed by vertex, then each vertex's fan walked (or, inside a grid, written out).
 void find_fans(MeshArrays& m, Index nv, const SoupGrid* grid, const Labels& labels, Problems& problems) {
   const Index nc = Index(m.corner_vertices.size());
+  const std::vector<char> walked = walked_vertices(nv, grid);
   m.fan_corner_offsets = csr_offsets(m.corner_vertices, nv);
-  Buffer<Index> vertex_corner_list(nc);
+  Buffer<Index> vertex_corner_list(nc);  // filled for walked vertices only
   {
     std::vector<Index> fill(m.fan_corner_offsets.begin(), m.fan_corner_offsets.end() - 1);
-    for (Index c = 0; c < nc; ++c) vertex_corner_list[fill[m.corner_vertices[c]]++] = c;
+    for (Index c = 0; c < nc; ++c)
+      if (walked[m.corner_vertices[c]]) vertex_corner_list[fill[m.corner_vertices[c]]++] = c;
   }
   resize_for_overwrite(m.fan_corners, nc);
-  m.corner_signs.assign(nc, 0);
+  resize_for_overwrite(m.corner_signs, nc);  // each corner is in one fan, which writes its sign
   m.fan_edge_offsets.assign(size_t(nv) + 1, 0);
   m.fan_edges.clear();
   m.fan_edges.reserve(size_t(nc) + nv);
@@ -245,7 +256,8 @@ void find_fans(MeshArrays& m, Index nv, const SoupGrid* grid, const Labels& labe
     const Index b = m.fan_corner_offsets[v], k = m.fan_corner_offsets[v + 1] - b;
     m.fan_edge_offsets[v + 1] = m.fan_edge_offsets[v];
     if (k == 0) continue;
-    if (grid && find_grid_inner_fan(m, *grid, i, j, corners, edges)) {
+    if (!walked[v]) {
+      find_grid_inner_fan(m, *grid, i, j, corners, edges);
       for (Index t = 0; t < 4; ++t) {
         m.fan_corners[b + t] = corners[t];
         m.corner_signs[corners[t]] = 1;

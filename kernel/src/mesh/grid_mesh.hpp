@@ -13,22 +13,33 @@ namespace nome {
 // one whose keys could name one edge twice (too few rings or points).
 bool find_grid_edges(MeshArrays& m, const SoupGrid& grid);
 
-// The fan of vertex v = (ring i, point j), as build_mesh's walk finds it, for a vertex inside a grid of
-// quads (on neither the first nor the last ring nor the rings' seam, no Möbius edge at it) whose edges
-// find_grid_edges found: its four corners and four edges in fan order, all of sign +1. False for any other
-// vertex (walk it). Inline: it runs for most vertices of a sweep.
-inline bool find_grid_inner_fan(const MeshArrays& m, const SoupGrid& grid, Index i, Index j,
+// Whether vertex (ring i, point j) is inside a grid of quads: on neither the first nor the last ring (nor
+// the border of open rings). Its four quads then lie in bands that the join does not touch, so no Möbius
+// edge meets it.
+inline bool is_grid_inner_vertex(const SoupGrid& grid, Index i, Index j) {
+  const Index cells = grid.is_ring_closed ? grid.ring_points : grid.ring_points - 1;
+  return !grid.is_triangles && i != 0 && i + 1 < grid.rings && (j != 0 || grid.is_ring_closed) && j < cells;
+}
+
+// The fan of an inner vertex (i, j), as build_mesh's walk finds it, once find_grid_edges found the edges:
+// its four corners and four edges in fan order, all of sign +1. Inline: it runs for most vertices of a sweep.
+inline void find_grid_inner_fan(const MeshArrays& m, const SoupGrid& grid, Index i, Index j,
                                 std::array<Index, 4>& corners, std::array<Index, 4>& edges) {
   const Index cells = grid.is_ring_closed ? grid.ring_points : grid.ring_points - 1;
-  if (grid.is_triangles || i == 0 || i + 1 >= grid.rings || j == 0 || j >= cells) return false;
-  // Quads (i-1, j-1), (i-1, j), (i, j-1), (i, j) meet at v; the walk starts in the first, whose corner 2 is
-  // v, and turns towards (i, j-1) across the ring edge from v.
-  const Index before = (i - 1) * cells + j - 1, after = i * cells + j;
-  corners = {4 * before + 2, 4 * (after - 1) + 1, 4 * after, 4 * (before + 1) + 3};
-  edges = {m.corner_edges[4 * before + 1], m.corner_edges[4 * before + 2],
-           m.corner_edges[4 * (after - 1) + 1], m.corner_edges[4 * after]};
-  return !m.edges[edges[0]].is_mobius && !m.edges[edges[1]].is_mobius && !m.edges[edges[2]].is_mobius &&
-         !m.edges[edges[3]].is_mobius;
+  // Quads a = (i-1, j-1), b = (i-1, j), c = (i, j-1), d = (i, j) meet at v (j-1 around the seam at j = 0).
+  // The walk starts at v's first corner, in a (in b at the seam, where a comes last), and turns towards c
+  // across the ring edge from v.
+  const Index left = j == 0 ? cells - 1 : j - 1;
+  const Index a = (i - 1) * cells + left, b = (i - 1) * cells + j, c = i * cells + left, d = i * cells + j;
+  if (j != 0) {
+    corners = {4 * a + 2, 4 * c + 1, 4 * d, 4 * b + 3};
+    edges = {m.corner_edges[4 * a + 1], m.corner_edges[4 * a + 2], m.corner_edges[4 * c + 1],
+             m.corner_edges[4 * d]};
+  } else {
+    corners = {4 * b + 3, 4 * a + 2, 4 * c + 1, 4 * d};
+    edges = {m.corner_edges[4 * d], m.corner_edges[4 * a + 1], m.corner_edges[4 * a + 2],
+             m.corner_edges[4 * c + 1]};
+  }
 }
 
 }  // namespace nome

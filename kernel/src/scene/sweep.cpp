@@ -94,15 +94,6 @@ double nearest_correspondence(std::span<const Vec3> end, std::span<const Vec3> s
   return best_worst;
 }
 
-void add_band_face(PolygonSoup& soup, const std::array<Index, 4>& quad, FaceShape shape) {
-  if (shape == FaceShape::quadrilaterals) {
-    soup.add_face(quad);
-    return;
-  }
-  soup.add_face(std::array<Index, 3>{quad[0], quad[1], quad[2]});
-  soup.add_face(std::array<Index, 3>{quad[0], quad[2], quad[3]});
-}
-
 void check_input(std::span<const PathSample> path, std::span<const CrossSection> sections,
                  const SweepOptions& o) {
   const std::size_t cut = std::size_t(o.is_cut_begin) + std::size_t(o.is_cut_end);
@@ -159,9 +150,10 @@ class Sweeper {
   SweepResult run() {
     reserve();
     PolygonSoup& soup = result_.piece.soup;
+    soup.positions.resize((last_ - first_ + 1) * m_);  // every one written below
     for (std::size_t i = first_; i <= last_; ++i) {
       const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
-      for (std::size_t j = 0; j < m_; ++j) soup.positions.push_back(placed(i, j, c, s));
+      for (std::size_t j = 0; j < m_; ++j) soup.positions[vertex(i, j)] = placed(i, j, c, s);
     }
     soup.vertex_names = Names::grid({'v', first_, m_}, soup.positions.size());
     if (m_ == 1) {
@@ -171,14 +163,18 @@ class Sweeper {
       result_.piece.topology_key = topology_key({});
       return std::move(result_);
     }
+    // The bands' faces, written in place: they are most of the sweep's arrays.
+    const std::size_t cells = (last_ - first_ + (o_.is_path_closed ? 1 : 0)) * around_;
+    const bool is_triangles = o_.faces == FaceShape::triangles;
+    soup.face_offsets.resize(cells * (is_triangles ? 2 : 1) + 1);
+    soup.face_vertices.resize(cells * (is_triangles ? 6 : 4));
     for (std::size_t i = first_; i < last_; ++i)
       for (std::size_t j = 0; j < around_; ++j) {
         const std::size_t k = (j + 1) % m_;
-        add_band_face(soup, {vertex(i, j), vertex(i, k), vertex(i + 1, k), vertex(i + 1, j)}, o_.faces);
+        put_cell({vertex(i, j), vertex(i, k), vertex(i + 1, k), vertex(i + 1, j)});
       }
     std::vector<Index> to;
     if (o_.is_path_closed) join_ends(to);
-    const bool is_triangles = o_.faces == FaceShape::triangles;
     soup.face_names =
         Names::grid({'f', first_, around_,
                      is_triangles ? std::vector<std::string>{"a", "b"} : std::vector<std::string>{""}},
@@ -209,11 +205,29 @@ class Sweeper {
   void reserve() {
     PolygonSoup& soup = result_.piece.soup;
     const std::size_t vertices = (last_ - first_ + 1) * m_;
-    const std::size_t per_quad = o_.faces == FaceShape::triangles ? 2 : 1;
-    const std::size_t faces = (last_ - first_ + 1) * around_ * per_quad + 2;
+    const std::size_t cells = (last_ - first_ + 1) * around_;
+    const bool is_triangles = o_.faces == FaceShape::triangles;
     soup.positions.reserve(vertices);
-    soup.face_vertices.reserve(faces * 4);
-    soup.face_offsets.reserve(faces + 1);
+    soup.face_vertices.reserve(cells * (is_triangles ? 6 : 4) + 2 * m_);  // and the caps
+    soup.face_offsets.reserve(cells * (is_triangles ? 2 : 1) + 3);
+  }
+
+  // The next cell of a band, (i,j) (i,k) (i+1,k) (i+1,j): a quad or two triangles, into the arrays that run()
+  // sized for them.
+  void put_cell(const std::array<Index, 4>& quad) {
+    if (o_.faces == FaceShape::quadrilaterals) {
+      put_face(quad);
+    } else {
+      put_face(std::array<Index, 3>{quad[0], quad[1], quad[2]});
+      put_face(std::array<Index, 3>{quad[0], quad[2], quad[3]});
+    }
+  }
+  template <std::size_t N>
+  void put_face(const std::array<Index, N>& face) {
+    PolygonSoup& soup = result_.piece.soup;
+    std::copy(face.begin(), face.end(), soup.face_vertices.begin() + corners_put_);
+    corners_put_ += N;
+    soup.face_offsets[++faces_put_] = Index(corners_put_);
   }
 
   // Which first-section point each point of a closed path's last section joins (warned about when no
@@ -250,7 +264,7 @@ class Sweeper {
     join_correspondence(result_.piece.soup.positions, to);
     for (std::size_t j = 0; j < around_; ++j) {
       const std::size_t k = (j + 1) % m_;
-      add_band_face(result_.piece.soup, {vertex(n_ - 1, j), vertex(n_ - 1, k), to[k], to[j]}, o_.faces);
+      put_cell({vertex(n_ - 1, j), vertex(n_ - 1, k), to[k], to[j]});
     }
   }
 
@@ -279,6 +293,7 @@ class Sweeper {
   std::vector<Frame> frames_;
   SampleTurns turns_;
   SweepResult result_;
+  std::size_t faces_put_ = 0, corners_put_ = 0;
 };
 
 }  // namespace
