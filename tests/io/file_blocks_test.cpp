@@ -19,25 +19,13 @@
 #include "nome/io/stl.hpp"
 #include "nome/mesh/normals.hpp"
 #include "nome/ops/subdivide.hpp"
+#include "support/scratch_files.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path blocks_scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("nome_file_blocks_tests_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
-
-std::string file_contents(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Bytes that differ from block to block and from any shifted copy of themselves.
 std::string random_bytes(std::size_t n) {
@@ -58,7 +46,7 @@ std::string plain_obj(const Mesh& mesh, const fs::path& p) {
     std::fputc('\n', f);
   }
   std::fclose(f);
-  return file_contents(p);
+  return test::file_bytes(p);
 }
 
 std::string plain_stl(const Mesh& mesh, const fs::path& p) {
@@ -83,7 +71,7 @@ std::string plain_stl(const Mesh& mesh, const fs::path& p) {
     }
   }
   std::fclose(f);
-  return file_contents(p);
+  return test::file_bytes(p);
 }
 
 }  // namespace
@@ -92,7 +80,7 @@ TEST_CASE("file blocks keep every byte in order, filled directly or through a st
   // Past three blocks (the writer thread recycles them) with a tail that is no whole disk block.
   const std::string expected = random_bytes(3 * FileBlocks::block_bytes + 4097);
   std::mt19937 random(3);
-  const fs::path p = blocks_scratch("pattern.bin");
+  const fs::path p = test::scratch_path("nome_file_blocks_tests", "pattern.bin");
   write_file_in_blocks(p, [&](FileBlocks& file) {
     std::ostream stream(&file);
     for (std::size_t at = 0; at < expected.size();) {
@@ -107,16 +95,16 @@ TEST_CASE("file blocks keep every byte in order, filled directly or through a st
       at += n;
     }
   });
-  CHECK(file_contents(p) == expected);
+  CHECK(test::file_bytes(p) == expected);
   // A file smaller than a disk block, and an empty one.
   write_file_in_blocks(p, [](FileBlocks& file) { std::ostream(&file) << "solid nome\n"; });
-  CHECK(file_contents(p) == "solid nome\n");
+  CHECK(test::file_bytes(p) == "solid nome\n");
   write_file_in_blocks(p, [](FileBlocks&) {});
   CHECK(fs::file_size(p) == 0);
 }
 
 TEST_CASE("a write that fails midway throws and keeps the old file", "[io]") {
-  const fs::path p = blocks_scratch("limited.bin");
+  const fs::path p = test::scratch_path("nome_file_blocks_tests", "limited.bin");
   write_file_atomically(p, [](std::ostream& out) { out << "old"; });
   // Files may grow to 1 MB only: the writer thread's write fails (EFBIG) after the first block.
   std::signal(SIGXFSZ, SIG_IGN);
@@ -128,7 +116,7 @@ TEST_CASE("a write that fails midway throws and keeps the old file", "[io]") {
   const std::string big = random_bytes(2 * FileBlocks::block_bytes);
   CHECK_THROWS_AS(write_file_atomically(p, [&](std::ostream& out) { out << big; }), IoError);
   setrlimit(RLIMIT_FSIZE, &before);
-  CHECK(file_contents(p) == "old");
+  CHECK(test::file_bytes(p) == "old");
   for (const auto& entry : fs::directory_iterator(p.parent_path())) CHECK(entry.path().extension() != ".tmp");
 }
 
@@ -138,10 +126,13 @@ TEST_CASE("OBJ and binary STL are the bytes of a plain fprintf and fwrite writer
   const Mesh torus = subdivide(build_mesh(test::torus(64, 32)), {.levels = 2});
   const Mesh band = build_mesh(test::mobius_band(12, 2));
   for (const Mesh* mesh : {&torus, &band}) {
-    const fs::path obj = blocks_scratch("mesh.obj"), stl = blocks_scratch("mesh.stl");
+    const fs::path obj = test::scratch_path("nome_file_blocks_tests", "mesh.obj"),
+                   stl = test::scratch_path("nome_file_blocks_tests", "mesh.stl");
     write_obj(obj, *mesh);
     write_stl(stl, *mesh);
-    CHECK(file_contents(obj) == plain_obj(*mesh, blocks_scratch("plain.obj")));
-    CHECK(file_contents(stl) == plain_stl(*mesh, blocks_scratch("plain.stl")));
+    CHECK(test::file_bytes(obj) ==
+          plain_obj(*mesh, test::scratch_path("nome_file_blocks_tests", "plain.obj")));
+    CHECK(test::file_bytes(stl) ==
+          plain_stl(*mesh, test::scratch_path("nome_file_blocks_tests", "plain.stl")));
   }
 }

@@ -12,6 +12,7 @@
 #include "nome/io/read_polygons.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/display_triangles.hpp"
+#include "support/scratch_files.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
@@ -19,12 +20,6 @@ using namespace nome::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path coloured_scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("nome_coloured_io_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
 
 // A Möbius band whose faces take three colours in turn (one-sided: the vertices show both sides).
 Mesh coloured_band() {
@@ -45,7 +40,7 @@ std::map<std::array<float, 3>, int> colour_counts(const std::vector<Color>& colo
 
 TEST_CASE("A .glb reads back with the same vertices, triangles, topology and colours", "[io]") {
   const Mesh band = coloured_band();
-  const fs::path path = coloured_scratch("band.glb");
+  const fs::path path = test::scratch_path("nome_coloured_io", "band.glb");
   write_glb(path, band);
   const PolygonSoup back = read_polygons(path);
   const DisplayTriangles triangles = display_triangles(band);
@@ -62,7 +57,7 @@ TEST_CASE("A .glb reads back with the same vertices, triangles, topology and col
 
 TEST_CASE("A .ply keeps the polygons and reads its vertex colours back onto the faces", "[io]") {
   const Mesh band = coloured_band();
-  const fs::path path = coloured_scratch("band.ply");
+  const fs::path path = test::scratch_path("nome_coloured_io", "band.ply");
   write_ply(path, band);
   const PolygonSoup back = read_polygons(path);
   REQUIRE(back.num_faces() == band.num_faces());
@@ -75,7 +70,7 @@ TEST_CASE("A .ply keeps the polygons and reads its vertex colours back onto the 
 }
 
 TEST_CASE("An ascii PLY without colours reads, a broken one is refused with its line", "[io]") {
-  const fs::path good = coloured_scratch("square.ply");
+  const fs::path good = test::scratch_path("nome_coloured_io", "square.ply");
   std::ofstream(good)
       << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
@@ -84,15 +79,15 @@ TEST_CASE("An ascii PLY without colours reads, a broken one is refused with its 
   CHECK(square.num_vertices() == 4);
   CHECK(square.num_faces() == 1);
   CHECK(square.face_colors.empty());
-  const fs::path bad = coloured_scratch("bad.ply");
+  const fs::path bad = test::scratch_path("nome_coloured_io", "bad.ply");
   std::ofstream(bad) << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float\nend_header\n0\n";
   CHECK_THROWS_WITH(read_polygons(bad), Catch::Contains("bad.ply:4: expected property TYPE NAME"));
-  const fs::path past = coloured_scratch("past.ply");
+  const fs::path past = test::scratch_path("nome_coloured_io", "past.ply");
   std::ofstream(past)
       << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
          "0 0 0\n3 0 1 2\n";
   CHECK_THROWS_AS(read_polygons(past), IoError);
-  std::ofstream(coloured_scratch("junk.glb")) << "not a gltf";
-  CHECK_THROWS_AS(read_polygons(coloured_scratch("junk.glb")), IoError);
+  std::ofstream(test::scratch_path("nome_coloured_io", "junk.glb")) << "not a gltf";
+  CHECK_THROWS_AS(read_polygons(test::scratch_path("nome_coloured_io", "junk.glb")), IoError);
 }

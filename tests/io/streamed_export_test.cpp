@@ -10,25 +10,13 @@
 #include "nome/io/obj.hpp"
 #include "nome/io/stl.hpp"
 #include "nome/ops/pipeline.hpp"
+#include "support/scratch_files.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path streamed_scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("nome_streamed_tests_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
-
-std::string file_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 PipelineSettings streamed_settings(int levels, double distance = 0.0, int after = 0) {
   PipelineSettings s;
@@ -41,7 +29,8 @@ PipelineSettings streamed_settings(int levels, double distance = 0.0, int after 
 // Writes `ext` once from the pipeline's Mesh and once from its quads (a pipeline each) and returns both.
 std::pair<std::string, std::string> both_ways(const Mesh& mesh, const PipelineSettings& s,
                                               const std::string& ext, StlFormat format = StlFormat::binary) {
-  const fs::path from_mesh = streamed_scratch("mesh" + ext), from_quads = streamed_scratch("quads" + ext);
+  const fs::path from_mesh = test::scratch_path("nome_streamed_tests", "mesh" + ext),
+                 from_quads = test::scratch_path("nome_streamed_tests", "quads" + ext);
   Pipeline whole;
   if (ext == ".obj")
     write_obj(from_mesh, whole.run(mesh, s));
@@ -55,7 +44,7 @@ std::pair<std::string, std::string> both_ways(const Mesh& mesh, const PipelineSe
     write_obj(from_quads, *surface.quads);
   else
     write_stl(from_quads, *surface.quads, format);
-  return {file_bytes(from_mesh), file_bytes(from_quads)};
+  return {test::file_bytes(from_mesh), test::file_bytes(from_quads)};
 }
 
 }  // namespace
@@ -84,7 +73,7 @@ TEST_CASE("STL and OBJ from the last level's quads are the bytes of the Mesh's",
 
 TEST_CASE("OBJ positions are written as printf's %.17g", "[io]") {
   const Mesh band = build_mesh(test::mobius_band(12, 2));
-  const fs::path p = streamed_scratch("band.obj");
+  const fs::path p = test::scratch_path("nome_streamed_tests", "band.obj");
   write_obj(p, band);
   std::ifstream in(p);
   std::string line;
