@@ -89,12 +89,12 @@ Names::Names(std::vector<std::string> list) {
 }
 
 Names Names::grid(const Grid& grid, std::size_t count) {
+  if (count == 0) return {};
   auto state = std::make_shared<State>();
   Grid g = grid;
   if (g.suffixes.empty()) g.suffixes.emplace_back();
   g.columns = std::max<std::size_t>(g.columns, 1);
   state->add_run({count, "", std::move(g), nullptr, 0});
-  if (count == 0) return {};
   return Names(std::move(state));
 }
 
@@ -142,8 +142,9 @@ void Names::append(const Names& other) {
     return;
   }
   if (state_->runs.empty() && other.state_->runs.empty()) {
+    const Names kept = other;  // shares the list, so appending a list to itself copies it first
     std::vector<std::string>& own = writable();
-    own.insert(own.end(), other.state_->list.begin(), other.state_->list.end());
+    own.insert(own.end(), kept.state_->list.begin(), kept.state_->list.end());
     return;
   }
   auto joined = std::make_shared<State>();

@@ -26,6 +26,9 @@ TEST_CASE("copies of names share one list until one of them changes it", "[kerne
   CHECK(appended.size() == 6);
   CHECK(appended[3] == "v0");
   CHECK(original.size() == 3);
+  Names doubled{"a", "b"};
+  doubled.append(doubled);
+  CHECK(doubled.list() == std::vector<std::string>{"a", "b", "a", "b"});
   appended.writable().erase(appended.writable().begin() + 1, appended.writable().begin() + 5);
   CHECK(std::vector<std::string>(appended.begin(), appended.end()) == std::vector<std::string>{"v0", "v2"});
 }
