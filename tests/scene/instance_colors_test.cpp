@@ -55,3 +55,34 @@ TEST_CASE("an instance coloured by path keeps its colour through saving, and the
   CHECK_THROWS_AS(scene.set_instance_color("p_c", {1, 1, 1}), InvalidInputError);
   CHECK_THROWS_AS(scene.set_instance_surface("p_a", std::string("Q")), InvalidInputError);
 }
+
+TEST_CASE("faces without a colour of their own take the default; a scene with none carries no colours",
+          "[scene]") {
+  const char* const plain = "funnel fun (6 1 0.5 1) endfunnel\ninstance a fun endinstance\n";
+  CHECK(Scene::from_text(plain, "plain.nome").combined_soup().face_colors.empty());
+
+  // One coloured face in a mesh whose other face is deleted, beside an instance without colours.
+  const char* const mixed = R"(surface R color (1 0 0) endsurface
+point p0 (0 0 0) endpoint
+point p1 (1 0 0) endpoint
+point p2 (1 1 0) endpoint
+point p3 (0 1 0) endpoint
+point p4 (0 2 0) endpoint
+mesh m
+  face q0 (p0 p1 p2) surface R endface
+  face q1 (p0 p2 p3) endface
+  face q2 (p3 p2 p4) endface
+endmesh
+funnel fun (6 1 0.5 1) endfunnel
+instance a m endinstance
+instance b fun endinstance
+delete face a_q1 endface enddelete
+)";
+  const PolygonSoup soup = Scene::from_text(mixed, "mixed.nome").combined_soup();
+  REQUIRE(soup.face_colors.size() == soup.num_faces());
+  for (Index f = 0; f < soup.num_faces(); ++f) {
+    CAPTURE(soup.face_names[f]);
+    CHECK(soup.face_names[f] != "a_q1");
+    CHECK(soup.face_colors[f] == (soup.face_names[f] == "a_q0" ? Color(1, 0, 0) : default_face_color));
+  }
+}

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace nome {
@@ -21,6 +22,9 @@ class GridWalk {
  public:
   GridWalk(MeshArrays& m, const SoupGrid& g)
       : m_(m),
+        face_offsets_(m.face_offsets.data()),
+        corner_vertices_(m.corner_vertices.data()),
+        faces_(Index(m.face_offsets.size() - 1)),
         g_(g),
         points_(g.ring_points),
         cells_(g.is_ring_closed ? g.ring_points : g.ring_points - 1),
@@ -31,6 +35,7 @@ class GridWalk {
 
   bool run() {
     resize_for_overwrite(m_.corner_edges, m_.corner_vertices.size());  // every corner is written
+    corner_edges_ = m_.corner_edges.data();
     m_.edges.clear();
     m_.edges.reserve(m_.corner_vertices.size() / 2 + 2);
     for (Index i = 0; i < bands_; ++i) {
@@ -43,7 +48,7 @@ class GridWalk {
     }
     if (g_.has_begin_cap && !add_cap(0, ring_zero_, true)) return false;
     if (g_.has_end_cap && !add_cap(g_.rings - 1, near_ring_, false)) return false;
-    return face_ == m_.face_offsets.size() - 1;
+    return face_ == faces_;
   }
 
  private:
@@ -91,38 +96,54 @@ class GridWalk {
     return add_face(std::span<const Index>(vertices), std::span<Slot* const>(slots));
   }
 
-  // The next face of the soup, which must have these vertices; its corners take their slots' edges. (A
-  // template so that a cell's fixed-size arrays unroll.)
-  template <class Vertices, class Slots>
-  bool add_face(const Vertices& vertices, const Slots& slots) {
-    if (face_ + 1 >= m_.face_offsets.size()) return false;
-    const Index first = m_.face_offsets[face_], degree = m_.face_offsets[face_ + 1] - first;
-    if (degree != vertices.size()) return false;
-    for (Index t = 0; t < degree; ++t)
-      if (m_.corner_vertices[first + t] != vertices[t]) return false;
-    for (Index t = 0; t < degree; ++t) {
-      const Index c = first + t, from = vertices[t], to = vertices[t + 1 == degree ? 0 : t + 1];
-      Slot& slot = *slots[t];
-      if (slot.edge == no_index) {
-        slot = {Index(m_.edges.size()), from};
-        Edge edge;
-        edge.vertices = {from, to};
-        edge.faces[0] = face_;
-        edge.corners[0] = c;
-        m_.edges.push_back(edge);
-      } else {
-        Edge& edge = m_.edges[slot.edge];
-        edge.faces[1] = face_;
-        edge.corners[1] = c;
-        edge.is_mobius = from == slot.from;
-      }
-      m_.corner_edges[c] = slot.edge;
+  // The next face of the soup, which must have these vertices; its corners take their slots' edges. A cell's
+  // face has a fixed size, so its loops unroll; a cap's has the ring's.
+  template <std::size_t N>
+  bool add_face(const std::array<Index, N>& vertices, const std::array<Slot*, N>& slots) {
+    if (face_ >= faces_ || face_offsets_[face_ + 1] - face_offsets_[face_] != N) return false;
+    const Index first = face_offsets_[face_];
+    for (std::size_t t = 0; t < N; ++t)
+      if (corner_vertices_[first + t] != vertices[t]) return false;
+    [&]<std::size_t... t>(std::index_sequence<t...>) {
+      (take_edge(first + Index(t), vertices[t], vertices[(t + 1) % N], *slots[t]), ...);
     }
+    (std::make_index_sequence<N>());
     ++face_;
     return true;
   }
+  bool add_face(std::span<const Index> vertices, std::span<Slot* const> slots) {
+    const Index degree = Index(vertices.size());
+    if (face_ >= faces_ || face_offsets_[face_ + 1] - face_offsets_[face_] != degree) return false;
+    const Index first = face_offsets_[face_];
+    for (Index t = 0; t < degree; ++t)
+      if (corner_vertices_[first + t] != vertices[t]) return false;
+    for (Index t = 0; t < degree; ++t)
+      take_edge(first + t, vertices[t], vertices[t + 1 == degree ? 0 : t + 1], *slots[t]);
+    ++face_;
+    return true;
+  }
+  // Corner c (from -> to) of the current face takes its slot's edge, a new one if the slot is empty.
+  void take_edge(Index c, Index from, Index to, Slot& slot) {
+    if (slot.edge == no_index) {
+      slot = {edge_count_++, from};
+      m_.edges.push_back(Edge{{from, to}, {face_, no_index}, {c, no_index}});
+    } else {
+      Edge& edge = m_.edges[slot.edge];
+      edge.faces[1] = face_;
+      edge.corners[1] = c;
+      edge.is_mobius = from == slot.from;
+    }
+    corner_edges_[c] = slot.edge;
+  }
 
   MeshArrays& m_;
+  // m_'s arrays that the walk reads and writes, as plain pointers: stores to the edges do not make the
+  // compiler load them again.
+  const Index* face_offsets_;
+  const Index* corner_vertices_;
+  Index* corner_edges_ = nullptr;
+  Index edge_count_ = 0;
+  Index faces_;
   const SoupGrid& g_;
   Index points_, cells_, bands_;
   std::vector<Slot> near_ring_, far_ring_, rails_, ring_zero_;

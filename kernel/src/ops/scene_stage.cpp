@@ -111,11 +111,15 @@ std::optional<GluedFaces> split_touching_vertices(const PipelineInput& input,
 
 }  // namespace
 
+bool SceneStage::faces_match(const Buffer<Index>& face_offsets, const Buffer<Index>& face_vertices) const {
+  if (vertex_sources_.empty() && input_face_offsets_.empty())
+    return face_offsets == mesh_.face_offsets() && face_vertices == mesh_.corner_vertices();
+  return face_offsets == input_face_offsets_ && face_vertices == input_face_vertices_;
+}
+
 InputChange SceneStage::update(PipelineInput input) {
   PolygonSoup& soup = input.soup;
-  Structure next{std::move(soup.face_offsets),
-                 std::move(soup.face_vertices),
-                 std::move(soup.sharp_edges),
+  Structure next{std::move(soup.sharp_edges),
                  std::move(soup.sharp_edge_weights),
                  std::move(soup.sharp_vertices),
                  std::move(soup.hole_faces),
@@ -124,15 +128,13 @@ InputChange SceneStage::update(PipelineInput input) {
                  soup.num_vertices(),
                  input.joining,
                  !soup.face_colors.empty()};
-  if (has_mesh_ && next == structure_) {
+  if (has_input_ && next == structure_ && faces_match(soup.face_offsets, soup.face_vertices)) {
     take_positions(soup.positions);
     mesh_.face_colors() = std::move(soup.face_colors);
     work_ = StageWork::positions;
     return InputChange::positions;
   }
   structure_ = std::move(next);
-  soup.face_offsets = structure_.face_offsets;
-  soup.face_vertices = structure_.face_vertices;
   soup.sharp_edges = structure_.sharp_edges;
   soup.sharp_edge_weights = structure_.sharp_edge_weights;
   soup.sharp_vertices = structure_.sharp_vertices;
@@ -145,6 +147,7 @@ InputChange SceneStage::update(PipelineInput input) {
     *this = SceneStage();
     throw;
   }
+  has_input_ = true;
   return InputChange::topology;
 }
 
@@ -158,13 +161,18 @@ void SceneStage::take_positions(Buffer<Vec3>& input) {
 }
 
 InputChange SceneStage::move_vertices(Buffer<Vec3> positions) {
-  if (!has_mesh_ || structure_.face_offsets.empty() || positions.size() != structure_.num_vertices)
+  if (!has_input_ || positions.size() != structure_.num_vertices)
     throw InvalidInputError("Pipeline::move_input_vertices: " + std::to_string(positions.size()) +
                             " positions for an input of " + std::to_string(structure_.num_vertices) +
                             " vertices (set_input first)");
   take_positions(positions);
   work_ = StageWork::positions;
   return InputChange::positions;
+}
+
+void SceneStage::keep_input_faces(PolygonSoup& soup) {
+  input_face_offsets_ = std::move(soup.face_offsets);
+  input_face_vertices_ = std::move(soup.face_vertices);
 }
 
 void SceneStage::rebuild(PipelineInput input) {
@@ -179,17 +187,21 @@ void SceneStage::rebuild(PipelineInput input) {
     }
     mesh_ = std::move(glued.mesh);
     vertex_sources_ = std::move(glued.vertex_sources);
+    keep_input_faces(input.soup);
     for (std::string& p : glued.problems)
       problems_.push_back(input.soup.face_origins.empty() ? "scene: " + p : std::move(p));
   } else {
     try {
       mesh_ = build_naming_the_part(input);
       vertex_sources_.clear();
+      input_face_offsets_ = {};
+      input_face_vertices_ = {};
     } catch (const TopologyError&) {
       std::optional<GluedFaces> split = split_touching_vertices(input, problems_);
       if (!split) throw;
       mesh_ = std::move(split->mesh);
       vertex_sources_ = std::move(split->vertex_sources);
+      keep_input_faces(input.soup);
     }
   }
   for (std::string& w : coinciding_vertex_warnings(mesh_, input.soup)) problems_.push_back(std::move(w));
@@ -218,6 +230,9 @@ InputChange SceneStage::update(const Mesh& mesh) {
   has_mesh_ = true;
   vertex_sources_.clear();
   structure_ = {};
+  has_input_ = false;
+  input_face_offsets_ = {};
+  input_face_vertices_ = {};
   work_ = is_same_topology ? StageWork::positions : StageWork::rebuilt;
   return is_same_topology ? InputChange::positions : InputChange::topology;
 }

@@ -31,9 +31,8 @@ class SceneStage {
   const std::vector<std::string>& problems() const { return problems_; }
 
  private:
-  // What the mesh was built from, except positions and colours.
+  // What the mesh was built from, except positions, colours and faces (compared by faces_match).
   struct Structure {
-    Buffer<Index> face_offsets, face_vertices;
     std::vector<std::pair<Index, Index>> sharp_edges;
     std::vector<float> sharp_edge_weights;
     std::vector<std::pair<Index, float>> sharp_vertices;
@@ -47,8 +46,16 @@ class SceneStage {
 
   void rebuild(PipelineInput input);
   void take_positions(Buffer<Vec3>& positions);
+  void keep_input_faces(PolygonSoup& soup);
+  // Whether these are the faces of the last input: the mesh's own when it was built from them as they were,
+  // else the copy kept of them.
+  bool faces_match(const Buffer<Index>& face_offsets, const Buffer<Index>& face_vertices) const;
 
   Structure structure_;
+  bool has_input_ = false;  // structure_ describes an input (set by update(PipelineInput))
+  // The input's faces, kept only when the mesh's differ from them (joined across edges, or split at
+  // vertices); a mesh built as given holds them itself.
+  Buffer<Index> input_face_offsets_, input_face_vertices_;
   bool has_mesh_ = false;
   Mesh mesh_;
   std::vector<Index> vertex_sources_;  // mesh vertex -> input vertex (empty: the same numbers)

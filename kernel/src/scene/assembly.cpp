@@ -16,14 +16,16 @@ bool is_same_topology(const PolygonSoup& a, const PolygonSoup& b) {
          a.face_vertices == b.face_vertices;
 }
 
-// Appends the piece's faces but the deleted ones, and its vertices unless every face using them is
-// deleted; returns whether any appended face carries its own colour.
-// Appends the whole piece: its arrays in bulk.
+// Appends the whole piece: its arrays in bulk. Returns whether any of its faces has a colour of its own.
 bool append_whole_piece(Piece& out, const Piece& piece) {
-  const Index base = out.soup.num_vertices();
+  const Index base = out.soup.num_vertices(), faces_before = out.soup.num_faces();
   append_soup(out.soup, piece.soup);
-  out.face_has_color.insert(out.face_has_color.end(), piece.face_has_color.begin(),
-                            piece.face_has_color.end());
+  if (out.has_face_colors() || piece.has_face_colors()) {
+    out.face_has_color.resize(faces_before, 0);
+    out.face_has_color.insert(out.face_has_color.end(), piece.face_has_color.begin(),
+                              piece.face_has_color.end());
+    out.face_has_color.resize(out.soup.num_faces(), 0);
+  }
   for (const RimLine& r : piece.rims) {
     RimLine rim{r.name, r.vertices, r.is_loop};
     for (Index& v : rim.vertices) v += base;
@@ -32,6 +34,8 @@ bool append_whole_piece(Piece& out, const Piece& piece) {
   return std::find(piece.face_has_color.begin(), piece.face_has_color.end(), 1) != piece.face_has_color.end();
 }
 
+// Appends the piece's faces but the deleted ones, and its vertices unless every face using them is
+// deleted; returns whether any appended face carries its own colour.
 bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::string>& deleted) {
   const PolygonSoup& s = piece.soup;
   std::vector<unsigned char> is_deleted(s.num_faces(), 0);
@@ -58,9 +62,10 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
       corners.push_back(new_id[s.face_vertices[c]]);
     out.soup.note_origin(s.origin(f));
     out.add_face(corners, s.face_names[f]);
-    out.soup.face_colors.back() = s.face_colors[f];
-    out.face_has_color.back() = piece.face_has_color[f];
-    has_color = has_color || piece.face_has_color[f];
+    if (piece.has_face_color(f)) {
+      out.set_face_color(out.soup.num_faces() - 1, s.face_colors[f]);
+      has_color = true;
+    }
   }
   for (size_t i = 0; i < s.sharp_edges.size(); ++i) {
     const auto [a, b] = s.sharp_edges[i];
@@ -90,7 +95,7 @@ void Scene::assemble(Index top) {
     out.soup.face_colors.clear();
   } else {
     for (Index f = 0; f < out.soup.num_faces(); ++f)
-      if (!out.face_has_color[f]) out.soup.face_colors[f] = default_face_color;
+      if (!out.has_face_color(f)) out.soup.face_colors[f] = default_face_color;
   }
   SceneInstance& inst = instances_[top];
   if (!is_same_topology(inst.geometry.soup, out.soup) || inst.geometry_version == 0) ++inst.topology_version;

@@ -98,10 +98,7 @@ void DefinitionContext::add_face(const std::vector<Name>& names, const std::stri
   if (std::find(corners.begin(), corners.end(), no_index) != corners.end()) return;
   piece_.soup.note_origin(scene_.where(at));
   piece_.add_face(corners, face_name);
-  if (surface) {
-    piece_.soup.face_colors.back() = surface_color(*surface);
-    piece_.face_has_color.back() = 1;
-  }
+  if (surface) piece_.set_face_color(piece_.soup.num_faces() - 1, surface_color(*surface));
 }
 
 void DefinitionContext::add_rim(const Name& name, const std::vector<Name>& vertices, bool is_loop) {

@@ -52,6 +52,12 @@ void reverse_faces(PolygonSoup& soup) {
                  soup.face_vertices.begin() + soup.face_offsets[f + 1]);
 }
 
+// The points into the world (an instance without a transform, most of them, is left as it is).
+void place_points(Buffer<Vec3>& points, const glm::dmat4& m) {
+  if (m == glm::dmat4(1.0)) return;
+  for (Vec3& x : points) x = Vec3(m * glm::dvec4(x, 1.0));
+}
+
 }  // namespace
 
 glm::dmat4 Scene::world_matrix(Index placement, std::vector<Index>& reads) const {
@@ -130,7 +136,7 @@ Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std:
     const glm::dmat4 m = world_matrix(placement, reads);
     const std::optional<Color> color = placement_color(placement, reads);
     Piece piece = definition_piece(p, reads, errors);
-    for (Vec3& x : piece.soup.positions) x = Vec3(m * glm::dvec4(x, 1.0));
+    place_points(piece.soup.positions, m);
     p.color = color;
     p.is_mirrored = glm::determinant(m) < 0;
     if (p.is_mirrored) reverse_faces(piece.soup);
@@ -140,10 +146,7 @@ Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std:
     for (RimLine& r : piece.rims) r.name = r.name.empty() ? p.path : p.path + "_" + r.name;
     if (color)
       for (Index f = 0; f < piece.soup.num_faces(); ++f)
-        if (!piece.face_has_color[f]) {
-          piece.soup.face_colors[f] = *color;
-          piece.face_has_color[f] = 1;
-        }
+        if (!piece.has_face_color(f)) piece.set_face_color(f, *color);
     sort_unique(reads);
     return piece;
   } catch (const EvaluationError& e) {
@@ -169,7 +172,7 @@ bool Scene::move_vertices(Index placement, Buffer<Vec3>& previous) {
     if (!errors.empty() || moved.topology_key != p.world.topology_key ||
         moved.positions.size() != p.world.soup.positions.size())
       return false;
-    for (Vec3& x : moved.positions) x = Vec3(m * glm::dvec4(x, 1.0));
+    place_points(moved.positions, m);
     previous = std::exchange(p.world.soup.positions, std::move(moved.positions));
   } catch (const EvaluationError&) {
     return false;

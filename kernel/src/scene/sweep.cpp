@@ -187,8 +187,6 @@ class Sweeper {
                          to,
                          !o_.is_path_closed && o_.has_begin_cap && m_ >= 3,
                          !o_.is_path_closed && o_.has_end_cap && m_ >= 3};
-    soup.face_colors.assign(soup.num_faces(), Color(0));
-    result_.piece.face_has_color.assign(soup.num_faces(), 0);
     result_.piece.topology_key = topology_key(to);
     return std::move(result_);
   }

@@ -229,3 +229,44 @@ TEST_CASE("every sequence of settings gives what a new pipeline gives for the la
     CHECK(result.corner_vertices() == expected.corner_vertices());
   }
 }
+
+TEST_CASE("the scene stage tells a new input's faces from the last one's, however it joined them",
+          "[kernel]") {
+  for (const Joining joining : {Joining::manifold, Joining::across_edges}) {
+    CAPTURE(int(joining));
+    PipelineSettings scene_only;
+    scene_only.stage = Stage::scene;
+    Pipeline pipeline;
+    pipeline.set_input(PipelineInput{test::cube(), {}, joining});
+    pipeline.run(scene_only);
+    CHECK(pipeline.work(Stage::scene) == StageWork::rebuilt);
+
+    PolygonSoup moved = test::cube();
+    moved.positions[0] += Vec3(0.0, 0.0, 0.25);
+    pipeline.set_input(PipelineInput{moved, {}, joining});
+    const Mesh& after_move = pipeline.run(scene_only);
+    CHECK(pipeline.work(Stage::scene) == StageWork::positions);
+    CHECK(std::find(after_move.positions().begin(), after_move.positions().end(), moved.positions[0]) !=
+          after_move.positions().end());
+
+    // The same positions with one face turned the other way round: new faces, a new mesh.
+    PolygonSoup turned = moved;
+    std::reverse(turned.face_vertices.begin(), turned.face_vertices.begin() + turned.face_offsets[1]);
+    pipeline.set_input(PipelineInput{turned, {}, joining});
+    pipeline.run(scene_only);
+    CHECK(pipeline.work(Stage::scene) == StageWork::rebuilt);
+    pipeline.set_input(PipelineInput{turned, {}, joining});
+    pipeline.run(scene_only);
+    CHECK(pipeline.work(Stage::scene) == StageWork::positions);
+  }
+}
+
+TEST_CASE("moving input vertices needs an input, not a mesh given as the result", "[kernel]") {
+  Pipeline pipeline;
+  PipelineSettings scene_only;
+  scene_only.stage = Stage::scene;
+  pipeline.set_input(PipelineInput{test::cube(), {}, {}});
+  pipeline.move_input_vertices(test::cube().positions);
+  pipeline.run(build_mesh(test::tetrahedron()), scene_only);
+  CHECK_THROWS_AS(pipeline.move_input_vertices(test::cube().positions), InvalidInputError);
+}

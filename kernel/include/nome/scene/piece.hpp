@@ -18,7 +18,9 @@ struct RimLine {
 // The geometry of one definition or one placed instance: named vertices and faces, rim lines, and which
 // faces carry their own colour (the others take the colour of the instance that places them).
 struct Piece {
-  PolygonSoup soup;  // vertex_names and face_names always filled; face_colors one per face
+  // vertex_names and face_names always filled; face_colors, like face_has_color, empty while no face has a
+  // colour of its own (most pieces: no array of a colour per face to write and copy), else one per face.
+  PolygonSoup soup;
   std::vector<unsigned char> face_has_color;
   std::vector<RimLine> rims;
   // Nonzero when the generator can tell its topology without making it: two pieces of one definition with
@@ -33,8 +35,21 @@ struct Piece {
   void add_face(const Range& vertices, std::string name) {
     soup.add_face(vertices);
     soup.face_names.push_back(std::move(name));
-    soup.face_colors.push_back(Color(0));
-    face_has_color.push_back(0);
+    if (!face_has_color.empty()) {
+      soup.face_colors.push_back(Color(0));
+      face_has_color.push_back(0);
+    }
+  }
+  bool has_face_color(Index f) const { return !face_has_color.empty() && face_has_color[f]; }
+  bool has_face_colors() const { return !face_has_color.empty(); }
+  // Gives face f a colour of its own.
+  void set_face_color(Index f, const Color& color) {
+    if (face_has_color.empty()) {
+      soup.face_colors.assign(soup.num_faces(), Color(0));
+      face_has_color.assign(soup.num_faces(), 0);
+    }
+    soup.face_colors[f] = color;
+    face_has_color[f] = 1;
   }
 };
 
