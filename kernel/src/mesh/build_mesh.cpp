@@ -182,7 +182,9 @@ void number_edges_in_face_order(MeshArrays& m) {
 
 // Walks the fan of vertex v (its corners fan_corners[b, b + k)) face to face across edges, from a corner
 // whose incoming edge is a border if there is one; false when the faces do not form one fan.
-bool walk_fan(MeshArrays& m, Index v, std::span<const Index> corners, std::vector<char>& visited) {
+// Its edges go to m.fan_edges from `out` on, which moves past them.
+bool walk_fan(MeshArrays& m, Index v, std::span<const Index> corners, std::vector<char>& visited,
+              Index& out) {
   const Index b = m.fan_corner_offsets[v], k = Index(corners.size());
   Index start = corners[0];
   Index start_edge = m.corner_edges[prev_corner(m, start)];
@@ -200,7 +202,7 @@ bool walk_fan(MeshArrays& m, Index v, std::span<const Index> corners, std::vecto
   Index count = 0;
   for (;;) {
     visited[c] = 1;
-    m.fan_edges.push_back(entered);
+    m.fan_edges[out++] = entered;
     m.fan_corners[b + count] = c;
     m.corner_signs[c] = static_cast<signed char>(sign);
     ++count;
@@ -208,7 +210,7 @@ bool walk_fan(MeshArrays& m, Index v, std::span<const Index> corners, std::vecto
     const Index e_out = m.corner_edges[c] == entered ? m.corner_edges[prev_corner(m, c)] : m.corner_edges[c];
     const Edge& edge = m.edges[e_out];
     if (edge.is_boundary()) {
-      m.fan_edges.push_back(e_out);
+      m.fan_edges[out++] = e_out;
       break;
     }
     const Index f_next = edge.other_face(m.corner_faces[c]);
@@ -232,44 +234,63 @@ std::vector<char> walked_vertices(Index nv, const SoupGrid* grid) {
   return walked;
 }
 
+// The corners of each walked vertex, in increasing order, at its fan_corner_offsets (a grid's inner
+// vertices have theirs from the layout, and only the grid's border faces can hold the others).
+Buffer<Index> walked_vertex_corners(const MeshArrays& m, const SoupGrid* grid,
+                                    const std::vector<char>& walked) {
+  Buffer<Index> list(m.corner_vertices.size());
+  std::vector<Index> fill(m.fan_corner_offsets.begin(), m.fan_corner_offsets.end() - 1);
+  const auto add = [&](Index c) {
+    const Index v = m.corner_vertices[c];
+    if (walked[v]) list[fill[v]++] = c;
+  };
+  if (!grid || grid->is_triangles) {
+    for (Index c = 0; c < m.corner_vertices.size(); ++c) add(c);
+  } else {
+    for_each_grid_border_face(*grid, Index(m.face_offsets.size() - 1), [&](Index f) {
+      for (Index c = m.face_offsets[f]; c < m.face_offsets[f + 1]; ++c) add(c);
+    });
+  }
+  return list;
+}
+
 // Corners bucketed by vertex, then each vertex's fan walked (or, inside a grid, written out).
 void find_fans(MeshArrays& m, Index nv, const SoupGrid* grid, const Labels& labels, Problems& problems) {
   const Index nc = Index(m.corner_vertices.size());
   const std::vector<char> walked = walked_vertices(nv, grid);
   m.fan_corner_offsets = csr_offsets(m.corner_vertices, nv);
-  Buffer<Index> vertex_corner_list(nc);  // filled for walked vertices only
-  {
-    std::vector<Index> fill(m.fan_corner_offsets.begin(), m.fan_corner_offsets.end() - 1);
-    for (Index c = 0; c < nc; ++c)
-      if (walked[m.corner_vertices[c]]) vertex_corner_list[fill[m.corner_vertices[c]]++] = c;
-  }
+  const Buffer<Index> vertex_corner_list = walked_vertex_corners(m, grid, walked);
   resize_for_overwrite(m.fan_corners, nc);
   resize_for_overwrite(m.corner_signs, nc);  // each corner is in one fan, which writes its sign
   m.fan_edge_offsets.assign(size_t(nv) + 1, 0);
-  m.fan_edges.clear();
-  m.fan_edges.reserve(size_t(nc) + nv);
+  resize_for_overwrite(m.fan_edges, size_t(nc) + nv);  // a fan has as many edges as corners, or one more
+  Index out = 0;
   std::vector<char> visited(nc, 0);
   std::array<Index, 4> corners, edges;
   const Index points = grid ? grid->ring_points : 1;
   // (i, j): v's ring and point in the grid.
   for (Index v = 0, i = 0, j = 0; v < nv; ++v, j = j + 1 == points ? 0 : j + 1, i += j == 0 ? 1 : 0) {
     const Index b = m.fan_corner_offsets[v], k = m.fan_corner_offsets[v + 1] - b;
-    m.fan_edge_offsets[v + 1] = m.fan_edge_offsets[v];
-    if (k == 0) continue;
+    if (k == 0) {
+      m.fan_edge_offsets[v + 1] = out;
+      continue;
+    }
     if (!walked[v]) {
       find_grid_inner_fan(m, *grid, i, j, corners, edges);
       for (Index t = 0; t < 4; ++t) {
         m.fan_corners[b + t] = corners[t];
         m.corner_signs[corners[t]] = 1;
+        m.fan_edges[out + t] = edges[t];
       }
-      m.fan_edges.insert(m.fan_edges.end(), edges.begin(), edges.end());
-    } else if (!walk_fan(m, v, std::span<const Index>(vertex_corner_list.data() + b, k), visited)) {
+      out += 4;
+    } else if (!walk_fan(m, v, std::span<const Index>(vertex_corner_list.data() + b, k), visited, out)) {
       problems.add("vertex " + labels.vertex(v) + ": its " + std::to_string(k) +
                        " faces do not form one fan (the surface touches itself there)",
                    m.corner_faces[vertex_corner_list[b]]);
     }
-    m.fan_edge_offsets[v + 1] = static_cast<Index>(m.fan_edges.size());
+    m.fan_edge_offsets[v + 1] = out;
   }
+  m.fan_edges.resize(out);
 }
 
 std::atomic<std::uint64_t> meshes_built{0};

@@ -21,6 +21,23 @@ inline bool is_grid_inner_vertex(const SoupGrid& grid, Index i, Index j) {
   return !grid.is_triangles && i != 0 && i + 1 < grid.rings && (j != 0 || grid.is_ring_closed) && j < cells;
 }
 
+// Calls visit(f), in increasing order, for each face of a grid of quads that has a vertex not inside it
+// (is_grid_inner_vertex): the first and last bands, the join, the first and last cells of open rings, caps.
+template <class Visit>
+void for_each_grid_border_face(const SoupGrid& grid, Index num_faces, Visit visit) {
+  const Index cells = grid.is_ring_closed ? grid.ring_points : grid.ring_points - 1;
+  const Index bands = grid.join.empty() ? grid.rings - 1 : grid.rings;
+  for (Index b = 0; b < bands; ++b) {
+    if (b == 0 || b + 2 >= grid.rings) {  // from ring 0, to the last ring, or the join to ring 0
+      for (Index j = 0; j < cells; ++j) visit(b * cells + j);
+    } else if (!grid.is_ring_closed) {
+      visit(b * cells);
+      if (cells > 1) visit(b * cells + cells - 1);
+    }
+  }
+  for (Index f = bands * cells; f < num_faces; ++f) visit(f);
+}
+
 // The fan of an inner vertex (i, j), as build_mesh's walk finds it, once find_grid_edges found the edges:
 // its four corners and four edges in fan order, all of sign +1. Inline: it runs for most vertices of a sweep.
 inline void find_grid_inner_fan(const MeshArrays& m, const SoupGrid& grid, Index i, Index j,
