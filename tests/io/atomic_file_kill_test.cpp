@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <sstream>
 #include <thread>
 
 #include "nome/atomic_file.hpp"
+#include "support/scratch_files.hpp"
 
 using namespace nome;
 namespace fs = std::filesystem;
@@ -34,22 +34,16 @@ void write_version(const fs::path& path, const std::string& content) {
   });
 }
 
-std::string read_all(const fs::path& path) {
-  std::ostringstream s;
-  s << std::ifstream(path, std::ios::binary).rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 // A save killed at any moment leaves the complete old or the complete new file. A killed writer's
 // temporary sibling (`NAME.PID.N.tmp`, unique per writer) stays behind; it never collides with a later
 // save and is never read, so nothing cleans it up.
 TEST_CASE("a writer killed at random moments leaves the old or the new file, never a mix", "[io]") {
-  const fs::path dir = fs::temp_directory_path() / ("nome_kill_test_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const fs::path target = test::scratch_path("nome_kill_test", "scene.nome");
+  const fs::path dir = target.parent_path();
+  fs::remove_all(dir);  // a folder left by an earlier process of this pid would hold its temporaries
   fs::create_directories(dir);
-  const fs::path target = dir / "scene.nome";
   constexpr size_t size = 1 << 19;
   std::string current = version_content(0, size);
   write_version(target, current);
@@ -88,7 +82,7 @@ TEST_CASE("a writer killed at random moments leaves the old or the new file, nev
     ::kill(child, SIGKILL);
     int status = 0;
     REQUIRE(::waitpid(child, &status, 0) == child);
-    const std::string found = read_all(target);
+    const std::string found = test::file_bytes(target);
     INFO("version " << version);
     const bool is_old = found == current, is_new = found == next;  // not in the assertion: 2 MB strings
     REQUIRE((is_old || is_new));
@@ -103,7 +97,7 @@ TEST_CASE("a writer killed at random moments leaves the old or the new file, nev
   CHECK(count_interrupted() > 0);
   // A later save still works.
   write_version(target, version_content(99, size));
-  const bool saved = read_all(target) == version_content(99, size);
+  const bool saved = test::file_bytes(target) == version_content(99, size);
   CHECK(saved);
   fs::remove_all(dir);
 }

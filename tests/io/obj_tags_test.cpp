@@ -1,5 +1,3 @@
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -8,6 +6,7 @@
 #include "nome/error.hpp"
 #include "nome/io/obj.hpp"
 #include "nome/io/obj_tags.hpp"
+#include "support/scratch_files.hpp"
 
 using namespace nome;
 namespace fs = std::filesystem;
@@ -15,10 +14,9 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path write_tagged_obj(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("nome_obj_tags_tests_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::ofstream(dir / name) << text;
-  return dir / name;
+  const fs::path path = test::scratch_path("nome_obj_tags_tests", name);
+  std::ofstream(path) << text;
+  return path;
 }
 
 // Two quads side by side: vertices 0..5, faces 0 and 1 sharing the edge 1-4.

@@ -1,5 +1,3 @@
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -11,6 +9,7 @@
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "scene/scene_support.hpp"
+#include "support/scratch_files.hpp"
 #include "support/shared_examples.hpp"
 
 using namespace nome;
@@ -92,9 +91,7 @@ TEST_CASE("malformed SIF says where and what was expected", "[io]") {
 }
 
 TEST_CASE("the .slf subset reads points, faces, objects, groups and instances", "[io]") {
-  const std::string dir =
-      std::filesystem::temp_directory_path() / ("nome_slf_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const std::string dir = test::scratch_path("nome_slf_test", "").parent_path();
   std::ofstream(dir + "/cube.slf")
       << "surface Y color (1 1 0) endsurface\n"
          "point a (0 0 0) endpoint point b (1 0 0) endpoint point c (1 1 0) endpoint\n"

@@ -1,5 +1,3 @@
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -7,6 +5,7 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/scene/save_nome.hpp"
 #include "scene/scene_support.hpp"
+#include "support/scratch_files.hpp"
 #include "support/shared_examples.hpp"
 
 using namespace nome;
@@ -61,9 +60,7 @@ TEST_CASE("an edited scene saves its slider values, consolidated faces and delet
   CHECK(s.instances()[1].name == "consolidatemesh");
   CHECK(s.instances()[1].geometry.soup.num_faces() == 2);
 
-  const std::string dir =
-      std::filesystem::temp_directory_path() / ("nome_save_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const std::string dir = test::scratch_path("nome_save_test", "").parent_path();
   scene::write_nome(s, dir + "/edited.nome");
   const Scene back = read_scene(dir + "/edited.nome");
   check_same_geometry(s, back);
