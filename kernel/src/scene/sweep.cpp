@@ -135,11 +135,8 @@ class Sweeper {
 
   SweepPositions positions() {
     SweepPositions out;
-    out.positions.reserve((last_ - first_ + 1) * m_);
-    for (std::size_t i = first_; i <= last_; ++i) {
-      const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
-      for (std::size_t j = 0; j < m_; ++j) out.positions.push_back(placed(i, j, c, s));
-    }
+    out.positions.resize((last_ - first_ + 1) * m_);  // every one written below
+    for (std::size_t i = first_; i <= last_; ++i) place_ring(i, out.positions.data() + vertex(i, 0));
     std::vector<Index> to;
     if (o_.is_path_closed && m_ > 1) join_correspondence(out.positions, to);
     out.topology_key = topology_key(to);
@@ -151,10 +148,7 @@ class Sweeper {
     reserve();
     PolygonSoup& soup = result_.piece.soup;
     soup.positions.resize((last_ - first_ + 1) * m_);  // every one written below
-    for (std::size_t i = first_; i <= last_; ++i) {
-      const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
-      for (std::size_t j = 0; j < m_; ++j) soup.positions[vertex(i, j)] = placed(i, j, c, s);
-    }
+    for (std::size_t i = first_; i <= last_; ++i) place_ring(i, soup.positions.data() + vertex(i, 0));
     soup.vertex_names = Names::grid({'v', first_, m_}, soup.positions.size());
     if (m_ == 1) {
       RimLine rim{"", {}, o_.is_path_closed};
@@ -193,11 +187,16 @@ class Sweeper {
 
  private:
   Index vertex(std::size_t i, std::size_t j) const { return Index((i - first_) * m_ + j); }
-  // Point j of sample i's section; sample n is a closed path's first sample reached again.
-  Vec3 placed(std::size_t i, std::size_t j, double c, double s) const {
+  // The points of sample i's section, placed, into out[0, m); sample n is a closed path's first sample
+  // reached again.
+  void place_ring(std::size_t i, Vec3* out) const {
+    const double c = std::cos(turns_.angle[i]), s = std::sin(turns_.angle[i]);
     const std::size_t at = i % n_;
-    return place(sections_[path_[at].section], j, turns_.is_reversed[i], path_[at], frames_[i], c, s,
-                 shape_.bend[at], shape_.stretch[at]);
+    const PathSample& sample = path_[at];
+    const CrossSection& section = sections_[sample.section];
+    for (std::size_t j = 0; j < m_; ++j)
+      out[j] = place(section, j, turns_.is_reversed[i], sample, frames_[i], c, s, shape_.bend[at],
+                     shape_.stretch[at]);
   }
 
   void reserve() {
@@ -231,11 +230,8 @@ class Sweeper {
   // Which first-section point each point of a closed path's last section joins (warned about when no
   // symmetry of the cross-section makes the join exact).
   void join_correspondence(const Buffer<Vec3>& positions, std::vector<Index>& to) {
-    std::vector<Vec3> end(m_), start(m_);
-    for (std::size_t j = 0; j < m_; ++j) {
-      end[j] = placed(n_, j, std::cos(turns_.angle[n_]), std::sin(turns_.angle[n_]));
-      start[j] = positions[vertex(0, j)];
-    }
+    std::vector<Vec3> end(m_), start(positions.begin() + vertex(0, 0), positions.begin() + vertex(0, 0) + m_);
+    place_ring(n_, end.data());
     const double gap = nearest_correspondence(end, start, sections_[0].is_closed, to);
     double size = 0;
     for (const Vec3& p : start) size = std::max(size, glm::length(p - path_[0].position));
