@@ -65,6 +65,49 @@ PolygonSoup without_holes(const Mesh& full, const std::vector<bool>& is_base_fac
   return soup;
 }
 
+// The last of `levels` (refined from base) again with its edges and fans: the last two levels were built
+// without them. (Templates: Refinement's levels are its own type.)
+template <class Level>
+Level full_last_level(const Mesh& base, const std::vector<Level>& levels, int threads) {
+  const size_t k = levels.size();
+  Level before_last, last;
+  if (k == 1) {
+    refine_topology(MeshLevelView(base), last, LevelDetail::full, threads);
+    return last;
+  }
+  if (k == 2)
+    refine_topology(MeshLevelView(base), before_last, LevelDetail::full, threads);
+  else
+    refine_topology(levels[k - 3], before_last, LevelDetail::full, threads);
+  refine_topology(before_last, last, LevelDetail::full, threads);
+  return last;
+}
+
+// The level's edges, and the corner signs: +1 at the first corner of each fan, flipped across every Möbius
+// edge after it.
+template <class Level>
+void add_edges_and_signs(const Level& last, MeshArrays& a) {
+  a.edges.resize(last.num_edges());
+  for (Index e = 0; e < last.num_edges(); ++e) {
+    Edge& edge = a.edges[e];
+    edge.vertices = last.edge_ends(e);
+    edge.corners = last.edge_corners[e];
+    edge.faces = {edge.corners[0] >> 2, edge.corners[1] == no_index ? no_index : edge.corners[1] >> 2};
+    edge.is_mobius = last.edge_flags[e] & mobius_flag;
+    edge.is_sharp = last.edge_flags[e] & sharp_flag;
+  }
+  a.corner_signs.resize(last.corner_vertices.size());
+  for (Index v = 0; v < last.num_vertices(); ++v) {
+    const auto corners = last.vertex_corners(v);
+    const auto edges = last.vertex_edges(v);
+    signed char sign = 1;
+    for (size_t i = 0; i < corners.size(); ++i) {
+      if (i > 0 && (last.edge_flags[edges[i]] & mobius_flag)) sign = static_cast<signed char>(-sign);
+      a.corner_signs[corners[i]] = sign;
+    }
+  }
+}
+
 }  // namespace
 
 Refinement::Refinement(const Mesh& base, int levels, BoundaryMode boundary, int threads,
@@ -229,45 +272,13 @@ Mesh Refinement::mesh(const Mesh& base, Buffer<Vec3> positions, int threads) con
   if (!fits(base)) throw InvalidInputError("Refinement::mesh: the base mesh's topology changed");
   if (positions.size() != num_vertices())
     throw InvalidInputError("Refinement::mesh: expected " + std::to_string(num_vertices()) + " positions");
-  // The last two levels were built without edges and fans: build them again, in full.
-  const size_t k = levels_.size();
-  Level before_last, last;
-  if (k == 1) {
-    refine_topology(MeshLevelView(base), last, LevelDetail::full, threads);
-  } else {
-    if (k == 2)
-      refine_topology(MeshLevelView(base), before_last, LevelDetail::full, threads);
-    else
-      refine_topology(levels_[k - 3], before_last, LevelDetail::full, threads);
-    refine_topology(before_last, last, LevelDetail::full, threads);
-    before_last = {};  // freed before the mesh's arrays are made
-  }
-
+  auto last = full_last_level(base, levels_, threads);
   MeshArrays a;
   const Index nf = last.num_faces();
   a.positions = std::move(positions);
   a.face_offsets.resize(size_t(nf) + 1);
   for (Index f = 0; f <= nf; ++f) a.face_offsets[f] = 4 * f;
-  a.edges.resize(last.num_edges());
-  for (Index e = 0; e < last.num_edges(); ++e) {
-    Edge& edge = a.edges[e];
-    edge.vertices = last.edge_ends(e);
-    edge.corners = last.edge_corners[e];
-    edge.faces = {edge.corners[0] >> 2, edge.corners[1] == no_index ? no_index : edge.corners[1] >> 2};
-    edge.is_mobius = last.edge_flags[e] & mobius_flag;
-    edge.is_sharp = last.edge_flags[e] & sharp_flag;
-  }
-  // Corner signs: +1 at the first corner of each fan, flipped across every Möbius edge after it.
-  a.corner_signs.resize(last.corner_vertices.size());
-  for (Index v = 0; v < last.num_vertices(); ++v) {
-    const auto corners = last.vertex_corners(v);
-    const auto edges = last.vertex_edges(v);
-    signed char sign = 1;
-    for (size_t i = 0; i < corners.size(); ++i) {
-      if (i > 0 && (last.edge_flags[edges[i]] & mobius_flag)) sign = static_cast<signed char>(-sign);
-      a.corner_signs[corners[i]] = sign;
-    }
-  }
+  add_edges_and_signs(last, a);
   // The last level's own arrays become the mesh's.
   a.corner_vertices = std::move(last.corner_vertices);
   a.corner_edges = std::move(last.corner_edges);
