@@ -55,12 +55,8 @@ std::string knot_scene() {
   return text;
 }
 
-}  // namespace
-
-int main() {
-  nome::keep_freed_memory();  // as the nome program does
-  std::printf("sweep: 10,000 path samples x 32 cross-section points (320,000 quads), best of 5, CPU ms\n");
-  // The core alone: frames, placement and faces.
+// The core alone (frames, placement and faces), and its soup into the pipeline without the scene.
+void core_figures() {
   std::vector<PathSample> path;
   for (int i = 0; i < 10000; ++i) {
     const double t = 2 * std::numbers::pi * i / 10000;
@@ -97,8 +93,10 @@ int main() {
                 direct.move_input_vertices(sweep_positions(path, {&circle, 1}, o).positions);
                 direct.run(scene_stage);
               }));
+}
 
-  // Through the scene and the pipeline's scene stage, as the viewer and `nome info` do.
+// Through the scene and the pipeline's scene stage, as the viewer and `nome info` do.
+void scene_figures() {
   const std::string text = knot_scene();
   PipelineSettings settings;
   settings.stage = Stage::scene;
@@ -136,5 +134,14 @@ int main() {
   std::printf("  (sweep placements moved without a whole evaluation: %zu)\n", scene->vertex_moves());
   std::printf("  (pipeline scene stage work on the move: %s)\n",
               pipeline.work(Stage::scene) == StageWork::positions ? "positions only" : "rebuilt");
+}
+
+}  // namespace
+
+int main() {
+  nome::keep_freed_memory();  // as the nome program does
+  std::printf("sweep: 10,000 path samples x 32 cross-section points (320,000 quads), best of 5, CPU ms\n");
+  core_figures();
+  scene_figures();
   return 0;
 }
