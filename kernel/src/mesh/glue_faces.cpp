@@ -57,9 +57,9 @@ void carry_sharpness(const PolygonSoup& soup, PolygonSoup& glued) {
   }
 }
 
-}  // namespace
-
-GluedFaces glue_faces(const PolygonSoup& soup) {
+// Every corner its own vertex at first; corners are joined across each edge with exactly two faces. Returns
+// the union-find parents of the corners (find() gives a group's root); edges of more faces go to `problems`.
+std::vector<Index> joined_corners(const PolygonSoup& soup, std::vector<std::string>& problems) {
   const Index num_corners = Index(soup.face_vertices.size());
   auto face_of = [&](Index c) {
     return Index(std::upper_bound(soup.face_offsets.begin(), soup.face_offsets.end(), c) -
@@ -69,8 +69,6 @@ GluedFaces glue_faces(const PolygonSoup& soup) {
     const Index f = face_of(c);
     return c + 1 == soup.face_offsets[f + 1] ? soup.face_offsets[f] : c + 1;
   };
-
-  // phase: every corner its own vertex; corners are joined across each edge with exactly two faces.
   struct HalfEdge {
     Index low, high, corner;
   };
@@ -82,7 +80,6 @@ GluedFaces glue_faces(const PolygonSoup& soup) {
   std::sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& a, const HalfEdge& b) {
     return a.low != b.low ? a.low < b.low : a.high != b.high ? a.high < b.high : a.corner < b.corner;
   });
-  GluedFaces out;
   std::vector<Index> parent(num_corners);
   std::iota(parent.begin(), parent.end(), 0);
   auto label = [&](Index v) {
@@ -101,16 +98,21 @@ GluedFaces glue_faces(const PolygonSoup& soup) {
       parent[find(parent, c1)] = find(parent, same_way ? c2 : next(c2));
       parent[find(parent, next(c1))] = find(parent, same_way ? next(c2) : c2);
     } else if (end - i > 2) {
-      const Index face =
-          Index(std::upper_bound(soup.face_offsets.begin(), soup.face_offsets.end(), half_edges[i].corner) -
-                soup.face_offsets.begin() - 1);
-      const std::string& where = soup.origin(face);
-      out.problems.push_back((where.empty() ? "" : where + ": ") + "edge (" + label(half_edges[i].low) +
-                             ", " + label(half_edges[i].high) + ") has " + std::to_string(end - i) +
-                             " faces");
+      const std::string& where = soup.origin(face_of(half_edges[i].corner));
+      problems.push_back((where.empty() ? "" : where + ": ") + "edge (" + label(half_edges[i].low) + ", " +
+                         label(half_edges[i].high) + ") has " + std::to_string(end - i) + " faces");
     }
     i = end;
   }
+  return parent;
+}
+
+}  // namespace
+
+GluedFaces glue_faces(const PolygonSoup& soup) {
+  const Index num_corners = Index(soup.face_vertices.size());
+  GluedFaces out;
+  std::vector<Index> parent = joined_corners(soup, out.problems);
 
   // phase: one vertex per group of joined corners.
   PolygonSoup glued;
