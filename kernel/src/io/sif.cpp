@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <unordered_map>
@@ -169,6 +170,27 @@ struct Pairing {
   std::array<Index, 4> quad;
 };
 
+// What joining triangles f and g into `quad` costs (how far they fold, and how far the quad's corners are
+// from right angles), or nothing when they fold more than min_cos allows or the quad is not convex.
+std::optional<double> pairing_cost(const PolygonSoup& soup, Index f, Index g,
+                                   const std::array<Index, 4>& quad, double min_cos) {
+  const Vec3 n1 = triangle_normal(soup, f), n2 = triangle_normal(soup, g);
+  const double l1 = glm::length(n1), l2 = glm::length(n2);
+  if (l1 == 0 || l2 == 0) return std::nullopt;
+  const double fold = glm::dot(n1, n2) / (l1 * l2);
+  if (fold < min_cos) return std::nullopt;
+  const Vec3 normal = n1 + n2;
+  double squareness = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 p = soup.positions[quad[(i + 3) % 4]], q = soup.positions[quad[i]],
+               r = soup.positions[quad[(i + 1) % 4]];
+    if (glm::dot(glm::cross(q - p, r - q), normal) <= 0) return std::nullopt;
+    const double lp = glm::length(p - q), lr = glm::length(r - q);
+    if (lp > 0 && lr > 0) squareness = std::max(squareness, std::abs(glm::dot(p - q, r - q)) / (lp * lr));
+  }
+  return (1 - fold) + 0.5 * squareness;
+}
+
 }  // namespace
 
 PolygonSoup pair_triangles(const PolygonSoup& soup, double max_fold_degrees) {
@@ -197,24 +219,9 @@ PolygonSoup pair_triangles(const PolygonSoup& soup, double max_fold_degrees) {
       const Index* w = soup.face_vertices.data() + soup.face_offsets[g];
       const Index d = w[(it->second.second + 2) % 3];
       if (d == c) continue;
-      const Vec3 n1 = triangle_normal(soup, f), n2 = triangle_normal(soup, g);
-      const double l1 = glm::length(n1), l2 = glm::length(n2);
-      if (l1 == 0 || l2 == 0) continue;
-      const double fold = glm::dot(n1, n2) / (l1 * l2);
-      if (fold < min_cos) continue;
       const std::array<Index, 4> quad{a, d, b, c};
-      const Vec3 normal = n1 + n2;
-      bool convex = true;
-      double squareness = 0;
-      for (int i = 0; i < 4; ++i) {
-        const Vec3 p = soup.positions[quad[(i + 3) % 4]], q = soup.positions[quad[i]],
-                   r = soup.positions[quad[(i + 1) % 4]];
-        convex = convex && glm::dot(glm::cross(q - p, r - q), normal) > 0;
-        const double lp = glm::length(p - q), lr = glm::length(r - q);
-        if (lp > 0 && lr > 0) squareness = std::max(squareness, std::abs(glm::dot(p - q, r - q)) / (lp * lr));
-      }
-      if (!convex) continue;
-      candidates.push_back({(1 - fold) + 0.5 * squareness, f, g, quad});
+      if (const std::optional<double> cost = pairing_cost(soup, f, g, quad, min_cos))
+        candidates.push_back({*cost, f, g, quad});
     }
   }
   std::sort(candidates.begin(), candidates.end(), [](const Pairing& x, const Pairing& y) {
