@@ -95,6 +95,8 @@ class Window : private ScriptHost {
   // window_actions.cpp: what each action does here
   void bind_actions();
   void bind_workbench_actions();
+  void bind_file_actions();
+  void bind_view_actions();
   void open_browser(Action action);
   bool edit(Action action);
   bool can_edit() const;

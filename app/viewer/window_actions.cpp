@@ -46,15 +46,8 @@ void Window::bind_workbench_actions() {
   actions_.bind(Action::toggle_section, always([this] { section_.is_on = !section_.is_on; }));
 }
 
-void Window::bind_actions() {
-  actions_.bind(Action::toggle_help, always([this] { panels_.is_help_shown = !panels_.is_help_shown; }));
-  LayoutSettings& layout = layout_settings_;
-  actions_.bind(Action::toggle_log, always([&layout] { layout.is_log_open = !layout.is_log_open; }));
-  actions_.bind(Action::toggle_sidebars, always([&layout] {
-                  const bool is_any_shown = layout.is_left_shown || layout.is_right_shown;
-                  layout.is_left_shown = layout.is_right_shown = !is_any_shown;
-                }));
-  actions_.bind(Action::toggle_theme, always([&layout] { layout.is_dark = !layout.is_dark; }));
+// Opening and saving files.
+void Window::bind_file_actions() {
   for (Action action : {Action::open, Action::save_as, Action::export_mesh})
     actions_.bind(action, always([this, action] { open_browser(action); }));
   const Action recent[] = {Action::open_recent_1, Action::open_recent_2, Action::open_recent_3,
@@ -66,7 +59,10 @@ void Window::bind_actions() {
       return true;
     });
   actions_.bind(Action::save, [this] { return sessions_.save_logged(std::nullopt); });
-  actions_.bind(Action::quit, always([this] { request_quit(); }));
+}
+
+// The view: zoom, what is drawn and how, the camera's presets, screenshots.
+void Window::bind_view_actions() {
   actions_.bind(Action::zoom_in, always([this] { view_.zoom(1.0 / 1.25); }));
   actions_.bind(Action::zoom_out, always([this] { view_.zoom(1.25); }));
   actions_.bind(Action::toggle_faces, always([this] {
@@ -83,7 +79,6 @@ void Window::bind_actions() {
                       is_culled ? render::BackFacePolicy::different : render::BackFacePolicy::cull;
                 }));
   actions_.bind(Action::frame_all, always([this] { frame_all(); }));
-  bind_workbench_actions();
   actions_.bind(Action::reset_view, always([this] {
                   set_view(ViewController::default_azimuth, ViewController::default_elevation);
                 }));
@@ -94,6 +89,21 @@ void Window::bind_actions() {
                   pending_screenshot_ = next_screenshot_path();
                   is_screenshot_of_model_ = true;
                 }));
+}
+
+void Window::bind_actions() {
+  actions_.bind(Action::toggle_help, always([this] { panels_.is_help_shown = !panels_.is_help_shown; }));
+  LayoutSettings& layout = layout_settings_;
+  actions_.bind(Action::toggle_log, always([&layout] { layout.is_log_open = !layout.is_log_open; }));
+  actions_.bind(Action::toggle_sidebars, always([&layout] {
+                  const bool is_any_shown = layout.is_left_shown || layout.is_right_shown;
+                  layout.is_left_shown = layout.is_right_shown = !is_any_shown;
+                }));
+  actions_.bind(Action::toggle_theme, always([&layout] { layout.is_dark = !layout.is_dark; }));
+  bind_file_actions();
+  actions_.bind(Action::quit, always([this] { request_quit(); }));
+  bind_view_actions();
+  bind_workbench_actions();
   actions_.bind(Action::clear_selection, always([this] {
                   selection_.clear();
                   refresh_selection();
