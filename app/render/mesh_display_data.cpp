@@ -124,15 +124,15 @@ void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, 
     for (std::size_t i = 0; i < extra.size(); ++i)
       out.extra_vertices[i] = out.vertices[extra[i] & ~corner_sign_bit];
   };
-  // The vertex normals' scatter takes one thread (see compute_float_normals); a large mesh's positions
-  // are rounded beside it.
+  // The vertex normals' scatter takes one thread unless the faces split into two halves (see
+  // compute_float_normals); a large mesh's positions are rounded beside it.
   {
     std::jthread helper;
     if (threads > 1 && positions.size() >= (1u << 16))
       helper = std::jthread(round_positions);
     else
       round_positions();
-    compute_float_vertex_normals(mesh, out.face_normals, out.vertex_normals);
+    compute_float_vertex_normals(mesh, out.face_normals, out.vertex_normals, threads);
   }
   for (std::size_t i = 0; i < extra.size(); ++i) {
     const glm::vec3& n = out.vertex_normals[extra[i] & ~corner_sign_bit];

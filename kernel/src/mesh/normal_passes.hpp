@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <mutex>
+#include <thread>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -79,35 +80,69 @@ void face_normals(const Mesh& mesh, T* out, std::vector<Index>& degenerate, int 
   list.sort();
 }
 
+// A face f near the middle such that faces [0, f) and [f, F) share no vertex (no component has faces on
+// both sides: an offset's two copies of a closed orientable surface), or 0 when there is none.
+inline Index disjoint_face_split(const Mesh& mesh) {
+  const Index nf = mesh.num_faces();
+  if (mesh.num_components() < 2 || nf < 2) return 0;
+  Index split = nf / 2;
+  while (split < nf && mesh.face_component(split) == mesh.face_component(split - 1)) ++split;
+  if (split == nf) return 0;
+  std::vector<char> is_before(mesh.num_components(), 0);
+  for (Index f = 0; f < split; ++f) is_before[mesh.face_component(f)] = 1;
+  for (Index f = split; f < nf; ++f)
+    if (is_before[mesh.face_component(f)]) return 0;
+  return split;
+}
+
 // Vertex normals: per vertex the sum over its fan of s(c) * n_f, then normalized (zero where it vanishes,
 // listed unless the vertex is isolated). One pass over the faces in corner order, each face's normal
 // added to its vertices' sums with its corner's sign (streaming reads; a gather over the fans reads
-// three arrays at random per corner). On one thread: measured at a million faces, two threads that each
-// walk all corners and add only to their own half of the vertices took longer than one thread.
+// three arrays at random per corner). Measured at a million faces, two threads that each walk all
+// corners and add only to their own half of the vertices took longer than one thread; so a second
+// thread takes part only where the faces split into two halves without a shared vertex (then each
+// vertex's sum is added up in the same order: the same normals on any number of threads).
 template <class T>
-void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>& degenerate) {
+void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>& degenerate,
+                    int threads = 1) {
   using Scalar = typename T::value_type;
   // Where a sum of unit vectors has cancelled down to rounding noise.
   constexpr Scalar vanishing = sizeof(Scalar) == sizeof(double) ? Scalar(1e-12) : Scalar(1e-5);
   const Index* offsets = mesh.face_offsets().data();
   const Index* corners = mesh.corner_vertices().data();
   const signed char* signs = mesh.corner_signs().data();
-  std::fill(out, out + mesh.num_vertices(), T(0.0));
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
-    const T n = faces[f];
-    for (Index c = offsets[f]; c < offsets[f + 1]; ++c) out[corners[c]] += signs[c] > 0 ? n : -n;
-  }
-  degenerate.clear();
-  for (Index v = 0; v < mesh.num_vertices(); ++v) {
-    T& n = out[v];
-    const Scalar len = glm::length(n);
-    if (len > vanishing) {
-      n *= Scalar(1) / len;
-    } else {
-      n = T(0.0);
-      if (!mesh.is_isolated_vertex(v)) degenerate.push_back(v);
+  parallel_for(mesh.num_vertices(), threads,
+               [&](Index begin, Index end) { std::fill(out + begin, out + end, T(0.0)); });
+  auto scatter = [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f) {
+      const T n = faces[f];
+      for (Index c = offsets[f]; c < offsets[f + 1]; ++c) out[corners[c]] += signs[c] > 0 ? n : -n;
     }
+  };
+  const Index split = threads > 1 && mesh.num_faces() >= (1u << 16) ? disjoint_face_split(mesh) : 0;
+  if (split > 0) {
+    std::thread second(scatter, split, mesh.num_faces());
+    scatter(0, split);
+    second.join();
+  } else {
+    scatter(0, mesh.num_faces());
   }
+  SharedList list(degenerate);
+  parallel_for(mesh.num_vertices(), threads, [&](Index begin, Index end) {
+    std::vector<Index> part;
+    for (Index v = begin; v < end; ++v) {
+      T& n = out[v];
+      const Scalar len = glm::length(n);
+      if (len > vanishing) {
+        n *= Scalar(1) / len;
+      } else {
+        n = T(0.0);
+        if (!mesh.is_isolated_vertex(v)) part.push_back(v);
+      }
+    }
+    list.append(part);
+  });
+  list.sort();
 }
 
 }  // namespace nome::normal_passes

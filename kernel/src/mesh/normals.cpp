@@ -34,7 +34,8 @@ void compute_normals(const Mesh& mesh, Normals& out, int threads) {
   resize_for_overwrite(out.faces, mesh.num_faces());
   resize_for_overwrite(out.vertices, mesh.num_vertices());
   normal_passes::face_normals(mesh, out.faces.data(), out.degenerate_faces, threads);
-  normal_passes::vertex_normals(mesh, out.faces.data(), out.vertices.data(), out.degenerate_vertices);
+  normal_passes::vertex_normals(mesh, out.faces.data(), out.vertices.data(), out.degenerate_vertices,
+                                threads);
 }
 
 std::string degeneracy_warning(const Mesh& mesh, const Normals& normals) {

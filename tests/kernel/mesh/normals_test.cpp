@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <span>
 
 #include "nome/error.hpp"
 #include "nome/mesh/normals.hpp"
+#include "nome/ops/offset.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
@@ -23,6 +25,18 @@ PolygonSoup folded_torus() {
     soup.positions[corners[3]] = soup.positions[corners[0]];
   }
   return soup;
+}
+
+// Two tori's faces taken in turn: two components whose faces interleave (no split into halves).
+PolygonSoup interleaved_tori() {
+  const PolygonSoup both = test::disjoint_union(test::torus(256, 128), test::torus(256, 128, 2.0));
+  const Index half = both.num_faces() / 2;
+  PolygonSoup out;
+  out.positions = both.positions;
+  for (Index f = 0; f < half; ++f)
+    for (const Index g : {f, half + f})
+      out.add_face(std::span(both.face_vertices.data() + both.face_offsets[g], 4));
+  return out;
 }
 
 }  // namespace
@@ -130,4 +144,29 @@ TEST_CASE("single-precision normals of faces that are not quads, on a Möbius ba
   for (Index f = 0; f < m.num_faces(); ++f) CHECK(faces[f] == glm::vec3(one.faces[f]));
   for (Index v = 0; v < m.num_vertices(); ++v) CHECK(glm::length(Vec3(vertices[v]) - one.vertices[v]) < 1e-6);
   CHECK_THROWS_AS(compute_float_vertex_normals(m, std::span(faces).first(1), vertices), InvalidInputError);
+}
+
+TEST_CASE("vertex normals of faces in two halves without a shared vertex, on two threads", "[kernel]") {
+  // An offset's two copies (the second thread adds up one of them); pieces whose faces interleave, and
+  // the offset of a surface with faces reversed at random (both halves hold faces of both sides): one
+  // thread adds up all.
+  std::mt19937 rng{42};
+  const Mesh surface = build_mesh(test::reverse_random_faces(test::torus(256, 128), 0.3, rng));
+  for (const Mesh& m : {offset(build_mesh(test::torus(256, 128)), {.distance = 0.01}),
+                        build_mesh(interleaved_tori()), offset(surface, {.distance = 0.01})}) {
+    REQUIRE(m.num_faces() >= (1u << 16));
+    Buffer<glm::vec3> faces, one, two;
+    compute_float_normals(m, faces, one, 1);
+    compute_float_normals(m, faces, two, 2);
+    CHECK(one == two);
+    const Normals exact = compute_normals(m);
+    Normals split;
+    compute_normals(m, split, 2);
+    CHECK(split.vertices == exact.vertices);
+    CHECK(split.degenerate_vertices == exact.degenerate_vertices);
+    double largest = 0.0;
+    for (Index v = 0; v < m.num_vertices(); ++v)
+      largest = std::max(largest, glm::length(Vec3(two[v]) - exact.vertices[v]));
+    CHECK(largest < 1e-6);
+  }
 }

@@ -29,14 +29,16 @@ Normals compute_normals(const Mesh& mesh);
 // up to `threads` threads (the same normals and lists on any number).
 void compute_normals(const Mesh& mesh, Normals& out, int threads = 1);
 // The normals a GPU draws with, straight into `faces` and `vertices`: compute_normals' face normals
-// rounded, on up to `threads` threads; vertex normals summed and normalized in single precision, on one
-// (within about 1e-6 of compute_normals' rounded, and zero where those are).
+// rounded; vertex normals summed and normalized in single precision (within about 1e-6 of
+// compute_normals' rounded, and zero where those are). On up to `threads` threads, the same normals on
+// any number: the vertex sums take a second thread only where the faces split into two halves that share
+// no vertex (an offset's two sides), as do compute_normals'.
 void compute_float_normals(const Mesh& mesh, Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices,
                            int threads);
 // Its two passes, for a caller that runs other work beside the second: `faces` from the first.
 void compute_float_face_normals(const Mesh& mesh, Buffer<glm::vec3>& faces, int threads);
 void compute_float_vertex_normals(const Mesh& mesh, std::span<const glm::vec3> faces,
-                                  Buffer<glm::vec3>& vertices);
+                                  Buffer<glm::vec3>& vertices, int threads = 1);
 
 // A warning naming the degenerate faces and vertices of `normals` (the first few of each, by label),
 // or "" when there are none: for the caller to show, since the kernel never prints.
