@@ -35,8 +35,10 @@ void BaseTiles::build(const Mesh& base) {
   face_corners.assign(base.face_offsets().begin(), base.face_offsets().end());
   lone_vertices.clear();
   owner.resize(base.num_edges());
+  has_creases = false;
   for (Index e = 0; e < base.num_edges(); ++e) {
     const Edge& edge = base.edge(e);
+    has_creases = has_creases || edge.is_sharp || edge.is_boundary();
     owner[e] = edge.faces[1] == no_index ? edge.faces[0] : std::max(edge.faces[0], edge.faces[1]);
   }
   group_by_face(owner, base.num_faces(), edge_offsets, edges);

@@ -30,6 +30,9 @@ struct BaseTiles {
   std::vector<Index> face_corners;  // the base's face offsets: b's corners are [face_corners[b], [b + 1])
   std::vector<Index> edge_offsets, edges, vertex_offsets, vertices;  // per base face (CSR)
   std::vector<Index> lone_vertices;
+  // Whether the base has a sharp or border edge: without one, no level has a crease edge (creases are the
+  // halves of creases).
+  bool has_creases = true;
   std::vector<Index> owner;  // scratch: the face each edge or vertex goes with
 };
 

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <type_traits>
 
 #include "ops/base_tiles.hpp"
 #include "ops/parallel_for.hpp"
@@ -27,6 +28,7 @@ struct ChildPass {
   std::span<const Vec3> in;
   std::span<Vec3> out;
   bool is_classic;
+  bool has_creases = true;  // false: no edge of G is a crease, and their flags need not be read
   Index nf = g.num_faces(), ne = g.num_edges(), nc = g.num_corners();
   Index ep = nf, vp = nf + ne;                    // where P's edge and vertex points start in `in`
   Index out_ep = nc, out_interior = nc + 2 * ne;  // P's edge points in `out`, its interior edges'
@@ -44,32 +46,70 @@ struct ChildPass {
     sum += arriving;
     return sum * 0.25;
   }
-  Vec3 face_point(Index f, Index c) const {
-    return face_point(in[vp + g.corner_vertex(c)], in[ep + g.corner_edge(c)], in[f],
-                      in[ep + g.corner_edge(g.prev_corner(c))]);
-  }
 
   // G face f, what reads only that face: the face points of its P quads, the edge points of its P
   // interior edges (corner c's runs ep(leaving edge) -> fp, between quads c and next(c)), and the vertex
   // point of its P face point, whose fan is the face's quads (P corner 4c+2 sits between ep(edge of c)
   // and ep(edge of prev c); fan edge i is the interior edge of corner b + i - 1; never a crease). Each
   // face point is made once and kept for the next corner's interior edge, not read back.
+  // The points around are read into locals once: `in` may alias `out` as far as the compiler knows, so a
+  // read through it after a write to `out` would be a load again.
   void face(Index f) const {
+    if constexpr (std::is_same_v<Grandparent, Refinement::Level>) {
+      if (is_classic) return quad_face(f);
+    }
     const Index b = g.face_begin(f), n = g.face_end(f) - b;
-    const Vec3 first = face_point(f, b);
+    const Vec3 centre = in[f];
+    Vec3 arriving = in[ep + g.corner_edge(g.prev_corner(b))], leaving = in[ep + g.corner_edge(b)];
+    const Vec3 first = face_point(in[vp + g.corner_vertex(b)], leaving, centre, arriving);
     Vec3 here = first, face_sum(0.0), edge_sum(0.0);
     for (Index c = b; c < b + n; ++c) {
       const Index next = g.next_corner(c);
-      const Vec3 there = next == b ? first : face_point(f, next);
+      const Vec3 next_leaving = next == b ? leaving : in[ep + g.corner_edge(next)];
+      const Vec3 there =
+          next == b ? first : face_point(in[vp + g.corner_vertex(next)], next_leaving, centre, leaving);
       out[c] = here;
-      out[out_interior + c] = (in[ep + g.corner_edge(c)] + in[f] + here + there) * 0.25;
+      out[out_interior + c] = (leaving + centre + here + there) * 0.25;
       face_sum += here;
-      if (is_classic) edge_sum += in[ep + g.corner_edge(g.prev_corner(c))] + in[ep + g.corner_edge(c)];
+      if (is_classic) edge_sum += arriving + leaving;
+      arriving = leaving;
+      leaving = next_leaving;
       here = there;
     }
     if (!is_classic)
       for (Index i = 0; i < n; ++i) edge_sum += out[out_interior + b + (i == 0 ? n - 1 : i - 1)];
-    out[out_vp + f] = smooth(in[f], edge_sum, face_sum, double(n));
+    out[out_vp + f] = smooth(centre, edge_sum, face_sum, double(n));
+  }
+
+  // face() for a quad of a refined level and the classic rule, written out corner by corner: the same sums
+  // in the same order, in a sixth fewer instructions than the loop (no values carried between corners).
+  void quad_face(Index f) const {
+    const Index b = 4 * f;
+    const Vec3 centre = in[f];
+    const Vec3 e0 = in[ep + g.corner_edge(b)], e1 = in[ep + g.corner_edge(b + 1)];
+    const Vec3 e2 = in[ep + g.corner_edge(b + 2)], e3 = in[ep + g.corner_edge(b + 3)];
+    const Vec3 p0 = face_point(in[vp + g.corner_vertex(b)], e0, centre, e3);
+    const Vec3 p1 = face_point(in[vp + g.corner_vertex(b + 1)], e1, centre, e0);
+    const Vec3 p2 = face_point(in[vp + g.corner_vertex(b + 2)], e2, centre, e1);
+    const Vec3 p3 = face_point(in[vp + g.corner_vertex(b + 3)], e3, centre, e2);
+    out[b] = p0;
+    out[b + 1] = p1;
+    out[b + 2] = p2;
+    out[b + 3] = p3;
+    out[out_interior + b] = (e0 + centre + p0 + p1) * 0.25;
+    out[out_interior + b + 1] = (e1 + centre + p1 + p2) * 0.25;
+    out[out_interior + b + 2] = (e2 + centre + p2 + p3) * 0.25;
+    out[out_interior + b + 3] = (e3 + centre + p3 + p0) * 0.25;
+    Vec3 face_sum(0.0), edge_sum(0.0);
+    face_sum += p0;
+    face_sum += p1;
+    face_sum += p2;
+    face_sum += p3;
+    edge_sum += e3 + e0;
+    edge_sum += e0 + e1;
+    edge_sum += e1 + e2;
+    edge_sum += e2 + e3;
+    out[out_vp + f] = smooth(centre, edge_sum, face_sum, 4.0);
   }
 
   // G edge e: the edge points of its halves and the vertex point of its P edge point. Half 2e runs
@@ -85,7 +125,7 @@ struct ChildPass {
     const Vec3 first = a0 + here;
     const Vec3 second = here + a1;
     Vec3& result = out[out_vp + nf + e];
-    if (g.is_crease(e)) {
+    if (has_creases && g.is_crease(e)) {
       out[out_ep + 2 * e] = first * 0.5;
       out[out_ep + 2 * e + 1] = second * 0.5;
       Vec3 sharp_sum(0.0);
@@ -140,7 +180,8 @@ struct ChildPass {
     const Vec3& here = in[vp + v];
     const auto edges = g.vertex_edges(v);
     Index sharp_count = 0;
-    for (Index e : edges) sharp_count += g.is_crease(e) ? 1 : 0;
+    if (has_creases)
+      for (Index e : edges) sharp_count += g.is_crease(e) ? 1 : 0;
     if (rules.is_fixed(edges.size(), g.vertex_corners(v).size(), sharp_count)) return here;
     if (sharp_count == 2) {
       Vec3 sharp_sum(0.0);
@@ -190,7 +231,7 @@ void refine_child_positions(const Grandparent& g, std::span<const Vec3> in, Vert
 void refine_child_positions_by_tile(const Refinement::Level& g, const BaseTiles& tiles,
                                     std::span<const LevelCounts> counts, std::span<const Vec3> in,
                                     VertexRules rules, std::span<Vec3> out, int threads) {
-  const ChildPass<Refinement::Level> pass{g, in, out, true};
+  const ChildPass<Refinement::Level> pass{g, in, out, true, tiles.has_creases};
   const Index vertex_points = pass.out_vp + pass.nf + pass.ne;
   const unsigned corner_shift = 2 * unsigned(counts.size() - 1);  // base corner -> its first G corner
   const Index base_faces = Index(tiles.face_corners.size() - 1);

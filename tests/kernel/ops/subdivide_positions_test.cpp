@@ -304,13 +304,17 @@ TEST_CASE("the classic pass by base-face tiles gives the bits of one level at a 
   with_lone_vertex.add_face(pentagon);
   PolygonSoup creased = jittered(test::torus(6, 5), 0.05);
   creased.sharp_edges = {{0, 1}, {1, 2}, {2, 3}, {0, 5}};
+  // No crease anywhere (the pass then reads no edge flags), and a vertex of no face.
+  PolygonSoup closed_with_lone_vertex = jittered(test::torus(7, 4), 0.05);
+  closed_with_lone_vertex.add_vertex(Vec3(0.0, 0.0, 4.0));
   const std::vector<PolygonSoup> soups = {
       jittered(test::klein_bottle(8, 6), 0.05),
       test::projective_plane(),
       jittered(test::mobius_band(9, 2), 0.05),
       with_lone_vertex,
       creased,
-      jittered(test::disjoint_union(test::cube(), test::torus(5, 4)), 0.1)};
+      jittered(test::disjoint_union(test::cube(), test::torus(5, 4)), 0.1),
+      closed_with_lone_vertex};
   for (size_t i = 0; i < soups.size(); ++i) {
     INFO("shape " << i);
     const Mesh base = build_mesh(soups[i]);
