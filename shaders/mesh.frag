@@ -1,24 +1,22 @@
 // Two-sided lighting. A face seen from behind is lit with its normal flipped and, under the
 // "different" back-face policy, painted in the back colour: on a one-sided surface (Möbius band,
 // Klein bottle) both colours meet along the Möbius edges, which is how one-sidedness shows.
+// The renderer compiles one variant per set of features in use (FLAT_NORMALS, DIFFERENT_BACK_COLOR,
+// FACE_COLORS, SELECTION, FILLS_SECTION, defined before this file): llvmpipe runs both sides of a
+// branch on a uniform, and at a pixel or two per triangle the shader's length is the frame's.
 in vec3 view_position;
 in vec3 view_normal;
 in float pinch;
 flat in uint face_id;
 
 uniform mat4 model_view;
-uniform bool use_flat_normals;
 uniform vec3 front_color;
 uniform vec3 back_color;
 uniform vec3 selection_color;
-uniform bool different_back_color;
-uniform bool use_face_colors;  // and some face has a colour of its own
-uniform bool has_selection;
 uniform samplerBuffer face_normals;  // three floats per face
 uniform samplerBuffer face_colors;   // RGBA per face; alpha 0 = the front colour
 uniform usamplerBuffer face_flags;   // bit 0: selected
 uniform float opacity;
-uniform bool fills_section;
 uniform vec3 section_color;
 
 out vec4 fragment;
@@ -32,29 +30,36 @@ vec3 face_normal(int face) {
 
 void main() {
   int face = int(face_id);
+#ifdef FLAT_NORMALS
+  vec3 n = face_normal(face);
+#else
   vec3 n = view_normal;
-  if (use_flat_normals)
-    n = face_normal(face);
-  else if (pinch > 0.0)
-    n += pinch * face_normal(face);
+  if (pinch > 0.0) n += pinch * face_normal(face);
+#endif
   // A degenerate face has a zero normal: fall back to the triangle's own plane.
   if (dot(n, n) < 1e-20) n = cross(dFdx(view_position), dFdy(view_position));
   n = normalize(n);
   if (!gl_FrontFacing) n = -n;
   vec3 base = front_color;
-  if (use_face_colors) {
-    vec4 own = texelFetch(face_colors, face);
-    if (own.a > 0.0) base = own.rgb;
-  }
-  if (!gl_FrontFacing && different_back_color) base = back_color;
+#ifdef FACE_COLORS
+  vec4 own = texelFetch(face_colors, face);
+  if (own.a > 0.0) base = own.rgb;
+#endif
+#ifdef DIFFERENT_BACK_COLOR
+  if (!gl_FrontFacing) base = back_color;
+#endif
+#ifdef FILLS_SECTION
   // Through a section of a closed solid the only back faces in sight are the far walls of its inside:
   // flat, in the section's colour, they fill the cut.
-  if (fills_section && !gl_FrontFacing) {
+  if (!gl_FrontFacing) {
     fragment = vec4(section_color, opacity);
     gl_FragDepth = gl_FragCoord.z + 2.0 * fwidth(gl_FragCoord.z) + 1e-6;
     return;
   }
-  if (has_selection && (texelFetch(face_flags, face).r & 1u) != 0u) base = mix(base, selection_color, 0.65);
+#endif
+#ifdef SELECTION
+  if ((texelFetch(face_flags, face).r & 1u) != 0u) base = mix(base, selection_color, 0.65);
+#endif
   fragment = vec4(shade(base, n, view_position), opacity);
   // Back faces lose depth ties: along a silhouette the front and back triangles meet at equal depth,
   // and a back-colour fringe there would suggest a one-sided surface where there is none.

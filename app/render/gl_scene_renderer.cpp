@@ -37,11 +37,12 @@ class GlSceneRenderer final : public SceneRenderer {
 
   void draw(const Camera& camera, glm::ivec2 framebuffer_size, const PixelRect& viewport,
             const DisplaySettings& display, const glm::vec3& rim_color) override {
+    // One clear of the whole framebuffer covers the viewport too: a multisampled clear costs llvmpipe
+    // a pass over four samples per pixel.
     renderer_.begin(Renderer::Frame::of(camera, {0, 0}, glm::max(framebuffer_size, {1, 1})),
                     display.background);
     const Renderer::Frame frame =
         Renderer::Frame::of(camera, viewport.origin, glm::max(viewport.size, {1, 1}));
-    renderer_.begin(frame, display.background);
     if (!buffers_) return;
     renderer_.draw_mesh(*buffers_, frame, display);
     renderer_.draw_cubes(cubes_, frame);

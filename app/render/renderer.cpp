@@ -1,17 +1,44 @@
 #include "render/renderer.hpp"
 
+#include <array>
+#include <string>
+
 #include "render/shader_program.hpp"
 
 namespace nome::render {
+namespace {
 
-// Each program is compiled on first use: a render without overlays never pays for the others.
+// The features of mesh.frag, one bit each in a variant's number.
+constexpr std::array<const char*, 5> mesh_features = {"FLAT_NORMALS", "DIFFERENT_BACK_COLOR", "FACE_COLORS",
+                                                      "SELECTION", "FILLS_SECTION"};
+
+unsigned mesh_variant(const MeshBuffers& mesh, const DisplaySettings& settings) {
+  const bool flags[] = {settings.shading == Shading::flat, settings.back_faces == BackFacePolicy::different,
+                        settings.uses_face_colors && mesh.has_face_colors(), mesh.has_selection(),
+                        settings.fills_section && settings.section_plane != glm::vec4(0.0f)};
+  unsigned variant = 0;
+  for (std::size_t i = 0; i < mesh_features.size(); ++i) variant |= flags[i] ? 1u << i : 0u;
+  return variant;
+}
+
+}  // namespace
+
+// Each program is compiled on first use: a render without overlays never pays for the others, and the
+// mesh program only for the sets of features drawn (mesh.frag says why).
 struct Renderer::Programs {
-  const ShaderProgram& mesh() {
-    if (!mesh_)
-      mesh_ = std::make_unique<ShaderProgram>(
-          "mesh", std::vector<ShaderStage>{{GL_VERTEX_SHADER, {"mesh.vert"}},
-                                           {GL_FRAGMENT_SHADER, {"lighting.glsl", "mesh.frag"}}});
-    return *mesh_;
+  const ShaderProgram& mesh(unsigned variant) {
+    std::unique_ptr<ShaderProgram>& program = mesh_.at(variant);
+    if (!program) {
+      std::string defines;
+      for (std::size_t i = 0; i < mesh_features.size(); ++i)
+        if (variant & (1u << i)) defines += std::string("#define ") + mesh_features[i] + "\n";
+      program = std::make_unique<ShaderProgram>(
+          "mesh",
+          std::vector<ShaderStage>{{GL_VERTEX_SHADER, {"mesh.vert"}},
+                                   {GL_FRAGMENT_SHADER, {"lighting.glsl", "mesh.frag"}}},
+          defines);
+    }
+    return *program;
   }
   const ShaderProgram& lines() {
     if (!lines_)
@@ -30,7 +57,8 @@ struct Renderer::Programs {
   }
 
  private:
-  std::unique_ptr<ShaderProgram> mesh_, lines_, cubes_;
+  std::array<std::unique_ptr<ShaderProgram>, 1u << mesh_features.size()> mesh_;
+  std::unique_ptr<ShaderProgram> lines_, cubes_;
 };
 
 Renderer::Frame Renderer::Frame::of(const Camera& camera, glm::ivec2 origin, glm::ivec2 size) {
@@ -66,20 +94,15 @@ void Renderer::begin(const Frame& frame, const glm::vec4& background) const {
 void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const DisplaySettings& settings) const {
   glViewport(frame.origin.x, frame.origin.y, frame.size.x, frame.size.y);
   if (settings.draws_faces && mesh.triangle_index_count() > 0) {
-    const ShaderProgram& p = programs_->mesh();
+    const ShaderProgram& p = programs_->mesh(mesh_variant(mesh, settings));
     p.use();
     p.set("model_view", frame.view);
     p.set("projection", frame.projection);
-    p.set("use_flat_normals", settings.shading == Shading::flat ? 1 : 0);
     p.set("front_color", settings.front_color);
     p.set("back_color", settings.back_color);
     p.set("selection_color", settings.selection_color);
-    p.set("different_back_color", settings.back_faces == BackFacePolicy::different ? 1 : 0);
-    p.set("use_face_colors", settings.uses_face_colors && mesh.has_face_colors() ? 1 : 0);
-    p.set("has_selection", mesh.has_selection() ? 1 : 0);
     p.set("opacity", 1.0f);
     p.set("section_plane", settings.section_plane);
-    p.set("fills_section", settings.fills_section && settings.section_plane != glm::vec4(0.0f) ? 1 : 0);
     p.set("section_color", settings.section_color);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_BUFFER, mesh.face_color_texture());

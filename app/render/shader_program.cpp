@@ -21,14 +21,15 @@ std::string info_log(GLuint object, bool is_program) {
 
 }  // namespace
 
-ShaderProgram::ShaderProgram(const std::string& name, const std::vector<ShaderStage>& stages) {
+ShaderProgram::ShaderProgram(const std::string& name, const std::vector<ShaderStage>& stages,
+                             const std::string& defines) {
   const auto folders = shader_search_path();
   std::vector<GLuint> shaders;
   auto release = [&] {
     for (GLuint s : shaders) glDeleteShader(s);
   };
   for (const ShaderStage& stage : stages) {
-    std::string text = "#version 330 core\n";
+    std::string text = "#version 330 core\n" + defines;
     std::string origins;
     for (const std::string& file : stage.files) {
       const ShaderSource source = find_shader_source(file, folders);

@@ -17,11 +17,13 @@ struct ShaderStage {
   std::vector<std::string> files;  // concatenated after the #version line (shared code first)
 };
 
-// A linked GLSL 3.30 program built from files found by find_shader_source(). Throws Error with the
-// compiler's log and the files' origins when a stage does not compile or link.
+// A linked GLSL 3.30 program built from files found by find_shader_source(), with `defines` (lines such as
+// "#define FLAT_NORMALS\n") before every stage's files. Throws Error with the compiler's log and the files'
+// origins when a stage does not compile or link.
 class ShaderProgram {
  public:
-  ShaderProgram(const std::string& name, const std::vector<ShaderStage>& stages);
+  ShaderProgram(const std::string& name, const std::vector<ShaderStage>& stages,
+                const std::string& defines = {});
   ~ShaderProgram();
   ShaderProgram(const ShaderProgram&) = delete;
   ShaderProgram& operator=(const ShaderProgram&) = delete;

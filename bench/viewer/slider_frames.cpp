@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <functional>
 #include <string>
+#include <thread>
 
 #include "nome/ops/pipeline.hpp"
 #include "render/framebuffer.hpp"
@@ -30,11 +31,16 @@ PipelineSettings torus_settings(int levels) {
   return s;
 }
 
+// The machine's load and llvmpipe's rasteriser threads (LP_NUM_THREADS, else one per core), which
+// together decide its speed.
 std::string load() {
   double loads[3] = {};
-  if (getloadavg(loads, 3) < 1) return "load unknown";
-  char text[64];
-  std::snprintf(text, sizeof text, "load %.2f", loads[0]);
+  const char* threads = std::getenv("LP_NUM_THREADS");
+  char text[128];
+  std::snprintf(
+      text, sizeof text, "load %s, LP_NUM_THREADS %s",
+      getloadavg(loads, 3) < 1 ? "unknown" : std::to_string(loads[0]).substr(0, 4).c_str(),
+      threads ? threads : ("unset: " + std::to_string(std::thread::hardware_concurrency())).c_str());
   return text;
 }
 
@@ -45,24 +51,42 @@ void show(render::SceneRenderer& renderer, const StageResult& result) {
 
 // A slider that changes the topology: the frames go on while the job runs.
 void topology_figures(Session& session, const StageView& view, const std::function<void(double)>& frame,
-                      Index faces) {
-  double longest = 0.0, until_shown = 0.0;
+                      Index faces, double steady_ms) {
+  double longest = 0.0, swap = 0.0, until_shown = 0.0;
   int frames = 0;
   for (int i = 0; i < 4; ++i) {
     session.set_parameter("t_segs", i % 2 ? 64 : 60);
     const auto start = Clock::now();
     do {
+      const Mesh* before = view.shown_mesh();
       const auto frame_start = Clock::now();
       frame(1.0);
-      longest = std::max(longest, ms_since(frame_start));
+      const double ms = ms_since(frame_start);
+      // The frame that takes the new solid uploads its topology; the others only draw.
+      if (view.shown_mesh() == before)
+        longest = std::max(longest, ms);
+      else
+        swap = std::max(swap, ms);
       ++frames;
     } while (view.is_busy());
     until_shown = std::max(until_shown, ms_since(start));
   }
   std::printf(
       "  slider t_segs (changes the topology) at about %u faces: the last solid stays up, %d frames drawn, "
-      "longest frame %.1f ms (target < 33 ms: never stalls), new solid shown after at most %.0f ms [%s]\n",
-      faces, frames, longest, until_shown, load().c_str());
+      "longest frame while the job runs %.1f ms, the frame that swaps the new solid in %.1f ms, against "
+      "%.1f ms for a frame without a change (target: no frame stalls on the job); new solid shown after "
+      "at most %.0f ms [%s]\n",
+      faces, frames, longest, swap, steady_ms, until_shown, load().c_str());
+}
+
+// The shown mesh's triangles over its own vertices (no extra GL vertices).
+std::vector<std::uint32_t> own_triangles(const StageResult& shown) {
+  const render::DisplayTopology& topology = *shown.display.topology;
+  std::vector<std::uint32_t> triangles(topology.triangles);
+  for (std::uint32_t& u : triangles)
+    if (u >= topology.num_vertices)
+      u = topology.extra_vertices[u - topology.num_vertices] & ~render::corner_sign_bit;
+  return triangles;
 }
 
 // The shown mesh's GL vertices, and its triangles drawn with a trivial shader: llvmpipe's floor.
@@ -71,11 +95,7 @@ void floor_figures(const StageResult& shown, const glm::mat4& transform, glm::iv
   std::printf("  at %u faces: %u GL vertices (%.2f per mesh vertex), %zu triangles\n", topology.num_faces,
               topology.num_gl_vertices(), double(topology.num_gl_vertices()) / topology.num_vertices,
               topology.triangles.size() / 3);
-  // The mesh's own vertices and the same triangles over them.
-  std::vector<std::uint32_t> triangles(topology.triangles);
-  for (std::uint32_t& u : triangles)
-    if (u >= topology.num_vertices)
-      u = topology.extra_vertices[u - topology.num_vertices] & ~render::corner_sign_bit;
+  const std::vector<std::uint32_t> triangles = own_triangles(shown);
   const auto& positions = shown.display.positions->vertices;
   const TrivialDraw floor = trivial_draw(positions, triangles, transform, size);
   const TrivialDraw tiny = trivial_draw(positions, triangles, transform, {16, 16});
@@ -84,6 +104,37 @@ void floor_figures(const StageResult& shown, const glm::mat4& transform, glm::iv
       "threads); "
       "into 16x16 pixels %.1f ms (%.1f ms CPU) [%s]\n",
       triangles.size() / 3, floor.wall_ms, floor.cpu_ms, tiny.wall_ms, tiny.cpu_ms, load().c_str());
+}
+
+// The renderer's draw alone into `viewport` of the bound framebuffer, median wall and CPU milliseconds.
+TrivialDraw time_draws(render::SceneRenderer& renderer, const render::Camera& camera, glm::ivec2 size,
+                       glm::ivec2 viewport) {
+  std::vector<double> wall, cpu;
+  for (int i = 0; i < 5; ++i) {
+    const auto start = Clock::now();
+    const double cpu_start = cpu_ms();
+    renderer.draw(camera, size, {{0, 0}, viewport}, render::DisplaySettings{}, glm::vec3(1.0f));
+    glFinish();
+    wall.push_back(ms_since(start));
+    cpu.push_back(cpu_ms() - cpu_start);
+  }
+  return {median(wall), median(cpu)};
+}
+
+// The same draw and its floor into a framebuffer of one sample per pixel: what 4x multisampling costs
+// llvmpipe (the viewer's window asks for four).
+void single_sample_figures(const StageResult& shown, const render::Camera& camera,
+                           render::SceneRenderer& renderer, glm::ivec2 size) {
+  const render::Framebuffer framebuffer(size.x, size.y, 0);
+  framebuffer.bind();
+  const TrivialDraw draw = time_draws(renderer, camera, size, size);
+  const glm::mat4 transform = camera.projection_matrix(double(size.x) / size.y) * camera.view_matrix();
+  const TrivialDraw floor =
+      trivial_draw(shown.display.positions->vertices, own_triangles(shown), transform, size);
+  std::printf(
+      "  without multisampling (%dx%d, 1 sample): the draw %.1f ms (%.1f ms CPU), the trivial floor %.1f ms "
+      "(%.1f ms CPU) [%s]\n",
+      size.x, size.y, draw.wall_ms, draw.cpu_ms, floor.wall_ms, floor.cpu_ms, load().c_str());
 }
 
 }  // namespace
@@ -162,14 +213,7 @@ void frame_figures() {
     draw_cpu.push_back(cpu_ms() - cpu);
   }
   // The same draw into a viewport of 16x16 pixels: what the vertices cost.
-  std::vector<double> vertex_cpu;
-  for (int i = 0; i < 5; ++i) {
-    const double cpu = cpu_ms();
-    renderer->draw(camera, size, {{0, 0}, {16, 16}}, display, glm::vec3(1.0f));
-    glFinish();
-    vertex_cpu.push_back(cpu_ms() - cpu);
-  }
-  framebuffer.bind();
+  const double vertex_cpu = time_draws(*renderer, camera, size, {16, 16}).cpu_ms;
   // From the slider's change to the frame that shows its result: the job runs beside the frames.
   for (int i = 0; i < 11; ++i) {
     session.set_parameter("t_r", i % 2 ? 0.35 : 0.36);
@@ -185,9 +229,11 @@ void frame_figures() {
       "  slider t_r (moves vertices) at %u faces, 1280x800 4x MSAA: whole frame, draw included, median %.1f "
       "ms (target < 33 ms), from the change to its picture %.1f ms; the draw alone %.1f ms (%.1f ms CPU, "
       "all threads; %.1f ms CPU into 16x16 pixels) [%s]\n",
-      faces, median(frame_ms), median(latency_ms), median(draw_ms), median(draw_cpu), median(vertex_cpu),
+      faces, median(frame_ms), median(latency_ms), median(draw_ms), median(draw_cpu), vertex_cpu,
       load().c_str());
-  topology_figures(session, view, frame, faces);
+  single_sample_figures(*view.shown(), camera, *renderer, size);
+  framebuffer.bind();
+  topology_figures(session, view, frame, faces, median(draw_ms));
 }
 
 double cpu_ms() {

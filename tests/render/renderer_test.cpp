@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <vector>
+
 #include "render/framebuffer.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/render_support.hpp"
@@ -143,4 +146,36 @@ TEST_CASE("vertex markers are sized by the local edge length", "[render]") {
   CHECK(a[0].half_size < 0.5f);
   CHECK(b[0].half_size == Approx(10 * a[0].half_size));
   CHECK_THROWS(render::vertex_markers(small, std::vector<Index>{99}, {1, 0, 0}));
+}
+
+TEST_CASE("the mesh shader compiles and draws for every set of features", "[render]") {
+  // Each set of features is its own program (shaders/mesh.frag): a combination the others never use
+  // must compile too.
+  const render::OffscreenContext context;
+  const render::Renderer renderer;
+  const Mesh grid = build_mesh(test::grid(2, 1));
+  render::MeshBuffers buffers(render::build_display_data(grid));
+  const render::Framebuffer framebuffer(160, 120);
+  framebuffer.bind();
+  render::Camera camera;
+  camera.set_view(0, 0);
+  camera.fit(grid.positions(), 160.0 / 120.0);
+  const auto frame = render::Renderer::Frame::of(camera, {0, 0}, {160, 120});
+  const std::array<std::uint8_t, 4> plain{0, 0, 0, 0}, red{255, 0, 0, 255};
+  for (unsigned features = 0; features < 32; ++features) {
+    INFO("features " << features);
+    render::DisplaySettings settings;
+    settings.shading = features & 1u ? render::Shading::flat : render::Shading::smooth;
+    settings.back_faces = features & 2u ? render::BackFacePolicy::different : render::BackFacePolicy::same;
+    const std::array<std::uint8_t, 4> colors[] = {features & 4u ? red : plain, plain};
+    buffers.set_face_colors(colors);
+    buffers.set_selected_faces(features & 8u ? std::vector<Index>{1} : std::vector<Index>{});
+    settings.fills_section = features & 16u;
+    settings.section_plane = features & 16u ? glm::vec4(-1.0f, 0.0f, 0.0f, 0.5f) : glm::vec4(0.0f);
+    renderer.begin(frame, settings.background);
+    CHECK_NOTHROW(renderer.draw_mesh(buffers, frame, settings));
+    const render::Image image = framebuffer.read(false);
+    const int drawn = count_pixels(image, [](const std::uint8_t* p) { return p[0] < 250 || p[2] < 250; });
+    CHECK(drawn > 1000);
+  }
 }
