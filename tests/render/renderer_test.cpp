@@ -30,6 +30,24 @@ int count_pixels(const render::Image& image, bool (*keep)(const std::uint8_t*)) 
   return n;
 }
 
+// Two unit squares side by side (the left one face 0), seen from the front in a 160x120 framebuffer.
+struct GridView {
+  render::OffscreenContext context;
+  render::Renderer renderer;
+  Mesh grid = build_mesh(test::grid(2, 1));
+  render::MeshBuffers buffers{render::build_display_data(grid)};
+  render::Framebuffer framebuffer{160, 120};
+  render::Renderer::Frame frame = frame_of(grid, framebuffer);
+
+  static render::Renderer::Frame frame_of(const Mesh& mesh, const render::Framebuffer& target) {
+    target.bind();
+    render::Camera camera;
+    camera.set_view(0, 0);
+    camera.fit(mesh.positions(), 160.0 / 120.0);
+    return render::Renderer::Frame::of(camera, {0, 0}, {160, 120});
+  }
+};
+
 }  // namespace
 
 TEST_CASE("a one-sided surface shows its back colour and a closed orientable one does not", "[render]") {
@@ -85,16 +103,11 @@ TEST_CASE("a transparent background keeps the surface opaque", "[render]") {
 }
 
 TEST_CASE("selection tint, thick lines and cube markers for the viewer", "[render]") {
-  const render::OffscreenContext context;
-  const render::Renderer renderer;
-  const Mesh grid = build_mesh(test::grid(2, 1));
-  render::MeshBuffers buffers(render::build_display_data(grid));
-  const render::Framebuffer framebuffer(160, 120);
-  framebuffer.bind();
-  render::Camera camera;
-  camera.set_view(0, 0);
-  camera.fit(grid.positions(), 160.0 / 120.0);
-  const auto frame = render::Renderer::Frame::of(camera, {0, 0}, {160, 120});
+  GridView view;
+  const render::Renderer& renderer = view.renderer;
+  render::MeshBuffers& buffers = view.buffers;
+  const render::Framebuffer& framebuffer = view.framebuffer;
+  const auto& frame = view.frame;
   const render::DisplaySettings settings;
   auto draw = [&] {
     renderer.begin(frame, settings.background);
@@ -151,16 +164,11 @@ TEST_CASE("vertex markers are sized by the local edge length", "[render]") {
 TEST_CASE("the mesh shader compiles and draws for every set of features", "[render]") {
   // Each set of features is its own program (shaders/mesh.frag): a combination the others never use
   // must compile too.
-  const render::OffscreenContext context;
-  const render::Renderer renderer;
-  const Mesh grid = build_mesh(test::grid(2, 1));
-  render::MeshBuffers buffers(render::build_display_data(grid));
-  const render::Framebuffer framebuffer(160, 120);
-  framebuffer.bind();
-  render::Camera camera;
-  camera.set_view(0, 0);
-  camera.fit(grid.positions(), 160.0 / 120.0);
-  const auto frame = render::Renderer::Frame::of(camera, {0, 0}, {160, 120});
+  GridView view;
+  const render::Renderer& renderer = view.renderer;
+  render::MeshBuffers& buffers = view.buffers;
+  const render::Framebuffer& framebuffer = view.framebuffer;
+  const auto& frame = view.frame;
   const std::array<std::uint8_t, 4> plain{0, 0, 0, 0}, red{255, 0, 0, 255};
   for (unsigned features = 0; features < 32; ++features) {
     INFO("features " << features);
