@@ -100,10 +100,8 @@ class GridWalk {
   // face has a fixed size, so its loops unroll; a cap's has the ring's.
   template <std::size_t N>
   bool add_face(const std::array<Index, N>& vertices, const std::array<Slot*, N>& slots) {
-    if (face_ >= faces_ || face_offsets_[face_ + 1] - face_offsets_[face_] != N) return false;
-    const Index first = face_offsets_[face_];
-    for (std::size_t t = 0; t < N; ++t)
-      if (corner_vertices_[first + t] != vertices[t]) return false;
+    const Index first = next_face_first_corner(std::span<const Index, N>(vertices));
+    if (first == no_index) return false;
     [&]<std::size_t... t>(std::index_sequence<t...>) {
       (take_edge(first + Index(t), vertices[t], vertices[(t + 1) % N], *slots[t]), ...);
     }
@@ -112,15 +110,22 @@ class GridWalk {
     return true;
   }
   bool add_face(std::span<const Index> vertices, std::span<Slot* const> slots) {
-    const Index degree = Index(vertices.size());
-    if (face_ >= faces_ || face_offsets_[face_ + 1] - face_offsets_[face_] != degree) return false;
-    const Index first = face_offsets_[face_];
-    for (Index t = 0; t < degree; ++t)
-      if (corner_vertices_[first + t] != vertices[t]) return false;
+    const Index first = next_face_first_corner(vertices), degree = Index(vertices.size());
+    if (first == no_index) return false;
     for (Index t = 0; t < degree; ++t)
       take_edge(first + t, vertices[t], vertices[t + 1 == degree ? 0 : t + 1], *slots[t]);
     ++face_;
     return true;
+  }
+  // The next face's first corner if that face has these vertices, else no_index.
+  template <std::size_t Extent>
+  Index next_face_first_corner(std::span<const Index, Extent> vertices) const {
+    if (face_ >= faces_ || face_offsets_[face_ + 1] - face_offsets_[face_] != vertices.size())
+      return no_index;
+    const Index first = face_offsets_[face_];
+    for (std::size_t t = 0; t < vertices.size(); ++t)
+      if (corner_vertices_[first + t] != vertices[t]) return no_index;
+    return first;
   }
   // Corner c (from -> to) of the current face takes its slot's edge, a new one if the slot is empty.
   void take_edge(Index c, Index from, Index to, Slot& slot) {
