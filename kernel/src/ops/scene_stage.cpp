@@ -112,7 +112,7 @@ std::optional<GluedFaces> split_touching_vertices(const PipelineInput& input,
 }  // namespace
 
 bool SceneStage::faces_match(const Buffer<Index>& face_offsets, const Buffer<Index>& face_vertices) const {
-  if (vertex_sources_.empty() && input_face_offsets_.empty())
+  if (input_face_offsets_.empty())  // no copy kept: the mesh was built from the input's faces as they were
     return face_offsets == mesh_.face_offsets() && face_vertices == mesh_.corner_vertices();
   return face_offsets == input_face_offsets_ && face_vertices == input_face_vertices_;
 }
