@@ -104,10 +104,7 @@ TEST_CASE("a transparent background keeps the surface opaque", "[render]") {
 
 TEST_CASE("selection tint, thick lines and cube markers for the viewer", "[render]") {
   GridView view;
-  const render::Renderer& renderer = view.renderer;
-  render::MeshBuffers& buffers = view.buffers;
-  const render::Framebuffer& framebuffer = view.framebuffer;
-  const auto& frame = view.frame;
+  auto& [context, renderer, grid, buffers, framebuffer, frame] = view;
   const render::DisplaySettings settings;
   auto draw = [&] {
     renderer.begin(frame, settings.background);
@@ -165,10 +162,7 @@ TEST_CASE("the mesh shader compiles and draws for every set of features", "[rend
   // Each set of features is its own program (shaders/mesh.frag): a combination the others never use
   // must compile too.
   GridView view;
-  const render::Renderer& renderer = view.renderer;
-  render::MeshBuffers& buffers = view.buffers;
-  const render::Framebuffer& framebuffer = view.framebuffer;
-  const auto& frame = view.frame;
+  auto& [context, renderer, grid, buffers, framebuffer, frame] = view;
   const std::array<std::uint8_t, 4> plain{0, 0, 0, 0}, red{255, 0, 0, 255};
   for (unsigned features = 0; features < 32; ++features) {
     INFO("features " << features);
