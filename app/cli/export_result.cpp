@@ -22,6 +22,17 @@ ExportCounts write_result(LoadedInput& loaded, const std::filesystem::path& path
   if (streams_last_level(path, format)) {
     // An OBJ keeps the sharp edges as tags, which only a Mesh has.
     const PipelineSurface surface = loaded.pipeline.run_surface(loaded.settings, ext == ".obj");
+    print_warnings(loaded.pipeline.warnings());
+    if (surface.polygons) {
+      const PolygonSoup& solid = *surface.polygons;
+      if (ext == ".obj")
+        write_obj(path, solid);
+      else
+        write_stl(path, solid, format.stl, progress);
+      // Each polygon is a fan of its corner count less two triangles.
+      return {solid.num_vertices(), solid.num_faces(),
+              solid.face_vertices.size() - 2 * std::uint64_t(solid.num_faces())};
+    }
     if (surface.quads) {
       const QuadSurface& quads = *surface.quads;
       if (ext == ".obj")

@@ -23,6 +23,7 @@ int info_command(const std::vector<std::string>& args) {
   }
   LoadedInput loaded = run_input(parsed, Stage::subdivided_offset, {}, false);
   const LastSubdivision last = loaded.pipeline.run_to_last_subdivision(loaded.settings);
+  print_warnings(loaded.pipeline.warnings());  // those of a last stage run_input left (an offset)
   const TopologyReport report =
       last.levels > 0 ? subdivided_topology_report(*last.input, last.levels) : topology_report(*last.input);
   const std::vector<scene::Scene>& scenes = loaded.scenes;

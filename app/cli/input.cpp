@@ -8,9 +8,7 @@
 #include "nome/ops/pipeline.hpp"
 
 namespace nome::cli {
-namespace {
 
-// Merge warnings can be many (one per skipped pair): the first few, then a count.
 void print_warnings(const std::vector<std::string>& warnings) {
   constexpr size_t max_merge_warnings = 10;
   size_t merge_warnings = 0;
@@ -22,8 +20,6 @@ void print_warnings(const std::vector<std::string>& warnings) {
   if (merge_warnings > max_merge_warnings)
     std::cerr << "nome: warning: merge: " << merge_warnings - max_merge_warnings << " more merges skipped\n";
 }
-
-}  // namespace
 
 std::vector<OptionSpec> input_options() {
   std::vector<OptionSpec> options = {
@@ -64,7 +60,7 @@ LoadedInput run_input(const Arguments& args, Stage last, const Progress& progres
     if (builds_last_level)
       loaded.pipeline.run(loaded.settings);
     else
-      loaded.pipeline.run_to_last_subdivision(loaded.settings);
+      loaded.pipeline.run_before_surface(loaded.settings);
   } catch (const BudgetError& e) {
     throw BudgetError(std::string(e.what()) + "; use --force to compute it anyway");
   }

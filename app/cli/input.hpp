@@ -28,9 +28,14 @@ struct LoadedInput {
   ObjSubdivisionTags kept_tags;
 };
 
+// Prints a pipeline's warnings; merge warnings can be many (one per skipped pair): the first few, then a
+// count.
+void print_warnings(const std::vector<std::string>& warnings);
+
 // Reads the FILE arguments and runs the pipeline up to `last`, printing its warnings; its stages report
 // to `progress` (also in later runs of the returned pipeline). Unless `builds_last_level`, a last stage
-// that is a subdivision is left to the caller (Pipeline::run_surface, run_to_last_subdivision).
+// that a writer can stream (a subdivision or an offset) is left to the caller (Pipeline::run_surface,
+// run_to_last_subdivision).
 LoadedInput run_input(const Arguments& args, Stage last, const Progress& progress = {},
                       bool builds_last_level = true);
 

@@ -26,7 +26,8 @@ PipelineSettings streamed_settings(int levels, double distance = 0.0, int after 
   return s;
 }
 
-// Writes `ext` once from the pipeline's Mesh and once from its quads (a pipeline each) and returns both.
+// Writes `ext` once from the pipeline's Mesh and once from run_surface's quads or polygons (a pipeline
+// each) and returns both.
 std::pair<std::string, std::string> both_ways(const Mesh& mesh, const PipelineSettings& s,
                                               const std::string& ext, StlFormat format = StlFormat::binary) {
   const fs::path from_mesh = test::scratch_path("nome_streamed_tests", "mesh" + ext),
@@ -39,11 +40,16 @@ std::pair<std::string, std::string> both_ways(const Mesh& mesh, const PipelineSe
   Pipeline streamed;
   streamed.set_input(mesh);
   const PipelineSurface surface = streamed.run_surface(s, ext == ".obj");
-  REQUIRE(surface.quads);
-  if (ext == ".obj")
+  REQUIRE(bool(surface.quads) != bool(surface.polygons));
+  CHECK_FALSE(surface.mesh);
+  if (surface.quads && ext == ".obj")
     write_obj(from_quads, *surface.quads);
-  else
+  else if (surface.quads)
     write_stl(from_quads, *surface.quads, format);
+  else if (ext == ".obj")
+    write_obj(from_quads, *surface.polygons);
+  else
+    write_stl(from_quads, *surface.polygons, format);
   return {test::file_bytes(from_mesh), test::file_bytes(from_quads)};
 }
 
@@ -106,8 +112,38 @@ TEST_CASE("run_surface gives the Mesh where the quads cannot stand for it", "[io
   pipeline.set_input(band);
   CHECK_FALSE(pipeline.run_surface(streamed_settings(2), true).quads);
   CHECK(pipeline.run_surface(streamed_settings(2), false).quads);
-  // No subdivision last: the offset's Mesh.
-  const PipelineSurface offset = pipeline.run_surface(streamed_settings(1, 0.05));
+  // The offset last: its polygons, unless an OBJ would tag the sharp edges its Mesh copies.
+  const PipelineSurface offset = pipeline.run_surface(streamed_settings(0, 0.05));
   CHECK_FALSE(offset.quads);
-  CHECK(offset.mesh);
+  CHECK_FALSE(offset.mesh);
+  REQUIRE(offset.polygons);
+  CHECK(offset.polygons->num_faces() == pipeline.run(streamed_settings(0, 0.05)).num_faces());
+  const PipelineSurface tagged = pipeline.run_surface(streamed_settings(0, 0.05), true);
+  CHECK_FALSE(tagged.polygons);
+  REQUIRE(tagged.mesh);
+  CHECK(tagged.mesh->edge(0).is_sharp);
+}
+
+TEST_CASE("STL and OBJ of the offset from its polygons are the bytes of its Mesh's", "[io]") {
+  const Mesh torus = build_mesh(test::torus(8, 4));
+  const Mesh band = build_mesh(test::mobius_band(12, 2));
+  // Triangles and a pentagon: the polygons' own corner layout, not the quads'.
+  PolygonSoup mixed;
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1.5, 1, 0), Vec3(0.5, 1.6, 0), Vec3(-0.5, 1, 0),
+                        Vec3(0.5, -1, 0.2)})
+    mixed.add_vertex(p);
+  mixed.add_face({0, 1, 2, 3, 4});
+  mixed.add_face({1, 0, 5});
+  for (const Mesh& mesh : {torus, band, build_mesh(mixed)})
+    for (int levels : {0, 1}) {
+      CAPTURE(mesh.num_faces(), levels);
+      for (const char* ext : {".stl", ".obj"}) {
+        const auto [expected, streamed] = both_ways(mesh, streamed_settings(levels, 0.05), ext);
+        CHECK(expected.size() > 84);
+        CHECK(expected == streamed);
+      }
+      const auto [ascii, streamed_ascii] =
+          both_ways(mesh, streamed_settings(levels, 0.05), ".stl", StlFormat::ascii);
+      CHECK(ascii == streamed_ascii);
+    }
 }

@@ -1,6 +1,7 @@
 #include <charconv>
 #include <ostream>
 
+#include "io/surface_views.hpp"
 #include "nome/atomic_file.hpp"
 #include "nome/io/obj.hpp"
 
@@ -19,7 +20,7 @@ char* put_index(char* at, Index value) {
   return std::to_chars(at, at + 16, value).ptr;
 }
 
-// Any surface with num_vertices(), num_faces(), face_vertices(f) and position(v): a Mesh or a QuadSurface.
+// Any surface with num_vertices(), num_faces(), face_vertices(f) and position(v) (surface_views.hpp).
 template <class Surface>
 void write_obj_surface(FileBlocks& file, const Surface& surface) {
   std::ostream(&file) << "# written by nome: " << surface.num_vertices() << " vertices, "
@@ -54,7 +55,7 @@ void write_obj_surface(FileBlocks& file, const Surface& surface) {
 
 void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSubdivisionTags& tags) {
   write_file_in_blocks(path, [&](FileBlocks& file) {
-    write_obj_surface(file, mesh);
+    write_obj_surface(file, MeshSurface(mesh));
     std::ostream out(&file);
     write_obj_tags(out, mesh, tags);
   });
@@ -62,6 +63,10 @@ void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSub
 
 void write_obj(const std::filesystem::path& path, const QuadSurface& surface) {
   write_file_in_blocks(path, [&](FileBlocks& file) { write_obj_surface(file, surface); });
+}
+
+void write_obj(const std::filesystem::path& path, const PolygonSoup& soup) {
+  write_file_in_blocks(path, [&](FileBlocks& file) { write_obj_surface(file, SoupSurface(soup)); });
 }
 
 }  // namespace nome

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "io/surface_views.hpp"
 #include "nome/atomic_file.hpp"
 #include "nome/mesh/normals.hpp"
 
@@ -37,7 +38,7 @@ void put_ascii_facet(std::ostream& out, const Vec3& n, const Vec3* const (&corne
   out << "    endloop\n  endfacet\n";
 }
 
-// Any surface with num_faces(), face_vertices(f), position(v) and positions: a Mesh or a QuadSurface.
+// Any surface with num_faces(), face_vertices(f), position(v) and positions (surface_views.hpp).
 // Binary records go straight into the file's blocks; ASCII goes through a stream over them.
 template <class Surface>
 void write_stl_surface(FileBlocks& file, const Surface& surface, StlFormat format, const Progress& progress) {
@@ -78,22 +79,19 @@ void write_stl_surface(FileBlocks& file, const Surface& surface, StlFormat forma
 
 void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat format,
                const Progress& progress) {
-  write_file_in_blocks(path, [&](FileBlocks& out) {
-    struct MeshSurface {
-      const Mesh& mesh;
-      std::span<const Vec3> positions;
-      Index num_faces() const { return mesh.num_faces(); }
-      Index face_degree(Index f) const { return mesh.face_degree(f); }
-      std::span<const Index> face_vertices(Index f) const { return mesh.face_vertices(f); }
-      const Vec3& position(Index v) const { return positions[v]; }
-    };
-    write_stl_surface(out, MeshSurface{mesh, mesh.positions()}, format, progress);
-  });
+  write_file_in_blocks(path,
+                       [&](FileBlocks& out) { write_stl_surface(out, MeshSurface(mesh), format, progress); });
 }
 
 void write_stl(const std::filesystem::path& path, const QuadSurface& surface, StlFormat format,
                const Progress& progress) {
   write_file_in_blocks(path, [&](FileBlocks& out) { write_stl_surface(out, surface, format, progress); });
+}
+
+void write_stl(const std::filesystem::path& path, const PolygonSoup& soup, StlFormat format,
+               const Progress& progress) {
+  write_file_in_blocks(path,
+                       [&](FileBlocks& out) { write_stl_surface(out, SoupSurface(soup), format, progress); });
 }
 
 }  // namespace nome

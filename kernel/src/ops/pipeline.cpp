@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "nome/error.hpp"
+#include "nome/mesh/normals.hpp"
+#include "nome/ops/offset.hpp"
 #include "ops/merge_stage.hpp"
 #include "ops/scene_stage.hpp"
 #include "ops/solid_stages.hpp"
@@ -127,6 +129,25 @@ const Mesh& Pipeline::run(const PipelineSettings& s, const PipelineSettings& bud
   return *result_;
 }
 
+namespace {
+
+bool has_sharp_edge(const Mesh& mesh) {
+  if (mesh.has_sharpness_weights()) return true;
+  return std::any_of(mesh.edges().begin(), mesh.edges().end(), [](const Edge& e) { return e.is_sharp; });
+}
+
+bool is_offset_last(const PipelineSettings& s) {
+  return s.distance() > 0 && s.levels_after() == 0;
+}
+
+// The settings of the stages before the offset.
+PipelineSettings before_offset(PipelineSettings s) {
+  s.stage = Stage::subdivided;
+  return s;
+}
+
+}  // namespace
+
 LastSubdivision Pipeline::run_to_last_subdivision(const PipelineSettings& s, bool needs_creases) {
   const bool is_after_offset = s.levels_after() > 0;
   const int levels = is_after_offset ? s.levels_after() : s.distance() > 0 ? 0 : s.levels_before();
@@ -134,24 +155,44 @@ LastSubdivision Pipeline::run_to_last_subdivision(const PipelineSettings& s, boo
   PipelineSettings before = s;
   (is_after_offset ? before.subdivision_after : before.subdivision_levels) = 0;
   const Mesh& input = run(before, s, true);
-  bool has_sharp_edge = input.has_sharpness_weights();
-  for (const Edge& e : input.edges()) has_sharp_edge = has_sharp_edge || e.is_sharp;
   // Holes and BoundaryMode::none drop faces and renumber vertices: only the Mesh has that.
   const bool drops_faces =
       input.has_holes() || (s.boundary == BoundaryMode::none && input.num_boundary_loops() > 0);
-  if (drops_faces || (needs_creases && has_sharp_edge)) return {&run(s), 0};
+  if (drops_faces || (needs_creases && has_sharp_edge(input))) return {&run(s), 0};
   return {&input, levels};
 }
 
+void Pipeline::run_before_surface(const PipelineSettings& s, bool needs_creases) {
+  if (is_offset_last(s))
+    run(before_offset(s), s, false);
+  else
+    run_to_last_subdivision(s, needs_creases);
+}
+
+PipelineSurface Pipeline::run_offset_polygons(const PipelineSettings& s, bool needs_creases) {
+  const Mesh& input = run(before_offset(s), s, false);
+  // The offset's edges copy the input's sharp marks: only its Mesh carries them.
+  if (needs_creases && has_sharp_edge(input)) return {&run(s), std::nullopt, std::nullopt};
+  progress_("offset", 0.0);
+  Normals normals;
+  compute_normals(input, normals, s.threads);
+  if (std::string warning = degeneracy_warning(input, normals); !warning.empty())
+    warnings_.push_back("offset: " + warning);
+  PipelineSurface surface{nullptr, std::nullopt, offset_polygons(input, normals, s.distance())};
+  progress_("offset", 1.0);
+  return surface;
+}
+
 PipelineSurface Pipeline::run_surface(const PipelineSettings& s, bool needs_creases) {
+  if (is_offset_last(s)) return run_offset_polygons(s, needs_creases);
   const LastSubdivision last = run_to_last_subdivision(s, needs_creases);
-  if (last.levels == 0) return {last.input, std::nullopt};
+  if (last.levels == 0) return {last.input, std::nullopt, std::nullopt};
   progress_("subdivision", 0.0);
   last_level_.emplace(*last.input, last.levels, s.boundary, s.threads, s.creases);
   progress_("subdivision", 0.5);
   const std::span<const Vec3> positions = last_level_->refine_positions(*last.input, s.rule, s.threads);
   progress_("subdivision", 1.0);
-  return {nullptr, QuadSurface{positions, last_level_->quad_vertices()}};
+  return {nullptr, QuadSurface{positions, last_level_->quad_vertices()}, std::nullopt};
 }
 
 Mesh Pipeline::take_result() {

@@ -22,5 +22,8 @@ void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSub
 // The same bytes from the last level of a subdivision, without its Mesh (Pipeline::run_quads with
 // creases: the surface's mesh would have no tags to write).
 void write_obj(const std::filesystem::path& path, const QuadSurface& surface);
+// The same bytes from positions and polygons (the offset as Pipeline::run_surface gives it, when the
+// surface under it has no sharp edges to tag).
+void write_obj(const std::filesystem::path& path, const PolygonSoup& soup);
 
 }  // namespace nome

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/mesh/polygon_soup.hpp"
 #include "nome/mesh/quad_surface.hpp"
 #include "nome/ops/merge.hpp"
 #include "nome/ops/pipeline_input.hpp"
@@ -44,11 +45,12 @@ struct LastSubdivision {
   int levels = 0;
 };
 
-// The result of Pipeline::run_surface: the last subdivision's quads, or the Mesh when they cannot stand
-// for it.
+// The result of Pipeline::run_surface: the last subdivision's quads, the offset solid's positions and
+// polygons, or the Mesh when neither can stand for it.
 struct PipelineSurface {
   const Mesh* mesh = nullptr;
   std::optional<QuadSurface> quads;
+  std::optional<PolygonSoup> polygons;
 };
 
 class SceneStage;
@@ -87,9 +89,13 @@ class Pipeline {
   // run with that level as quads. `needs_creases`: the caller reads the result's sharp edges, so a last
   // level that would have some is run as a Mesh.
   LastSubdivision run_to_last_subdivision(const PipelineSettings& settings, bool needs_creases = false);
-  // The result of run() for a writer: the last subdivision level as positions and quads straight from its
-  // Refinement (the same positions and quads in the same order as run()'s Mesh, at about a fifth of the
-  // memory), or run()'s Mesh when the last stage is not such a subdivision. Valid until the next run.
+  // Runs the stages run_surface(settings, needs_creases) reuses, all but the one it may stream, so that a
+  // caller can report their warnings and budget errors before writing.
+  void run_before_surface(const PipelineSettings& settings, bool needs_creases = false);
+  // The result of run() for a writer, with the same positions and polygons in the same order as run()'s
+  // Mesh: the last subdivision level as quads straight from its Refinement (about a fifth of the memory);
+  // an offset with no levels after it as offset_polygons (about a fifth, no edges or fans); otherwise
+  // run()'s Mesh. Valid until the next run. `needs_creases` as for run_to_last_subdivision.
   PipelineSurface run_surface(const PipelineSettings& settings, bool needs_creases = false);
   // Moves the last result out (for a one-shot caller such as the command line); the caches start over.
   Mesh take_result();
@@ -109,6 +115,8 @@ class Pipeline {
   // run(), with the budget checked for `budgeted` (the last level as quads when `streams_last_level`).
   const Mesh& run(const PipelineSettings& settings, const PipelineSettings& budgeted,
                   bool streams_last_level);
+  // run_surface's offset: the stages before it as Meshes, the offset as polygons.
+  PipelineSurface run_offset_polygons(const PipelineSettings& settings, bool needs_creases);
 
   std::unique_ptr<SceneStage> scene_;
   std::unique_ptr<MergeStage> merged_;
