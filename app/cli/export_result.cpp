@@ -23,23 +23,23 @@ ExportCounts write_result(LoadedInput& loaded, const std::filesystem::path& path
     // An OBJ keeps the sharp edges as tags, which only a Mesh has.
     const PipelineSurface surface = loaded.pipeline.run_surface(loaded.settings, ext == ".obj");
     print_warnings(loaded.pipeline.warnings());
+    auto write = [&](const auto& streamed) {
+      if (ext == ".obj")
+        write_obj(path, streamed);
+      else
+        write_stl(path, streamed, format.stl, progress);
+    };
     if (surface.polygons) {
       const PolygonSoup& solid = *surface.polygons;
-      if (ext == ".obj")
-        write_obj(path, solid);
-      else
-        write_stl(path, solid, format.stl, progress);
+      write(solid);
       // Each polygon is a fan of its corner count less two triangles.
       return {solid.num_vertices(), solid.num_faces(),
               solid.face_vertices.size() - 2 * std::uint64_t(solid.num_faces())};
     }
     if (surface.quads) {
-      const QuadSurface& quads = *surface.quads;
-      if (ext == ".obj")
-        write_obj(path, quads);
-      else
-        write_stl(path, quads, format.stl, progress);
-      return {quads.num_vertices(), quads.num_faces(), 2 * std::uint64_t(quads.num_faces())};
+      write(*surface.quads);
+      return {surface.quads->num_vertices(), surface.quads->num_faces(),
+              2 * std::uint64_t(surface.quads->num_faces())};
     }
   }
   const Mesh& result = loaded.pipeline.run(loaded.settings);
