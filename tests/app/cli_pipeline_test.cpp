@@ -47,6 +47,26 @@ TEST_CASE("nome info reports the pipeline's result", "[app]") {
              Catch::Contains("\"chi\": 0, \"orientable\": true, \"borders\": 0, \"components\": 1"));
 }
 
+TEST_CASE("nome info of an offset counts on the surface under it: the exported solid's report", "[app]") {
+  const std::string dir = nome::test::scratch_dir("offset_info");
+  for (const char* shape : {"mobius_band.obj", "torus.obj", "grid.obj", "klein_bottle.obj"}) {
+    CAPTURE(shape);
+    const std::string options = " --subdiv 1 --offset 0.02";
+    const auto derived = run_nome("info " + assets + shape + options + " --json");
+    REQUIRE(derived.status == 0);
+    const std::string said = ", \"derived_over_offset\": true";
+    REQUIRE(derived.out.find(said) != std::string::npos);
+    REQUIRE(run_nome("export " + assets + shape + options + " -o " + dir + "/solid.obj").status == 0);
+    const auto counted = run_nome("info " + dir + "/solid.obj --json");
+    REQUIRE(counted.status == 0);
+    std::string expected = derived.out;
+    expected.erase(expected.find(said), said.size());
+    CHECK(counted.out == expected);
+  }
+  CHECK_THAT(run_nome("info " + assets + "torus.obj --offset 0.02").out,
+             Catch::Contains("counted on the surface under the offset"));
+}
+
 TEST_CASE("nome info --boundary none leaves out the faces at the border, edge-and-corner keeps them",
           "[app]") {
   // The 4x4 grid: its inner 2x2 faces have no border vertex; one level makes each four.

@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "nome/error.hpp"
-#include "nome/mesh/normals.hpp"
 #include "nome/ops/offset.hpp"
 #include "ops/merge_stage.hpp"
 #include "ops/scene_stage.hpp"
@@ -136,16 +135,6 @@ bool has_sharp_edge(const Mesh& mesh) {
   return std::any_of(mesh.edges().begin(), mesh.edges().end(), [](const Edge& e) { return e.is_sharp; });
 }
 
-bool is_offset_last(const PipelineSettings& s) {
-  return s.distance() > 0 && s.levels_after() == 0;
-}
-
-// The settings of the stages before the offset.
-PipelineSettings before_offset(PipelineSettings s) {
-  s.stage = Stage::subdivided;
-  return s;
-}
-
 }  // namespace
 
 LastSubdivision Pipeline::run_to_last_subdivision(const PipelineSettings& s, bool needs_creases) {
@@ -162,29 +151,38 @@ LastSubdivision Pipeline::run_to_last_subdivision(const PipelineSettings& s, boo
   return {&input, levels};
 }
 
-void Pipeline::run_before_surface(const PipelineSettings& s, bool needs_creases) {
-  if (is_offset_last(s))
-    run(before_offset(s), s, false);
-  else
-    run_to_last_subdivision(s, needs_creases);
+const Mesh* Pipeline::run_to_last_offset(const PipelineSettings& s) {
+  if (!(s.distance() > 0 && s.levels_after() == 0)) return nullptr;
+  PipelineSettings before = s;
+  before.stage = Stage::subdivided;
+  return &run(before, s, false);
 }
 
-PipelineSurface Pipeline::run_offset_polygons(const PipelineSettings& s, bool needs_creases) {
-  const Mesh& input = run(before_offset(s), s, false);
+Normals Pipeline::offset_normals(const Mesh& input, int threads) {
+  Normals normals;
+  compute_normals(input, normals, threads);
+  if (std::string warning = degeneracy_warning(input, normals); !warning.empty())
+    warnings_.push_back("offset: " + warning);
+  return normals;
+}
+
+void Pipeline::run_before_surface(const PipelineSettings& s, bool needs_creases) {
+  if (!run_to_last_offset(s)) run_to_last_subdivision(s, needs_creases);
+}
+
+PipelineSurface Pipeline::run_offset_polygons(const Mesh& input, const PipelineSettings& s,
+                                              bool needs_creases) {
   // The offset's edges copy the input's sharp marks: only its Mesh carries them.
   if (needs_creases && has_sharp_edge(input)) return {&run(s), std::nullopt, std::nullopt};
   progress_("offset", 0.0);
-  Normals normals;
-  compute_normals(input, normals, s.threads);
-  if (std::string warning = degeneracy_warning(input, normals); !warning.empty())
-    warnings_.push_back("offset: " + warning);
-  PipelineSurface surface{nullptr, std::nullopt, offset_polygons(input, normals, s.distance())};
+  PipelineSurface surface{nullptr, std::nullopt,
+                          offset_polygons(input, offset_normals(input, s.threads), s.distance())};
   progress_("offset", 1.0);
   return surface;
 }
 
 PipelineSurface Pipeline::run_surface(const PipelineSettings& s, bool needs_creases) {
-  if (is_offset_last(s)) return run_offset_polygons(s, needs_creases);
+  if (const Mesh* input = run_to_last_offset(s)) return run_offset_polygons(*input, s, needs_creases);
   const LastSubdivision last = run_to_last_subdivision(s, needs_creases);
   if (last.levels == 0) return {last.input, std::nullopt, std::nullopt};
   progress_("subdivision", 0.0);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/mesh/normals.hpp"
 #include "nome/mesh/polygon_soup.hpp"
 #include "nome/mesh/quad_surface.hpp"
 #include "nome/ops/merge.hpp"
@@ -89,6 +90,12 @@ class Pipeline {
   // run with that level as quads. `needs_creases`: the caller reads the result's sharp edges, so a last
   // level that would have some is run as a Mesh.
   LastSubdivision run_to_last_subdivision(const PipelineSettings& settings, bool needs_creases = false);
+  // When the settings' last stage is an offset with no levels after it: runs the stages before it and
+  // returns the offset's input (valid until the next run); otherwise runs nothing and returns null.
+  const Mesh* run_to_last_offset(const PipelineSettings& settings);
+  // The normals the offset of `input` (run_to_last_offset's) moves its vertices along, computed on up to
+  // `threads` threads; a warning naming its degenerate faces and vertices joins warnings().
+  Normals offset_normals(const Mesh& input, int threads);
   // Runs the stages run_surface(settings, needs_creases) reuses, all but the one it may stream, so that a
   // caller can report their warnings and budget errors before writing.
   void run_before_surface(const PipelineSettings& settings, bool needs_creases = false);
@@ -115,8 +122,9 @@ class Pipeline {
   // run(), with the budget checked for `budgeted` (the last level as quads when `streams_last_level`).
   const Mesh& run(const PipelineSettings& settings, const PipelineSettings& budgeted,
                   bool streams_last_level);
-  // run_surface's offset: the stages before it as Meshes, the offset as polygons.
-  PipelineSurface run_offset_polygons(const PipelineSettings& settings, bool needs_creases);
+  // run_surface's offset of `input` (run_to_last_offset's) as polygons.
+  PipelineSurface run_offset_polygons(const Mesh& input, const PipelineSettings& settings,
+                                      bool needs_creases);
 
   std::unique_ptr<SceneStage> scene_;
   std::unique_ptr<MergeStage> merged_;
