@@ -6,34 +6,11 @@
 #include "nome/mesh/topology_report.hpp"
 #include "support/brute_force_topology.hpp"
 #include "support/random_manifold.hpp"
+#include "support/same_report.hpp"
 
 using namespace nome;
 
 namespace {
-
-void check_same_report(const TopologyReport& kernel, const TopologyReport& brute) {
-  CHECK(kernel.vertices == brute.vertices);
-  CHECK(kernel.edges == brute.edges);
-  CHECK(kernel.faces == brute.faces);
-  CHECK(kernel.chi == brute.chi);
-  CHECK(kernel.orientable == brute.orientable);
-  CHECK(kernel.borders == brute.borders);
-  CHECK(kernel.mobius_edges == brute.mobius_edges);
-  CHECK(kernel.isolated_vertices == brute.isolated_vertices);
-  REQUIRE(kernel.components.size() == brute.components.size());
-  for (size_t i = 0; i < kernel.components.size(); ++i) {
-    const ComponentTopology &k = kernel.components[i], &b = brute.components[i];
-    INFO("part " << i);
-    CHECK(k.vertices == b.vertices);
-    CHECK(k.edges == b.edges);
-    CHECK(k.faces == b.faces);
-    CHECK(k.chi == b.chi);
-    CHECK(k.orientable == b.orientable);
-    CHECK(k.borders == b.borders);
-    CHECK(k.genus == b.genus);
-    CHECK(k.mobius_edges == b.mobius_edges);
-  }
-}
 
 // One random manifold: the brute-force routine agrees with how it was glued, the kernel agrees with
 // the brute-force routine.
@@ -57,7 +34,7 @@ void check_random_manifold(unsigned i, const test::RandomManifoldOptions& option
     CHECK(b.orientable == e.orientable);
     CHECK(b.borders == e.borders);
   }
-  check_same_report(topology_report(build_mesh(m.soup)), brute.report);
+  test::check_same_report(topology_report(build_mesh(m.soup)), brute.report);
 }
 
 // One random corruption of a random manifold (two vertices pinched into one, a face added on random
@@ -97,7 +74,7 @@ void check_corrupted_manifold(unsigned i, const test::RandomManifoldOptions& opt
   const test::BruteForceTopology brute = test::brute_force_topology(soup);
   INFO(brute.problem);
   if (brute.is_manifold) {
-    check_same_report(topology_report(build_mesh(soup)), brute.report);
+    test::check_same_report(topology_report(build_mesh(soup)), brute.report);
   } else {
     CHECK_THROWS_AS(build_mesh(soup), TopologyError);
   }
