@@ -124,8 +124,19 @@ NOME_AVX2 void faces(const LevelPass& pass, Index first, Index last) {
   }
 }
 
+// ReadyCorners, or every corner when `is_all_ready`: the tiles of the thread that starts at the first base
+// face, where each face point an edge or a vertex reads was written by an earlier or the same tile (an edge
+// or vertex goes with the last tile around it). The checks cost a tenth of the steps.
+template <bool is_all_ready>
+struct Ready {
+  ReadyCorners corners;
+  bool has(Index c) const { return is_all_ready || corners.has(c); }
+};
+
 // ChildPass::edge on an edge that is not a crease; `out` is where its vertex point goes.
-NOME_AVX2 inline void smooth_edge(const Arrays& a, Index e, ReadyCorners ready, Vec3& out, bool is_followed) {
+template <bool is_all_ready>
+NOME_AVX2 inline void smooth_edge(const Arrays& a, Index e, Ready<is_all_ready> ready, Vec3& out,
+                                  bool is_followed) {
   const Index ca = a.edge_corners[e][0], cb = a.edge_corners[e][1];
   const Index na = next(ca), nb = next(cb);
   const V here = load(a.edge_points[e]), a0 = a.vertex_point(ca), a1 = a.vertex_point(na);
@@ -151,21 +162,30 @@ NOME_AVX2 inline void smooth_edge(const Arrays& a, Index e, ReadyCorners ready, 
 }
 
 // Crease edges take the baseline step.
-NOME_AVX2 void edges(const LevelPass& pass, Index first, Index last, ReadyCorners ready) {
+template <bool is_all_ready>
+NOME_AVX2 void edge_range(const LevelPass& pass, Index first, Index last, ReadyCorners ready) {
   const Arrays a(pass);
   Vec3* out = a.out_vertex_points + pass.nf;
   for (Index e = first; e < last; ++e) {
     if (a.has_creases && (a.edge_flags[e] & (sharp_flag | boundary_flag)))
       pass.edge(e, ready);
     else
-      smooth_edge(a, e, ready, out[e], e + 1 < last);
+      smooth_edge(a, e, Ready<is_all_ready>{ready}, out[e], e + 1 < last);
   }
+}
+
+NOME_AVX2 void edges(const LevelPass& pass, Index first, Index last, ReadyCorners ready) {
+  if (ready.begin == 0)
+    edge_range<true>(pass, first, last, ready);
+  else
+    edge_range<false>(pass, first, last, ready);
 }
 
 // ChildPass::vertex_point at a vertex of fan corners [begin, end) and `n` edges that is neither fixed nor on
 // a crease.
+template <bool is_all_ready>
 NOME_AVX2 inline V smooth_vertex(const Arrays& a, Index v, Index begin, Index end, Index n,
-                                 ReadyCorners ready) {
+                                 Ready<is_all_ready> ready) {
   const V here = load(a.vertex_points[v]);
   V face_sum = _mm256_setzero_pd(), edge_sum = _mm256_setzero_pd();
   for (Index i = begin; i < end; ++i) {
@@ -178,8 +198,9 @@ NOME_AVX2 inline V smooth_vertex(const Arrays& a, Index v, Index begin, Index en
 }
 
 // Fixed and crease vertices take the baseline step.
-NOME_AVX2 void vertices(const LevelPass& pass, Index first, Index last, VertexRules rules,
-                        ReadyCorners ready) {
+template <bool is_all_ready>
+NOME_AVX2 void vertex_range(const LevelPass& pass, Index first, Index last, VertexRules rules,
+                            ReadyCorners ready) {
   const Arrays a(pass);
   Vec3* out = a.out_vertex_points + pass.nf + pass.ne;
   for (Index v = first; v < last; ++v) {
@@ -192,8 +213,17 @@ NOME_AVX2 void vertices(const LevelPass& pass, Index first, Index last, VertexRu
     if (sharp_count == 2 || rules.is_fixed(edges, corners_end - corners_begin, sharp_count))
       out[v] = pass.vertex_point(v, rules, ready);
     else
-      store(out[v], smooth_vertex(a, v, corners_begin, corners_end, edges, ready), v + 1 < last);
+      store(out[v], smooth_vertex(a, v, corners_begin, corners_end, edges, Ready<is_all_ready>{ready}),
+            v + 1 < last);
   }
+}
+
+NOME_AVX2 void vertices(const LevelPass& pass, Index first, Index last, VertexRules rules,
+                        ReadyCorners ready) {
+  if (ready.begin == 0)
+    vertex_range<true>(pass, first, last, rules, ready);
+  else
+    vertex_range<false>(pass, first, last, rules, ready);
 }
 
 }  // namespace
