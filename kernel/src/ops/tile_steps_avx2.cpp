@@ -1,5 +1,7 @@
 #include "ops/tile_steps.hpp"
 
+#include "nome/assert.hpp"
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 
@@ -130,7 +132,10 @@ NOME_AVX2 void faces(const LevelPass& pass, Index first, Index last) {
 template <bool is_all_ready>
 struct Ready {
   ReadyCorners corners;
-  bool has(Index c) const { return is_all_ready || corners.has(c); }
+  bool has(Index c) const {
+    NOME_ASSERT(!is_all_ready || corners.has(c));
+    return is_all_ready || corners.has(c);
+  }
 };
 
 // ChildPass::edge on an edge that is not a crease; `out` is where its vertex point goes.
