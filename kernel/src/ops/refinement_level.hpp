@@ -135,9 +135,12 @@ struct BaseTiles;
 struct LevelCounts;
 
 // The classic rule's pass of refine_child_positions from a refined level G (level k >= 1; counts of levels
-// 0 .. k), base face by base face: the same results bit for bit, in an order that keeps them in cache.
+// 0 .. k), base face by base face: the same results bit for bit, in an order that keeps them in cache. With
+// `is_vector_allowed`, in AVX2 instructions where the CPU has them (tile_steps.hpp): one more Vec3 after
+// `in` must then be readable.
 void refine_child_positions_by_tile(const Refinement::Level& grandparent, const BaseTiles& tiles,
                                     std::span<const LevelCounts> counts, std::span<const Vec3> in,
-                                    VertexRules rules, std::span<Vec3> out, int threads);
+                                    VertexRules rules, std::span<Vec3> out, int threads,
+                                    bool is_vector_allowed);
 
 }  // namespace nome

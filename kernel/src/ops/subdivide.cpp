@@ -232,8 +232,10 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
   for (size_t k = 0; k < levels_.size(); ++k) {
     std::span<Vec3> target = out;
     if (k + 1 < levels_.size()) {
-      resize_for_overwrite(levels_[k].positions, levels_[k].vertex_count);
-      target = levels_[k].positions;
+      // One more position, read but never used by the vector steps of the next pass.
+      resize_for_overwrite(levels_[k].positions, levels_[k].vertex_count + 1);
+      levels_[k].positions.back() = Vec3(0.0);
+      target = std::span(levels_[k].positions).first(levels_[k].vertex_count);
     }
     if (k == 0)
       nome::refine_positions(MeshLevelView(base), in, rules, target, threads);
@@ -241,7 +243,7 @@ void Refinement::refine_positions(const Mesh& base, SubdivisionRule rule, std::s
       refine_child_positions(MeshLevelView(base), in, rules, target, threads);
     else if (rule == SubdivisionRule::classic)
       refine_child_positions_by_tile(levels_[k - 2], *tiles_, std::span(counts).first(k), in, rules, target,
-                                     threads);
+                                     threads, is_vector_allowed_);
     else
       refine_child_positions(levels_[k - 2], in, rules, target, threads);
     if (k < sharp_.size()) {

@@ -80,6 +80,10 @@ class Refinement {
   // valid until the next call.
   std::span<const Vec3> refine_positions(const Mesh& base, SubdivisionRule rule, int threads = 1);
 
+  // Whether the position pass may use vector instructions beyond the architecture's baseline (AVX2) where
+  // the CPU has them; they are by default. The results are the same bits either way.
+  void allow_vector_instructions(bool is_allowed) { is_vector_allowed_ = is_allowed; }
+
   // The last level as a full Mesh with the given positions (from refine_positions), built from the
   // level before it without any search; faces keep the colours and components of their ancestors. The
   // descendants of hole faces are left out, with the vertices only they use; where that leaves faces
@@ -108,6 +112,7 @@ class Refinement {
   // With holes: the last level's vertex of each vertex of the mesh() made last (kept_vertices_, unless
   // faces touching at a vertex made it split the vertex).
   mutable std::vector<Index> output_vertices_;
+  bool is_vector_allowed_ = true;
 };
 
 }  // namespace nome
