@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <thread>
 
+#include "nome/error.hpp"
 #include "nome/mesh/normals.hpp"
 #include "nome/query/display_triangles.hpp"
 
@@ -82,6 +84,17 @@ void provoking_triangles(const Mesh& mesh, const DisplayTriangles& triangles, Di
   }
 }
 
+// Positions [begin, end) rounded to single precision, and their box.
+BoundingBox round_positions(const Buffer<Vec3>& positions, Buffer<glm::vec3>& out, std::size_t begin,
+                            std::size_t end) {
+  BoundingBox box;
+  for (std::size_t i = begin; i < end; ++i) {
+    out[i] = glm::vec3(positions[i]);
+    box.add(positions[i]);
+  }
+  return box;
+}
+
 }  // namespace
 
 DisplayTopology build_display_topology(const Mesh& mesh) {
@@ -107,35 +120,50 @@ DisplayTopology build_display_topology(const Mesh& mesh) {
 }
 
 void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, DisplayPositions& out,
-                             int threads) {
-  compute_float_face_normals(mesh, out.face_normals, threads);
+                             int threads, DisplayNormals normals) {
+  if (normals == DisplayNormals::computed) {
+    compute_float_face_normals(mesh, out.face_normals, threads);
+  } else if (out.face_normals.size() != mesh.num_faces() ||
+             out.vertex_normals.size() != mesh.num_vertices()) {
+    throw InvalidInputError("build_display_positions: " + std::to_string(out.face_normals.size()) +
+                            " face and " + std::to_string(out.vertex_normals.size()) +
+                            " vertex normals given for " + std::to_string(mesh.num_faces()) + " faces and " +
+                            std::to_string(mesh.num_vertices()) + " vertices");
+  }
   const Buffer<Vec3>& positions = mesh.positions();
   const std::vector<std::uint32_t>& extra = topology.extra_vertices;
   resize_for_overwrite(out.vertices, positions.size());
   resize_for_overwrite(out.extra_vertices, extra.size());
   resize_for_overwrite(out.extra_normals, extra.size());
-  auto round_positions = [&] {
-    BoundingBox box;
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-      out.vertices[i] = glm::vec3(positions[i]);
-      box.add(positions[i]);
-    }
-    out.bounds = box;
-    for (std::size_t i = 0; i < extra.size(); ++i)
-      out.extra_vertices[i] = out.vertices[extra[i] & ~corner_sign_bit];
-  };
-  // The vertex normals' scatter takes one thread unless the faces split into two halves (see
-  // compute_float_normals); a large mesh's positions are rounded beside it.
-  {
+  const bool is_large = threads > 1 && positions.size() >= (1u << 16);
+  if (normals == DisplayNormals::computed) {
+    // The vertex normals' scatter takes one thread unless the faces split into two halves (see
+    // compute_float_normals); a large mesh's positions are rounded beside it.
     std::jthread helper;
-    if (threads > 1 && positions.size() >= (1u << 16))
-      helper = std::jthread(round_positions);
+    if (is_large)
+      helper =
+          std::jthread([&] { out.bounds = round_positions(positions, out.vertices, 0, positions.size()); });
     else
-      round_positions();
+      out.bounds = round_positions(positions, out.vertices, 0, positions.size());
     compute_float_vertex_normals(mesh, out.face_normals, out.vertex_normals, threads);
+  } else if (is_large) {
+    // Only the rounding is left: half each.
+    const std::size_t half = positions.size() / 2;
+    BoundingBox second;
+    {
+      const std::jthread helper(
+          [&] { second = round_positions(positions, out.vertices, half, positions.size()); });
+      out.bounds = round_positions(positions, out.vertices, 0, half);
+    }
+    out.bounds.add(second.min);
+    out.bounds.add(second.max);
+  } else {
+    out.bounds = round_positions(positions, out.vertices, 0, positions.size());
   }
   for (std::size_t i = 0; i < extra.size(); ++i) {
-    const glm::vec3& n = out.vertex_normals[extra[i] & ~corner_sign_bit];
+    const std::uint32_t v = extra[i] & ~corner_sign_bit;
+    const glm::vec3& n = out.vertex_normals[v];
+    out.extra_vertices[i] = out.vertices[v];
     out.extra_normals[i] = extra[i] & corner_sign_bit ? -n : n;
   }
 }

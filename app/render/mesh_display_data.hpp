@@ -66,10 +66,13 @@ struct MeshDisplayData {
 };
 
 DisplayTopology build_display_topology(const Mesh& mesh);
+// Where DisplayPositions' face and vertex normals come from: computed from the mesh (compute_float_normals),
+// or already in `out` (the kernel's, e.g. Pipeline::display_normals).
+enum class DisplayNormals { computed, given };
 // Fills `out` for the mesh's positions and the GL vertices of `topology` (the mesh's), on up to `threads`
 // threads (into its arrays' blocks).
 void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, DisplayPositions& out,
-                             int threads = 1);
+                             int threads = 1, DisplayNormals normals = DisplayNormals::computed);
 std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh);
 MeshDisplayData build_display_data(const Mesh& mesh);
 

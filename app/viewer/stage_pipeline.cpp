@@ -100,7 +100,11 @@ std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions
     out = std::make_shared<render::DisplayPositions>();
     if (positions_.size() < 3) positions_.push_back(out);
   }
-  render::build_display_positions(mesh, topology, *out, threads);
+  // An offset's normals may come with the kernel's result (its surface's): no normal passes here.
+  const bool has_normals = pipeline_.display_normals(out->face_normals, out->vertex_normals, threads);
+  render::build_display_positions(
+      mesh, topology, *out, threads,
+      has_normals ? render::DisplayNormals::given : render::DisplayNormals::computed);
   return out;
 }
 

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "nome/error.hpp"
 #include "nome/query/display_triangles.hpp"
 #include "render/mesh_display_data.hpp"
 #include "support/shapes.hpp"
@@ -98,4 +99,30 @@ TEST_CASE("face colours become an RGBA table, alpha 0 where the mesh has none", 
   const auto colors = render::build_display_data(build_mesh(soup)).face_colors;
   REQUIRE(colors.size() == 6);
   CHECK(colors[5] == std::array<std::uint8_t, 4>{255, 128, 0, 255});
+}
+
+TEST_CASE("display positions take normals given with the mesh as they are", "[render]") {
+  // A Möbius band: extra vertices whose normals are the given ones, turned round where so marked; over
+  // 65,536 vertices, so that two threads round half the positions each.
+  const Mesh band = build_mesh(test::mobius_band(1024, 64));
+  REQUIRE(band.num_vertices() > (1u << 16));
+  const render::MeshDisplayData computed = render::build_display_data(band);
+  const render::DisplayTopology& t = *computed.topology;
+  for (const int threads : {1, 2}) {
+    render::DisplayPositions given;
+    given.face_normals = computed.positions->face_normals;
+    given.vertex_normals = computed.positions->vertex_normals;
+    for (glm::vec3& n : given.vertex_normals) n = -n;  // not what the mesh gives: taken all the same
+    render::build_display_positions(band, t, given, threads, render::DisplayNormals::given);
+    CHECK(given.vertices == computed.positions->vertices);
+    CHECK(given.extra_vertices == computed.positions->extra_vertices);
+    CHECK(given.bounds.min == computed.positions->bounds.min);
+    CHECK(given.bounds.max == computed.positions->bounds.max);
+    REQUIRE(given.extra_normals.size() == t.extra_vertices.size());
+    for (std::size_t i = 0; i < t.extra_vertices.size(); ++i)
+      CHECK(given.extra_normals[i] == -computed.positions->extra_normals[i]);
+  }
+  render::DisplayPositions missing;
+  CHECK_THROWS_AS(render::build_display_positions(band, t, missing, 1, render::DisplayNormals::given),
+                  InvalidInputError);
 }

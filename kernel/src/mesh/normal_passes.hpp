@@ -68,7 +68,9 @@ void face_normals(const Mesh& mesh, T* out, std::vector<Index>& degenerate, int 
   const Index* offsets = mesh.face_offsets().data();
   const Index* corners = mesh.corner_vertices().data();
   SharedList list(degenerate);
-  parallel_for(mesh.num_faces(), threads, [&](Index begin, Index end) {
+  // The arrays by value: read through the lambda's references, each store to `out` (which might alias
+  // them) would reload them.
+  parallel_for(mesh.num_faces(), threads, [&list, out, p, offsets, corners](Index begin, Index end) {
     std::vector<Index> part;
     for (Index f = begin; f < end; ++f) {
       const Vec3 n = unit_face_normal(p, offsets, corners, f);
@@ -113,10 +115,16 @@ void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>
   const signed char* signs = mesh.corner_signs().data();
   parallel_for(mesh.num_vertices(), threads,
                [&](Index begin, Index end) { std::fill(out + begin, out + end, T(0.0)); });
-  auto scatter = [&](Index begin, Index end) {
+  // Without a negative sign (any consistently oriented surface) no sign is read.
+  signed char lowest_sign = 1;
+  for (const signed char s : mesh.corner_signs()) lowest_sign = std::min(lowest_sign, s);
+  auto scatter = [faces, out, offsets, corners, signs, lowest_sign](Index begin, Index end) {
     for (Index f = begin; f < end; ++f) {
       const T n = faces[f];
-      for (Index c = offsets[f]; c < offsets[f + 1]; ++c) out[corners[c]] += signs[c] > 0 ? n : -n;
+      if (lowest_sign > 0)
+        for (Index c = offsets[f]; c < offsets[f + 1]; ++c) out[corners[c]] += n;
+      else
+        for (Index c = offsets[f]; c < offsets[f + 1]; ++c) out[corners[c]] += signs[c] > 0 ? n : -n;
     }
   };
   const Index split = threads > 1 && mesh.num_faces() >= (1u << 16) ? disjoint_face_split(mesh) : 0;

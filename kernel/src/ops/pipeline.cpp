@@ -206,6 +206,12 @@ Mesh Pipeline::take_result() {
   return out;
 }
 
+bool Pipeline::display_normals(Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices, int threads) const {
+  if (!result_ || result_ == &scene_->mesh() || (merged_->has_mesh() && result_ == &merged_->mesh()))
+    return false;
+  return solid_->display_normals(faces, vertices, threads);
+}
+
 StageWork Pipeline::work(Stage stage) const {
   if (stage == Stage::scene) return scene_->work();
   if (stage == Stage::merged) return merged_->work();

@@ -4,6 +4,7 @@
 
 #include "nome/error.hpp"
 #include "nome/ops/offset.hpp"
+#include "nome/ops/offset_normals.hpp"
 
 namespace nome {
 namespace {
@@ -82,6 +83,11 @@ std::optional<Mesh> SolidStages::take_result() {
   return out;
 }
 
+bool SolidStages::display_normals(Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices, int threads) const {
+  if (!result_ || result_ != &offset_.result || !offset_.input) return false;
+  return offset_float_normals(*offset_.input, offset_.normals, faces, vertices, threads);
+}
+
 StageWork SolidStages::work(Stage stage) const {
   switch (stage) {
     case Stage::subdivided:
@@ -132,6 +138,7 @@ Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int 
 }
 
 Mesh& SolidStages::offset_stage(const Mesh& in, const PipelineSettings& s) {
+  offset_.input = &in;
   if (!has_new_topology_ && !has_new_positions_ && offset_.has_result) {
     offset_.work = StageWork::cached;
     return offset_.result;

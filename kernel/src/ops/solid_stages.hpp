@@ -28,6 +28,9 @@ class SolidStages {
 
   StageWork work(Stage stage) const;
   void set_progress(Progress progress) { progress_ = std::move(progress); }
+  // The last result's display normals when it is an offset of two parallel copies (offset_float_normals:
+  // the surface's normals, already computed for the offset), else false.
+  bool display_normals(Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices, int threads) const;
   // Warnings of the last run (degenerate faces met by the offset's normals).
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -39,7 +42,8 @@ class SolidStages {
     StageWork work = StageWork::skipped;
   };
   struct OffsetStage {
-    Normals normals;  // of the stage's input; kept for their blocks, as is the result's
+    Normals normals;              // of the stage's input; kept for their blocks, as is the result's
+    const Mesh* input = nullptr;  // of the last run (valid as long as its result)
     Mesh result;
     bool has_result = false;
     StageWork work = StageWork::skipped;

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 
+#include <glm/geometric.hpp>
+
 #include "nome/mesh/topology_report.hpp"
+#include "nome/ops/offset_normals.hpp"
+#include "support/shapes.hpp"
 #include "viewer/session.hpp"
 #include "viewer/stage_pipeline.hpp"
 
@@ -116,11 +120,15 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
     const viewer::StageResult& moved = *held.back();
     CHECK(moved.display.topology == first->display.topology);
     CHECK(moved.borders == first->borders);
-    // The positions and normals are those of a fresh build of the moved mesh.
+    // The positions are those of a fresh build of the moved mesh, the normals those of a fresh run: the
+    // display does not depend on the ticks before it.
     const render::MeshDisplayData fresh = render::build_display_data(*moved.mesh);
     CHECK(moved.display.positions->vertices == fresh.positions->vertices);
-    CHECK(moved.display.positions->vertex_normals == fresh.positions->vertex_normals);
-    CHECK(moved.display.positions->face_normals == fresh.positions->face_normals);
+    StagePipeline fresh_pipeline;
+    const auto fresh_run = fresh_pipeline.run(session.pipeline_input(), settings, std::stop_token{});
+    REQUIRE(fresh_run);
+    CHECK(moved.display.positions->vertex_normals == fresh_run->display.positions->vertex_normals);
+    CHECK(moved.display.positions->face_normals == fresh_run->display.positions->face_normals);
     CHECK(moved.mesh->positions() != first_positions);
   }
   // Every result still held shows the positions it was made with (no copy written while held).
@@ -143,4 +151,40 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
   REQUIRE(rebuilt);
   CHECK(rebuilt->display.topology != first->display.topology);
   CHECK(rebuilt->mesh->num_faces() != first->mesh->num_faces());
+}
+
+TEST_CASE("an offset of two parallel copies shows its surface's normals, any other mesh its own", "[app]") {
+  PipelineInput input;
+  input.soup = test::torus(24, 12);
+  PipelineSettings settings = viewer::initial_settings();
+  settings.stage = Stage::offset;
+  settings.offset_distance = 0.02;
+  StagePipeline pipeline;
+  const auto torus = pipeline.run(input, settings, std::stop_token{});
+  REQUIRE(torus);
+  // The subdivided torus' normals on both copies, where the solid's own polygons give nearly the same.
+  Pipeline kernel;
+  PipelineSettings surface = settings;
+  surface.stage = Stage::subdivided;
+  kernel.set_input(input);
+  const Mesh& subdivided = kernel.run(surface);
+  Buffer<glm::vec3> faces, vertices;
+  REQUIRE(offset_float_normals(subdivided, compute_normals(subdivided), faces, vertices));
+  const render::DisplayPositions& shown = *torus->display.positions;
+  CHECK(shown.face_normals == faces);
+  CHECK(shown.vertex_normals == vertices);
+  const render::MeshDisplayData own = render::build_display_data(*torus->mesh);
+  for (std::size_t v = 0; v < vertices.size(); ++v)
+    CHECK(glm::dot(shown.vertex_normals[v], own.positions->vertex_normals[v]) > 0.999f);
+  // Two squares with borders: rim quads, whose normals only the solid has.
+  const auto squares = pipeline.run(two_pieces(), settings, std::stop_token{});
+  REQUIRE(squares);
+  const render::MeshDisplayData squares_own = render::build_display_data(*squares->mesh);
+  CHECK(squares->display.positions->face_normals == squares_own.positions->face_normals);
+  CHECK(squares->display.positions->vertex_normals == squares_own.positions->vertex_normals);
+  // The subdivided surface alone: its own normals.
+  const auto shown_surface = pipeline.run(input, surface, std::stop_token{});
+  REQUIRE(shown_surface);
+  CHECK(shown_surface->display.positions->vertex_normals ==
+        render::build_display_data(*shown_surface->mesh).positions->vertex_normals);
 }

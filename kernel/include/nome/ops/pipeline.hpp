@@ -110,6 +110,10 @@ class Pipeline {
   // Where the stages that rebuild a mesh (subdivision, offset) report how far they got.
   void set_progress(Progress progress);
 
+  // The normals a display draws the last run's result with when the kernel has them already: an offset
+  // of two parallel copies (offset_float_normals), else false (the caller computes them).
+  bool display_normals(Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices, int threads = 1) const;
+
   // What each stage did in the last run.
   StageWork work(Stage stage) const;
   const MergeSummary& merge_summary() const;
