@@ -302,13 +302,13 @@ int print_first_offset(bool as_polygons) {
   return 0;
 }
 
-// The same in a new process (this executable again), started after a pause of 3 s: these VMs hand
-// memory freed for about 2 s back to the host (virtio-balloon free page reporting), after which touching
+// The same in a new process (this executable again), started after a pause of 10 s: these VMs hand
+// memory freed for some seconds back to the host (3 s were not always enough after the last child) (virtio-balloon free page reporting), after which touching
 // it costs a host fault per page, as memory never touched does; a command started by a user finds its
 // memory so, not as the work just before it left it.
 FirstOffset first_offset_in_new_process(bool as_polygons) {
   std::fflush(nullptr);
-  sleep(3);
+  sleep(10);
   FirstOffset times;
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
   const std::string command = "'" + self + "' --first-offset" + (as_polygons ? " polygons" : "");
