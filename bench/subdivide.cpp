@@ -303,9 +303,9 @@ int print_first_offset(bool as_polygons) {
 }
 
 // The same in a new process (this executable again), started after a pause of 10 s: these VMs hand
-// memory freed for some seconds back to the host (3 s were not always enough after the last child) (virtio-balloon free page reporting), after which touching
-// it costs a host fault per page, as memory never touched does; a command started by a user finds its
-// memory so, not as the work just before it left it.
+// freed memory back to the host after some seconds (virtio-balloon free page reporting; 3 s were not
+// always enough after the last child), after which touching it costs a host fault per page, as memory
+// never touched does; a command started by a user finds its memory so, not as the work before it left it.
 FirstOffset first_offset_in_new_process(bool as_polygons) {
   std::fflush(nullptr);
   sleep(10);
