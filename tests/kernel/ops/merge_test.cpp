@@ -5,6 +5,7 @@
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
+#include "support/same_report.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
@@ -25,16 +26,6 @@ std::vector<Mesh> slices(const PolygonSoup& soup, Index faces_per_ring, Index ri
   return build_parts(test::split_faces(soup, part));
 }
 
-void check_same_topology(const TopologyReport& got, const TopologyReport& want) {
-  CHECK(got.vertices == want.vertices);
-  CHECK(got.edges == want.edges);
-  CHECK(got.faces == want.faces);
-  CHECK(got.chi == want.chi);
-  CHECK(got.orientable == want.orientable);
-  CHECK(got.borders == want.borders);
-  CHECK(got.components.size() == want.components.size());
-}
-
 }  // namespace
 
 TEST_CASE("two halves of a Möbius band cut across merge back into a Möbius band", "[kernel]") {
@@ -45,7 +36,7 @@ TEST_CASE("two halves of a Möbius band cut across merge back into a Möbius ban
 
   const MergeResult merged = merge_meshes(halves);
   const TopologyReport r = topology_report(merged.mesh);
-  check_same_topology(r, topology_report(build_mesh(band)));
+  test::check_same_report(r, topology_report(build_mesh(band)));
   CHECK_FALSE(r.orientable);
   CHECK(r.borders == 1);
   CHECK(r.mobius_edges == 3);  // one seam keeps its orientation, the other glues same-direction faces
@@ -58,7 +49,7 @@ TEST_CASE("a torus in four pieces merges to a torus", "[kernel]") {
   const std::vector<Mesh> quarters = slices(torus, 6, 8, 4);
   REQUIRE(quarters.size() == 4);
   const TopologyReport r = topology_report(merge_meshes(quarters).mesh);
-  check_same_topology(r, topology_report(build_mesh(torus)));
+  test::check_same_report(r, topology_report(build_mesh(torus)));
   REQUIRE(r.components.size() == 1);
   CHECK(r.components[0].genus == 1);
   CHECK(r.borders == 0);
@@ -78,7 +69,7 @@ TEST_CASE("an exploded surface merges back to itself, whatever the face orientat
     std::iota(own_part.begin(), own_part.end(), 0);
     const MergeResult merged = merge_meshes(build_parts(test::split_faces(soup, own_part)));
     const TopologyReport want = topology_report(build_mesh(soup));
-    check_same_topology(topology_report(merged.mesh), want);
+    test::check_same_report(topology_report(merged.mesh), want);
     CHECK(topology_report(merged.mesh).mobius_edges == want.mobius_edges);
     CHECK(merged.skipped.empty());
   }
@@ -239,7 +230,7 @@ TEST_CASE("merging random exploded patches agrees with joining their faces by ve
     const MergeResult merged = merge_meshes(build_parts(test::split_faces(oriented, own_part)));
     const TopologyReport want = topology_report(glue_faces(oriented).mesh);
     const TopologyReport got = topology_report(merged.mesh);
-    check_same_topology(got, want);
+    test::check_same_report(got, want);
     CHECK(got.mobius_edges == want.mobius_edges);
     CHECK(merged.skipped.empty());
   }
