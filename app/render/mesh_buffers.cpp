@@ -110,7 +110,7 @@ void MeshBuffers::update_positions(const DisplayPositions& positions) {
 }
 
 void MeshBuffers::set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) {
-  if (colors.size() != topology_->num_faces)
+  if (!colors.empty() && colors.size() != topology_->num_faces)
     throw InvalidInputError("MeshBuffers::set_face_colors: " + std::to_string(colors.size()) +
                             " colours for " + std::to_string(topology_->num_faces) + " faces");
   const bool had_face_colors = has_face_colors_;

@@ -28,7 +28,7 @@ class MeshBuffers {
   const DisplayTopology& topology() const { return *topology_; }
   // New positions and normals for the same topology; throws InvalidInputError when the counts differ.
   void update_positions(const DisplayPositions& positions);
-  // Replaces the per-face colours (RGBA; alpha 0 = the display's front colour); one per face.
+  // Replaces the per-face colours (RGBA; alpha 0 = the display's front colour): one per face, or none.
   void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors);
   // Marks these faces selected (tinted); all others unselected.
   void set_selected_faces(std::span<const Index> faces);

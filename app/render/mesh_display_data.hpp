@@ -62,7 +62,9 @@ struct DisplayPositions {
 struct MeshDisplayData {
   std::shared_ptr<const DisplayTopology> topology;
   std::shared_ptr<const DisplayPositions> positions;
-  std::vector<std::array<std::uint8_t, 4>> face_colors;  // RGBA per face; alpha 0 where it has none
+  // RGBA per face, alpha 0 where it has none; empty where no face has one (a slider's tick at a million
+  // faces then neither fills nor uploads a table).
+  std::vector<std::array<std::uint8_t, 4>> face_colors;
 };
 
 DisplayTopology build_display_topology(const Mesh& mesh);
@@ -73,6 +75,7 @@ enum class DisplayNormals { computed, given };
 // threads (into its arrays' blocks).
 void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, DisplayPositions& out,
                              int threads = 1, DisplayNormals normals = DisplayNormals::computed);
+// The mesh's face colours as RGBA bytes, empty when it has none.
 std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh);
 MeshDisplayData build_display_data(const Mesh& mesh);
 

@@ -37,7 +37,7 @@ class SceneRenderer {
   // Replaces the displayed mesh (face colours and selection start from the data's own). Data of the
   // topology on display (the same DisplayTopology) only updates its positions, normals and colours.
   virtual void set_mesh(const MeshDisplayData& data) = 0;
-  // Per-face RGBA colours (alpha 0: the display's front colour); one per face of the mesh.
+  // Per-face RGBA colours (alpha 0: the display's front colour): one per face of the mesh, or none.
   virtual void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) = 0;
   virtual void set_selected_faces(std::span<const Index> faces) = 0;
   virtual void set_markers(std::span<const CubeMarker> markers) = 0;

@@ -164,6 +164,7 @@ void show_face_colors(render::SceneRenderer& renderer, const StageResult& shown,
   // Faces keep their order through the scene and merged stages: the edited ones take their colours.
   auto face_colors = shown.display.face_colors;
   const FaceParts& parts = shown.parts;
+  if (face_colors.empty()) face_colors.resize(shown.display.topology->num_faces, {0, 0, 0, 0});
   if (is_editable(shown.stage) &&
       face_colors.size() == std::size_t(parts.scene) + parts.consolidated + parts.temporary) {
     auto paint = [&](Index first, Index count, glm::vec3 c) {

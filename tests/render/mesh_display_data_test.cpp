@@ -92,9 +92,9 @@ TEST_CASE("smooth normals follow each face's own orientation across Möbius edge
   }
 }
 
-TEST_CASE("face colours become an RGBA table, alpha 0 where the mesh has none", "[render]") {
+TEST_CASE("face colours become an RGBA table, none where the mesh has none", "[render]") {
   PolygonSoup soup = test::cube();
-  CHECK(render::build_display_data(build_mesh(soup)).face_colors[0][3] == 0);
+  CHECK(render::build_display_data(build_mesh(soup)).face_colors.empty());
   soup.face_colors.assign(soup.num_faces(), Color(1.0f, 0.5f, 0.0f));
   const auto colors = render::build_display_data(build_mesh(soup)).face_colors;
   REQUIRE(colors.size() == 6);

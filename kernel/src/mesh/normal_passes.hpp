@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <mutex>
-#include <thread>
+#include <type_traits>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -82,74 +82,57 @@ void face_normals(const Mesh& mesh, T* out, std::vector<Index>& degenerate, int 
   list.sort();
 }
 
-// A face f near the middle such that faces [0, f) and [f, F) share no vertex (no component has faces on
-// both sides: an offset's two copies of a closed orientable surface), or 0 when there is none.
-inline Index disjoint_face_split(const Mesh& mesh) {
-  const Index nf = mesh.num_faces();
-  if (mesh.num_components() < 2 || nf < 2) return 0;
-  Index split = nf / 2;
-  while (split < nf && mesh.face_component(split) == mesh.face_component(split - 1)) ++split;
-  if (split == nf) return 0;
-  std::vector<char> is_before(mesh.num_components(), 0);
-  for (Index f = 0; f < split; ++f) is_before[mesh.face_component(f)] = 1;
-  for (Index f = split; f < nf; ++f)
-    if (is_before[mesh.face_component(f)]) return 0;
-  return split;
-}
-
-// Vertex normals: per vertex the sum over its fan of s(c) * n_f, then normalized (zero where it vanishes,
-// listed unless the vertex is isolated). One pass over the faces in corner order, each face's normal
-// added to its vertices' sums with its corner's sign (streaming reads; a gather over the fans reads
-// three arrays at random per corner). Measured at a million faces, two threads that each walk all
-// corners and add only to their own half of the vertices took longer than one thread; so a second
-// thread takes part only where the faces split into two halves without a shared vertex (then each
-// vertex's sum is added up in the same order: the same normals on any number of threads).
+// Vertex normals: per vertex the sum over its fan of s(c) * n_f in fan order, then normalized (zero where
+// it vanishes, listed unless the vertex is isolated). A gather: each vertex reads its own fan, so the
+// vertices split between threads without sharing a sum, each sum is added up in the same order on any
+// number of threads, and the sums are written once, already normalized. (A scatter from the faces reads
+// its arrays in order but adds to the sums at random, and only one thread can do it.)
 template <class T>
 void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>& degenerate,
                     int threads = 1) {
   using Scalar = typename T::value_type;
   // Where a sum of unit vectors has cancelled down to rounding noise.
   constexpr Scalar vanishing = sizeof(Scalar) == sizeof(double) ? Scalar(1e-12) : Scalar(1e-5);
-  const Index* offsets = mesh.face_offsets().data();
-  const Index* corners = mesh.corner_vertices().data();
+  const Index* fan_offsets = mesh.fan_corner_offsets().data();
+  const Index* fan = mesh.fan_corners().data();
+  const Index* corner_faces = mesh.corner_faces().data();
   const signed char* signs = mesh.corner_signs().data();
-  parallel_for(mesh.num_vertices(), threads,
-               [&](Index begin, Index end) { std::fill(out + begin, out + end, T(0.0)); });
-  // Without a negative sign (any consistently oriented surface) no sign is read.
+  // Without a negative sign (any consistently oriented surface) no sign is read; in a quad mesh (every
+  // subdivided one) corner c's face is c / 4, one random read less per corner.
   signed char lowest_sign = 1;
   for (const signed char s : mesh.corner_signs()) lowest_sign = std::min(lowest_sign, s);
-  auto scatter = [faces, out, offsets, corners, signs, lowest_sign](Index begin, Index end) {
-    for (Index f = begin; f < end; ++f) {
-      const T n = faces[f];
-      if (lowest_sign > 0)
-        for (Index c = offsets[f]; c < offsets[f + 1]; ++c) out[corners[c]] += n;
-      else
-        for (Index c = offsets[f]; c < offsets[f + 1]; ++c) out[corners[c]] += signs[c] > 0 ? n : -n;
-    }
-  };
-  const Index split = threads > 1 && mesh.num_faces() >= (1u << 16) ? disjoint_face_split(mesh) : 0;
-  if (split > 0) {
-    std::thread second(scatter, split, mesh.num_faces());
-    scatter(0, split);
-    second.join();
-  } else {
-    scatter(0, mesh.num_faces());
-  }
+  bool is_quad_mesh = true;
+  const Index* offsets = mesh.face_offsets().data();
+  for (Index f = 0; f <= mesh.num_faces(); ++f) is_quad_mesh &= offsets[f] == 4 * f;
   SharedList list(degenerate);
-  parallel_for(mesh.num_vertices(), threads, [&](Index begin, Index end) {
-    std::vector<Index> part;
-    for (Index v = begin; v < end; ++v) {
-      T& n = out[v];
-      const Scalar len = glm::length(n);
-      if (len > vanishing) {
-        n *= Scalar(1) / len;
-      } else {
-        n = T(0.0);
-        if (!mesh.is_isolated_vertex(v)) part.push_back(v);
+  const auto gather = [&](auto is_quads, auto has_signs) {
+    parallel_for(mesh.num_vertices(), threads, [&](Index begin, Index end) {
+      std::vector<Index> part;
+      for (Index v = begin; v < end; ++v) {
+        T n(0.0);
+        const Index first = fan_offsets[v], last = fan_offsets[v + 1];
+        for (Index i = first; i < last; ++i) {
+          const Index c = fan[i];
+          const T& face = faces[is_quads ? c >> 2 : corner_faces[c]];
+          n += !has_signs || signs[c] > 0 ? face : -face;
+        }
+        const Scalar len = glm::length(n);
+        if (len > vanishing) {
+          out[v] = n * (Scalar(1) / len);
+        } else {
+          out[v] = T(0.0);
+          if (last > first) part.push_back(v);
+        }
       }
-    }
-    list.append(part);
-  });
+      list.append(part);
+    });
+  };
+  const std::bool_constant<true> yes;
+  const std::bool_constant<false> no;
+  if (is_quad_mesh)
+    lowest_sign > 0 ? gather(yes, no) : gather(yes, yes);
+  else
+    lowest_sign > 0 ? gather(no, no) : gather(no, yes);
   list.sort();
 }
 

@@ -1,8 +1,6 @@
 #pragma once
 
-#include <algorithm>
-#include <thread>
-#include <vector>
+#include "nome/worker_pool.hpp"
 
 namespace nome {
 
@@ -10,10 +8,7 @@ namespace nome {
 // split into a few interleaved shares rather than contiguous ranges (ops/parallel_for).
 template <class Body>
 void run_parts(int parts, const Body& body) {
-  std::vector<std::thread> pool;
-  for (int part = 1; part < parts; ++part) pool.emplace_back(body, part);
-  body(0);
-  for (std::thread& thread : pool) thread.join();
+  WorkerPool::shared().run(unsigned(parts), [&](unsigned part) { body(int(part)); });
 }
 
 }  // namespace nome
