@@ -146,10 +146,9 @@ TEST_CASE("single-precision normals of faces that are not quads, on a Möbius ba
   CHECK_THROWS_AS(compute_float_vertex_normals(m, std::span(faces).first(1), vertices), InvalidInputError);
 }
 
-TEST_CASE("vertex normals of faces in two halves without a shared vertex, on two threads", "[kernel]") {
-  // An offset's two copies (the second thread adds up one of them); pieces whose faces interleave, and
-  // the offset of a surface with faces reversed at random (both halves hold faces of both sides): one
-  // thread adds up all.
+TEST_CASE("vertex normals of meshes of several pieces, on two threads", "[kernel]") {
+  // An offset's two copies, pieces whose faces interleave, and the offset of a surface with faces
+  // reversed at random (corners of both signs): each thread's vertices gather from faces anywhere.
   std::mt19937 rng{42};
   const Mesh surface = build_mesh(test::reverse_random_faces(test::torus(256, 128), 0.3, rng));
   for (const Mesh& m : {offset(build_mesh(test::torus(256, 128)), {.distance = 0.01}),
