@@ -13,7 +13,7 @@ uniform mat4 model_view;
 uniform vec3 front_color;
 uniform vec3 back_color;
 uniform vec3 selection_color;
-uniform samplerBuffer face_normals;  // three floats per face
+uniform isamplerBuffer face_normals;  // per face, x | y << 10 | z << 20, signed normalized 10 bits each
 uniform samplerBuffer face_colors;   // RGBA per face; alpha 0 = the front colour
 uniform usamplerBuffer face_flags;   // bit 0: selected
 uniform float opacity;
@@ -22,9 +22,9 @@ uniform vec3 section_color;
 out vec4 fragment;
 
 vec3 face_normal(int face) {
-  int at = 3 * face;
-  vec3 n = vec3(texelFetch(face_normals, at).r, texelFetch(face_normals, at + 1).r,
-                texelFetch(face_normals, at + 2).r);
+  int bits = texelFetch(face_normals, face).r;
+  // Shifting the field to the top, then back with the sign (arithmetic shift of an int).
+  vec3 n = vec3(ivec3(bits << 22, bits << 12, bits << 2) >> 22) / 511.0;
   return mat3(model_view) * n;
 }
 

@@ -3,7 +3,9 @@
 // and normals are plain vertex arrays, updated in place when a slider moves vertices; flat/smooth is a
 // uniform of the fragment shader, not a rebuild.
 layout(location = 0) in vec3 position;
-layout(location = 1) in vec3 normal;  // zero at a pinch (the fan's signed normals cancel)
+// Unit, or zero at a pinch (the fan's signed normals cancel); packed in 10 bits a component, which GL
+// before 4.2 maps to (2c + 1) / 1023: zero then reads as a vector of length 0.002, not exactly zero.
+layout(location = 1) in vec3 normal;
 layout(location = 2) in uint face;
 
 uniform mat4 model_view;
@@ -22,7 +24,7 @@ void main() {
   view_position = p.xyz;
   // The view matrix is a rotation + translation: its 3x3 part maps normals as well.
   view_normal = mat3(model_view) * normal;
-  pinch = normal == vec3(0.0) ? 1.0 : 0.0;
+  pinch = dot(normal, normal) < 0.25 ? 1.0 : 0.0;
   face_id = face;
   gl_Position = projection * p;
   gl_ClipDistance[0] = -dot(section_plane, vec4(position, 1.0));

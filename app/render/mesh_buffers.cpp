@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "nome/error.hpp"
@@ -33,20 +34,25 @@ void make_table(GLuint& buffer, GLuint& texture, GLenum format, std::size_t byte
   glTexBuffer(GL_TEXTURE_BUFFER, format, buffer);
 }
 
-// An array of three floats per vertex, written by update_positions().
-void vector_attribute(GLuint location, GLuint buffer, std::size_t count) {
+// An array of `count` elements of type T per vertex, written by update_positions(): three floats, or a
+// PackedNormal (signed normalized 2_10_10_10_REV, read by the shader as a vec3).
+template <class T>
+void vertex_attribute(GLuint location, GLuint buffer, std::size_t count) {
   glBindBuffer(GL_ARRAY_BUFFER, buffer);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(std::max<std::size_t>(count, 1) * sizeof(glm::vec3)), nullptr,
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(std::max<std::size_t>(count, 1) * sizeof(T)), nullptr,
                GL_DYNAMIC_DRAW);
   glEnableVertexAttribArray(location);
-  glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  if constexpr (std::is_same_v<T, PackedNormal>)
+    glVertexAttribPointer(location, 4, GL_INT_2_10_10_10_REV, GL_TRUE, 0, nullptr);
+  else
+    glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
 }
 
-void write_vectors(GLenum target, GLuint buffer, std::size_t first, std::span<const glm::vec3> data) {
+template <class T>
+void write_array(GLenum target, GLuint buffer, std::size_t first, std::span<const T> data) {
   if (data.empty()) return;
   glBindBuffer(target, buffer);
-  glBufferSubData(target, GLintptr(first * sizeof(glm::vec3)), GLsizeiptr(data.size() * sizeof(glm::vec3)),
-                  data.data());
+  glBufferSubData(target, GLintptr(first * sizeof(T)), GLsizeiptr(data.size() * sizeof(T)), data.data());
 }
 
 }  // namespace
@@ -56,8 +62,8 @@ MeshBuffers::MeshBuffers(const MeshDisplayData& data) : topology_(data.topology)
   glGenBuffers(GLsizei(buffers_.size()), buffers_.data());
   glGenVertexArrays(1, &surface_vao_);
   glBindVertexArray(surface_vao_);
-  vector_attribute(0, buffers_[0], t.num_gl_vertices());
-  vector_attribute(1, buffers_[1], t.num_gl_vertices());
+  vertex_attribute<glm::vec3>(0, buffers_[0], t.num_gl_vertices());
+  vertex_attribute<PackedNormal>(1, buffers_[1], t.num_gl_vertices());
   upload(GL_ARRAY_BUFFER, buffers_[2], t.vertex_faces);
   uint_attribute(2, buffers_[2]);
   upload(GL_ELEMENT_ARRAY_BUFFER, buffers_[3], t.triangles);
@@ -71,8 +77,8 @@ MeshBuffers::MeshBuffers(const MeshDisplayData& data) : topology_(data.topology)
   upload(GL_ELEMENT_ARRAY_BUFFER, buffers_[4], t.segments);
   glBindVertexArray(0);
 
-  make_table(face_normal_buffer_, face_normal_texture_, GL_R32F,
-             std::size_t(t.num_faces) * sizeof(glm::vec3));
+  make_table(face_normal_buffer_, face_normal_texture_, GL_R32I,
+             std::size_t(t.num_faces) * sizeof(PackedNormal));
   make_table(face_color_buffer_, face_color_texture_, GL_RGBA8, std::size_t(t.num_faces) * 4);
   make_table(face_flag_buffer_, face_flag_texture_, GL_R8UI, t.num_faces);
   update_positions(*data.positions);
@@ -101,11 +107,11 @@ void MeshBuffers::update_positions(const DisplayPositions& positions) {
                             " extra vertices and " + std::to_string(positions.face_normals.size()) +
                             " faces for " + std::to_string(t.num_vertices) + ", " + std::to_string(extra) +
                             " and " + std::to_string(t.num_faces));
-  write_vectors(GL_ARRAY_BUFFER, buffers_[0], 0, positions.vertices);
-  write_vectors(GL_ARRAY_BUFFER, buffers_[0], t.num_vertices, positions.extra_vertices);
-  write_vectors(GL_ARRAY_BUFFER, buffers_[1], 0, positions.vertex_normals);
-  write_vectors(GL_ARRAY_BUFFER, buffers_[1], t.num_vertices, positions.extra_normals);
-  write_vectors(GL_TEXTURE_BUFFER, face_normal_buffer_, 0, positions.face_normals);
+  write_array<glm::vec3>(GL_ARRAY_BUFFER, buffers_[0], 0, positions.vertices);
+  write_array<glm::vec3>(GL_ARRAY_BUFFER, buffers_[0], t.num_vertices, positions.extra_vertices);
+  write_array<PackedNormal>(GL_ARRAY_BUFFER, buffers_[1], 0, positions.vertex_normals);
+  write_array<PackedNormal>(GL_ARRAY_BUFFER, buffers_[1], t.num_vertices, positions.extra_normals);
+  write_array<PackedNormal>(GL_TEXTURE_BUFFER, face_normal_buffer_, 0, positions.face_normals);
   bounds_ = positions.bounds;
 }
 

@@ -15,8 +15,8 @@ namespace nome::render {
 // A mesh on the GPU: its topology (GL vertices carrying a face id, triangles, edge segments), positions and
 // normals as vertex arrays, and three per-face tables read through buffer textures (normal, colour,
 // selection flags). Positions, normals and tables are updated in place (glBufferSubData into the buffers
-// already there): a slider that moves vertices uploads three floats per vertex and per face, nothing
-// per corner. Needs a current context for its whole life.
+// already there): a slider that moves vertices uploads three floats and a packed normal per vertex and a
+// packed normal per face, nothing per corner. Needs a current context for its whole life.
 class MeshBuffers {
  public:
   explicit MeshBuffers(const MeshDisplayData& data);
@@ -44,7 +44,7 @@ class MeshBuffers {
   bool has_selection() const { return has_selection_; }
   GLuint face_color_texture() const { return face_color_texture_; }
   GLuint face_flag_texture() const { return face_flag_texture_; }
-  // Three floats per face (an R32F buffer texture).
+  // A PackedNormal per face (an R32I buffer texture, unpacked by the shader).
   GLuint face_normal_texture() const { return face_normal_texture_; }
   const BoundingBox& bounds() const { return bounds_; }
 

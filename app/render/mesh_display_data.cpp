@@ -122,7 +122,7 @@ DisplayTopology build_display_topology(const Mesh& mesh) {
 void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, DisplayPositions& out,
                              int threads, DisplayNormals normals) {
   if (normals == DisplayNormals::computed) {
-    compute_float_face_normals(mesh, out.face_normals, threads);
+    compute_packed_face_normals(mesh, out.face_normals, threads);
   } else if (out.face_normals.size() != mesh.num_faces() ||
              out.vertex_normals.size() != mesh.num_vertices()) {
     throw InvalidInputError("build_display_positions: " + std::to_string(out.face_normals.size()) +
@@ -137,15 +137,14 @@ void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, 
   resize_for_overwrite(out.extra_normals, extra.size());
   const bool is_large = threads > 1 && positions.size() >= (1u << 16);
   if (normals == DisplayNormals::computed) {
-    // The vertex normals' scatter takes one thread unless the faces split into two halves (see
-    // compute_float_normals); a large mesh's positions are rounded beside it.
+    // A large mesh's positions are rounded beside the vertex normals' gather.
     std::jthread helper;
     if (is_large)
       helper =
           std::jthread([&] { out.bounds = round_positions(positions, out.vertices, 0, positions.size()); });
     else
       out.bounds = round_positions(positions, out.vertices, 0, positions.size());
-    compute_float_vertex_normals(mesh, out.face_normals, out.vertex_normals, threads);
+    compute_packed_vertex_normals(mesh, out.face_normals, out.vertex_normals, threads);
   } else if (is_large) {
     // Only the rounding is left: half each.
     const std::size_t half = positions.size() / 2;
@@ -162,9 +161,9 @@ void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, 
   }
   for (std::size_t i = 0; i < extra.size(); ++i) {
     const std::uint32_t v = extra[i] & ~corner_sign_bit;
-    const glm::vec3& n = out.vertex_normals[v];
+    const PackedNormal n = out.vertex_normals[v];
     out.extra_vertices[i] = out.vertices[v];
-    out.extra_normals[i] = extra[i] & corner_sign_bit ? -n : n;
+    out.extra_normals[i] = extra[i] & corner_sign_bit ? negated(n) : n;
   }
 }
 

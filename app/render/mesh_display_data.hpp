@@ -9,6 +9,7 @@
 
 #include "nome/mesh/buffer.hpp"
 #include "nome/mesh/mesh.hpp"
+#include "nome/mesh/packed_normal.hpp"
 #include "render/bounding_box.hpp"
 
 namespace nome::render {
@@ -44,15 +45,15 @@ inline constexpr std::uint32_t corner_sign_bit = 0x80000000u;
 
 // What a slider that moves vertices changes: per vertex its position and unit normal (relative to the
 // first face of its fan; zero at a pinch, where the shader takes the face's normal), per face its unit
-// normal, in single precision; and the same for the topology's extra GL vertices (gathered here, off the
-// thread that uploads them). Buffer blocks: arrays of a million faces get huge pages, not fresh 4 KB
-// pages one by one.
+// normal; positions in single precision, normals packed in 32 bits (PackedNormal: a third of the bytes to
+// write and upload); and the same for the topology's extra GL vertices (gathered here, off the thread that
+// uploads them). Buffer blocks: arrays of a million faces get huge pages, not fresh 4 KB pages one by one.
 struct DisplayPositions {
   Buffer<glm::vec3> vertices;
-  Buffer<glm::vec3> vertex_normals;
-  Buffer<glm::vec3> face_normals;
+  Buffer<PackedNormal> vertex_normals;
+  Buffer<PackedNormal> face_normals;
   Buffer<glm::vec3> extra_vertices;  // per DisplayTopology::extra_vertices, its normal turned round if so
-  Buffer<glm::vec3> extra_normals;
+  Buffer<PackedNormal> extra_normals;
   BoundingBox bounds;
 };
 
@@ -68,7 +69,7 @@ struct MeshDisplayData {
 };
 
 DisplayTopology build_display_topology(const Mesh& mesh);
-// Where DisplayPositions' face and vertex normals come from: computed from the mesh (compute_float_normals),
+// Where DisplayPositions' face and vertex normals come from: computed from the mesh (compute_packed_normals),
 // or already in `out` (the kernel's, e.g. Pipeline::display_normals).
 enum class DisplayNormals { computed, given };
 // Fills `out` for the mesh's positions and the GL vertices of `topology` (the mesh's), on up to `threads`

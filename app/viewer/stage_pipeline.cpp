@@ -72,16 +72,21 @@ bool StagePipeline::is_same_topology(const Mesh& mesh, const PipelineSettings& s
          mesh.num_corners() == last_->corners && mesh.num_edges() == last_->edges;
 }
 
-std::shared_ptr<const Mesh> StagePipeline::copy(const Mesh& mesh, bool is_same_topology) {
-  if (!is_same_topology) copies_.clear();
+std::shared_ptr<const Mesh> StagePipeline::kept_copy(const Mesh& mesh) {
   for (const std::shared_ptr<Mesh>& copy : copies_)
     if (copy.use_count() == 1) {
       // The last holder elsewhere let go on another thread: its reads come before these writes.
       std::atomic_thread_fence(std::memory_order_acquire);
-      copy->positions() = mesh.positions();
+      // A later stage's positions change places with the copy's older ones (no 24 MB copy per tick at a
+      // million faces); the scene's or merge's mesh, which the pipeline keeps as it is, is copied.
+      if (!pipeline_.exchange_result_positions(copy->positions())) copy->positions() = mesh.positions();
       copy->face_colors() = mesh.face_colors();
       return copy;
     }
+  return nullptr;
+}
+
+std::shared_ptr<const Mesh> StagePipeline::new_copy(const Mesh& mesh) {
   // Three copies cover the one on screen, the one on its way there and one for a picking structure.
   auto copy = std::make_shared<Mesh>(mesh);
   if (copies_.size() < 3) copies_.push_back(copy);
@@ -120,12 +125,21 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
     result.borders = std::make_shared<const BorderLookup>(mesh);
     result.topology = topology_report(mesh);
   }
-  // The mesh's copy (memory bound) beside the display arrays (arithmetic and scatters).
-  std::future<std::shared_ptr<const Mesh>> copied = std::async(
-      settings.threads > 1 ? std::launch::async : std::launch::deferred, [&] { return copy(mesh, is_same); });
+  // A new topology's copy (memory bound) beside the display arrays; a kept copy of the same topology
+  // takes the positions once the display arrays have read them.
+  if (!is_same) copies_.clear();
+  std::future<std::shared_ptr<const Mesh>> copied;
+  if (!is_same)
+    copied = std::async(settings.threads > 1 ? std::launch::async : std::launch::deferred,
+                        [&] { return new_copy(mesh); });
   result.display.positions = display_positions(mesh, *result.display.topology, settings.threads);
   result.display.face_colors = render::display_face_colors(mesh);
-  result.mesh = copied.get();
+  if (is_same) {
+    const std::shared_ptr<const Mesh> kept = kept_copy(mesh);
+    result.mesh = kept ? kept : new_copy(mesh);
+  } else {
+    result.mesh = copied.get();
+  }
   last_settings_ = settings;
   last_ = Shared{result.display.topology, result.borders,     result.topology, mesh.num_vertices(),
                  mesh.num_faces(),        mesh.num_corners(), mesh.num_edges()};

@@ -44,7 +44,8 @@ struct WorkProgress {
 // was requested before it began, or before its display data, gives up and returns none. The pipeline's
 // caches outlive a run: a slider that only moves vertices builds no mesh, and its result shares the last
 // one's display topology, borders and topology report (the renderer then updates positions only), its
-// mesh and display positions arrays no longer held elsewhere taking the new ones (no fresh pages).
+// mesh and display positions arrays no longer held elsewhere taking the new ones (no fresh pages; the
+// mesh's positions change places with the pipeline's, Pipeline::exchange_result_positions).
 class StagePipeline {
  public:
   StagePipeline();
@@ -59,7 +60,11 @@ class StagePipeline {
   // The display arrays: a result of the last one's topology takes over its shared parts.
   void display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result);
   bool is_same_topology(const Mesh& mesh, const PipelineSettings& settings) const;
-  std::shared_ptr<const Mesh> copy(const Mesh& mesh, bool is_same_topology);
+  // The result's mesh for a result of the last one's topology: a kept copy no one else holds, with the
+  // pipeline's positions, or null when all are held. Valid only after the display arrays: the pipeline's
+  // result then holds an older array.
+  std::shared_ptr<const Mesh> kept_copy(const Mesh& mesh);
+  std::shared_ptr<const Mesh> new_copy(const Mesh& mesh);
   std::shared_ptr<const render::DisplayPositions> display_positions(const Mesh& mesh,
                                                                     const render::DisplayTopology& topology,
                                                                     int threads);

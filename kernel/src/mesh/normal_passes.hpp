@@ -8,9 +8,27 @@
 #include <glm/geometric.hpp>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/mesh/packed_normal.hpp"
 #include "ops/parallel_for.hpp"
 
 namespace nome::normal_passes {
+
+// The normal types the passes store (double vectors, or packed for a display) and what they add up in.
+inline void store_normal(Vec3& out, const Vec3& n) {
+  out = n;
+}
+inline void store_normal(PackedNormal& out, const Vec3& n) {
+  out = pack_normal(glm::vec3(n));
+}
+inline void store_normal(PackedNormal& out, const glm::vec3& n) {
+  out = pack_normal(n);
+}
+inline const Vec3& summand(const Vec3& n) {
+  return n;
+}
+inline glm::vec3 summand(PackedNormal n) {
+  return unpack_normal(n);
+}
 
 // Newell's term of the polygon side a -> b.
 inline Vec3 newell_term(const Vec3& a, const Vec3& b) {
@@ -60,8 +78,8 @@ inline Vec3 unit_face_normal(const Vec3* p, const Index* offsets, const Index* c
   return n * (1.0 / len);
 }
 
-// Unit face normals, computed in double precision and stored as T, on up to `threads` threads, the
-// degenerate faces listed in order.
+// Unit face normals, computed in double precision and stored as T (store_normal), on up to `threads` threads,
+// the degenerate faces listed in order.
 template <class T>
 void face_normals(const Mesh& mesh, T* out, std::vector<Index>& degenerate, int threads) {
   const Vec3* p = mesh.positions().data();
@@ -74,7 +92,7 @@ void face_normals(const Mesh& mesh, T* out, std::vector<Index>& degenerate, int 
     std::vector<Index> part;
     for (Index f = begin; f < end; ++f) {
       const Vec3 n = unit_face_normal(p, offsets, corners, f);
-      out[f] = T(n);
+      store_normal(out[f], n);
       if (n == Vec3(0.0)) part.push_back(f);
     }
     list.append(part);
@@ -90,9 +108,11 @@ void face_normals(const Mesh& mesh, T* out, std::vector<Index>& degenerate, int 
 template <class T>
 void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>& degenerate,
                     int threads = 1) {
-  using Scalar = typename T::value_type;
-  // Where a sum of unit vectors has cancelled down to rounding noise.
-  constexpr Scalar vanishing = sizeof(Scalar) == sizeof(double) ? Scalar(1e-12) : Scalar(1e-5);
+  using Sum = std::decay_t<decltype(summand(T()))>;
+  using Scalar = typename Sum::value_type;
+  // Where a sum of unit vectors has cancelled down to rounding noise (packed ones: to their steps of
+  // 1/511, a few of which a fan adds up).
+  constexpr Scalar vanishing = std::is_same_v<T, PackedNormal> ? Scalar(1e-2) : Scalar(1e-12);
   const Index* fan_offsets = mesh.fan_corner_offsets().data();
   const Index* fan = mesh.fan_corners().data();
   const Index* corner_faces = mesh.corner_faces().data();
@@ -109,18 +129,18 @@ void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>
     parallel_for(mesh.num_vertices(), threads, [&](Index begin, Index end) {
       std::vector<Index> part;
       for (Index v = begin; v < end; ++v) {
-        T n(0.0);
+        Sum n(0.0);
         const Index first = fan_offsets[v], last = fan_offsets[v + 1];
         for (Index i = first; i < last; ++i) {
           const Index c = fan[i];
-          const T& face = faces[is_quads ? c >> 2 : corner_faces[c]];
+          const Sum face = summand(faces[is_quads ? c >> 2 : corner_faces[c]]);
           n += !has_signs || signs[c] > 0 ? face : -face;
         }
         const Scalar len = glm::length(n);
         if (len > vanishing) {
-          out[v] = n * (Scalar(1) / len);
+          store_normal(out[v], n * (Scalar(1) / len));
         } else {
-          out[v] = T(0.0);
+          store_normal(out[v], Sum(0.0));
           if (last > first) part.push_back(v);
         }
       }

@@ -19,11 +19,11 @@ bool is_two_copy_offset(const Mesh& mesh) {
   return lowest_sign > 0 && !has_isolated_vertex;
 }
 
-bool offset_float_normals(const Mesh& mesh, const Normals& normals, Buffer<glm::vec3>& faces,
-                          Buffer<glm::vec3>& vertices, int threads) {
+bool offset_packed_normals(const Mesh& mesh, const Normals& normals, Buffer<PackedNormal>& faces,
+                           Buffer<PackedNormal>& vertices, int threads) {
   const Index nf = mesh.num_faces(), nv = mesh.num_vertices();
   if (normals.faces.size() != nf || normals.vertices.size() != nv)
-    throw InvalidInputError("offset_float_normals: " + std::to_string(normals.faces.size()) + " face and " +
+    throw InvalidInputError("offset_packed_normals: " + std::to_string(normals.faces.size()) + " face and " +
                             std::to_string(normals.vertices.size()) + " vertex normals for " +
                             std::to_string(nf) + " faces and " + std::to_string(nv) + " vertices");
   if (!is_two_copy_offset(mesh)) return false;
@@ -32,16 +32,16 @@ bool offset_float_normals(const Mesh& mesh, const Normals& normals, Buffer<glm::
   // Faces are the positive copies, then the negative ones (reversed); v+ is vertex 2v, v- 2v + 1.
   parallel_for(nf, threads, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f) {
-      const glm::vec3 n(normals.faces[f]);
+      const PackedNormal n = pack_normal(glm::vec3(normals.faces[f]));
       faces[f] = n;
-      faces[nf + f] = -n;
+      faces[nf + f] = negated(n);
     }
   });
   parallel_for(nv, threads, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v) {
-      const glm::vec3 n(normals.vertices[v]);
+      const PackedNormal n = pack_normal(glm::vec3(normals.vertices[v]));
       vertices[2 * std::size_t(v)] = n;
-      vertices[2 * std::size_t(v) + 1] = -n;
+      vertices[2 * std::size_t(v) + 1] = negated(n);
     }
   });
   return true;

@@ -206,10 +206,17 @@ Mesh Pipeline::take_result() {
   return out;
 }
 
-bool Pipeline::display_normals(Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices, int threads) const {
-  if (!result_ || result_ == &scene_->mesh() || (merged_->has_mesh() && result_ == &merged_->mesh()))
-    return false;
-  return solid_->display_normals(faces, vertices, threads);
+bool Pipeline::is_solid_result() const {
+  return result_ && result_ != &scene_->mesh() && !(merged_->has_mesh() && result_ == &merged_->mesh());
+}
+
+bool Pipeline::display_normals(Buffer<PackedNormal>& faces, Buffer<PackedNormal>& vertices,
+                               int threads) const {
+  return is_solid_result() && solid_->display_normals(faces, vertices, threads);
+}
+
+bool Pipeline::exchange_result_positions(Buffer<Vec3>& positions) {
+  return is_solid_result() && solid_->exchange_result_positions(positions);
 }
 
 StageWork Pipeline::work(Stage stage) const {

@@ -32,7 +32,8 @@ const Mesh& SolidStages::run(const Mesh& input, InputChange change, const Pipeli
   const PipelineSettings previous = last_settings_.value_or(s);
   last_settings_ = s;
   has_new_topology_ = is_first_run || change == InputChange::topology;
-  has_new_positions_ = has_new_topology_ || change == InputChange::positions;
+  has_new_positions_ = has_new_topology_ || change == InputChange::positions || has_exchanged_result_;
+  has_exchanged_result_ = false;
   try {
     return run_stages(input, s, previous);
   } catch (...) {
@@ -83,9 +84,17 @@ std::optional<Mesh> SolidStages::take_result() {
   return out;
 }
 
-bool SolidStages::display_normals(Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices, int threads) const {
+bool SolidStages::display_normals(Buffer<PackedNormal>& faces, Buffer<PackedNormal>& vertices,
+                                  int threads) const {
   if (!result_ || result_ != &offset_.result || !offset_.input) return false;
-  return offset_float_normals(*offset_.input, offset_.normals, faces, vertices, threads);
+  return offset_packed_normals(*offset_.input, offset_.normals, faces, vertices, threads);
+}
+
+bool SolidStages::exchange_result_positions(Buffer<Vec3>& positions) {
+  if (!result_ || positions.size() != result_->num_vertices()) return false;
+  result_->positions().swap(positions);
+  has_exchanged_result_ = true;
+  return true;
 }
 
 StageWork SolidStages::work(Stage stage) const {

@@ -28,9 +28,11 @@ class SolidStages {
 
   StageWork work(Stage stage) const;
   void set_progress(Progress progress) { progress_ = std::move(progress); }
-  // The last result's display normals when it is an offset of two parallel copies (offset_float_normals:
+  // The last result's display normals when it is an offset of two parallel copies (offset_packed_normals:
   // the surface's normals, already computed for the offset), else false.
-  bool display_normals(Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices, int threads) const;
+  bool display_normals(Buffer<PackedNormal>& faces, Buffer<PackedNormal>& vertices, int threads) const;
+  // Pipeline::exchange_result_positions for the last stage's result: false where no stage ran.
+  bool exchange_result_positions(Buffer<Vec3>& positions);
   // Warnings of the last run (degenerate faces met by the offset's normals).
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -55,8 +57,9 @@ class SolidStages {
   Mesh& offset_stage(const Mesh& in, const PipelineSettings& s);
 
   std::optional<PipelineSettings> last_settings_;
-  bool has_new_topology_ = true;   // of the current stage's input, during a run
-  bool has_new_positions_ = true;  // likewise
+  bool has_new_topology_ = true;       // of the current stage's input, during a run
+  bool has_new_positions_ = true;      // likewise
+  bool has_exchanged_result_ = false;  // its positions are another array's since the last run
   SubdivisionStage before_, after_;
   OffsetStage offset_;
   std::vector<std::string> warnings_;

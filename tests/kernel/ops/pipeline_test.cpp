@@ -270,3 +270,42 @@ TEST_CASE("moving input vertices needs an input, not a mesh given as the result"
   pipeline.run(build_mesh(test::tetrahedron()), scene_only);
   CHECK_THROWS_AS(pipeline.move_input_vertices(test::cube().positions), InvalidInputError);
 }
+
+TEST_CASE("a later stage's result positions change places with the caller's, then are made again",
+          "[kernel]") {
+  const Mesh band = build_mesh(test::mobius_band(12, 2));
+  for (const Stage stage : {Stage::subdivided, Stage::offset, Stage::subdivided_offset}) {
+    INFO("stage " << int(stage));
+    PipelineSettings s = full_options();
+    s.stage = stage;
+    Pipeline live;
+    const Buffer<Vec3> made = live.run(band, s).positions();
+    Buffer<Vec3> kept(made.size(), Vec3(7.0));
+    REQUIRE(live.exchange_result_positions(kept));
+    CHECK(kept == made);
+    // Nothing changed, yet every stage makes its positions again (the result held the caller's array).
+    const Mesh& again = live.run(band, s);
+    CHECK(again.positions() == made);
+    CHECK(live.work(Stage::subdivided) == StageWork::positions);
+    // The stage after one whose result changed places reads that result's positions made again.
+    if (stage == Stage::subdivided) {
+      Buffer<Vec3> other(made.size(), Vec3(7.0));
+      REQUIRE(live.exchange_result_positions(other));
+      s.stage = Stage::subdivided_offset;
+      Pipeline fresh;
+      CHECK(live.run(band, s).positions() == fresh.run(band, s).positions());
+    }
+    Buffer<Vec3> wrong_size(made.size() + 1, Vec3(7.0));
+    CHECK_FALSE(live.exchange_result_positions(wrong_size));
+    CHECK(wrong_size == Buffer<Vec3>(made.size() + 1, Vec3(7.0)));
+  }
+  // The scene's and merge's meshes stay the pipeline's.
+  for (const Stage stage : {Stage::scene, Stage::merged}) {
+    PipelineSettings s = full_options();
+    s.stage = stage;
+    Pipeline live;
+    Buffer<Vec3> kept(live.run(band, s).num_vertices(), Vec3(7.0));
+    CHECK_FALSE(live.exchange_result_positions(kept));
+    CHECK(kept == Buffer<Vec3>(band.num_vertices(), Vec3(7.0)));
+  }
+}

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/mesh/packed_normal.hpp"
 
 namespace nome {
 
@@ -28,17 +29,18 @@ Normals compute_normals(const Mesh& mesh);
 // The same into `out`, reusing its arrays' blocks (no fresh pages for a mesh no larger than the last), on
 // up to `threads` threads (the same normals and lists on any number).
 void compute_normals(const Mesh& mesh, Normals& out, int threads = 1);
-// The normals a GPU draws with, straight into `faces` and `vertices`: compute_normals' face normals
-// rounded; vertex normals summed and normalized in single precision (within about 1e-6 of
-// compute_normals' rounded, and zero where those are). On up to `threads` threads, the same normals on
-// any number: the vertex sums take a second thread only where the faces split into two halves that share
-// no vertex (an offset's two sides), as do compute_normals'.
-void compute_float_normals(const Mesh& mesh, Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices,
-                           int threads);
+// The normals a GPU draws with, packed (PackedNormal), straight into `faces` and `vertices`:
+// compute_normals' face normals packed; vertex normals summed from those and packed (within about 0.01 of
+// compute_normals', and zero where those are, or where the fan's sum is shorter than 0.01: a fold, which
+// the display shades with its faces' normals). A third of the bytes of float vectors to write and upload,
+// and the gather's random reads of face normals touch a third of the cache lines. On up to `threads`
+// threads, the same normals on any number.
+void compute_packed_normals(const Mesh& mesh, Buffer<PackedNormal>& faces, Buffer<PackedNormal>& vertices,
+                            int threads);
 // Its two passes, for a caller that runs other work beside the second: `faces` from the first.
-void compute_float_face_normals(const Mesh& mesh, Buffer<glm::vec3>& faces, int threads);
-void compute_float_vertex_normals(const Mesh& mesh, std::span<const glm::vec3> faces,
-                                  Buffer<glm::vec3>& vertices, int threads = 1);
+void compute_packed_face_normals(const Mesh& mesh, Buffer<PackedNormal>& faces, int threads);
+void compute_packed_vertex_normals(const Mesh& mesh, std::span<const PackedNormal> faces,
+                                   Buffer<PackedNormal>& vertices, int threads = 1);
 
 // A warning naming the degenerate faces and vertices of `normals` (the first few of each, by label),
 // or "" when there are none: for the caller to show, since the kernel never prints.

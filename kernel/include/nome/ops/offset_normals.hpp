@@ -1,10 +1,9 @@
 #pragma once
 
-#include <glm/vec3.hpp>
-
 #include "nome/mesh/buffer.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/normals.hpp"
+#include "nome/mesh/packed_normal.hpp"
 
 namespace nome {
 
@@ -15,13 +14,13 @@ bool is_two_copy_offset(const Mesh& mesh);
 
 // The normals a display draws offset(mesh, {distance}) with, for any distance, when it is two parallel
 // copies (is_two_copy_offset): v+ and face f take the surface's n_v and n_f, v- and f's reversed copy
-// -n_v and -n_f, rounded to single precision. These are the normals of the exact offset surface (the
+// -n_v and -n_f, packed (PackedNormal). These are the normals of the exact offset surface (the
 // surface moved by d along its normals has, at p + d n(p), the normal n(p)) rather than a new estimate
 // from the offset's own polygons, and they cost a copy instead of two normal passes over twice the faces.
 // `normals` are compute_normals(mesh)'. On up to `threads` threads. Returns false, leaving `faces` and
 // `vertices` as they were, when the offset has rims or Möbius crossings (whose normals are new);
 // throws InvalidInputError when `normals` do not fit the mesh.
-bool offset_float_normals(const Mesh& mesh, const Normals& normals, Buffer<glm::vec3>& faces,
-                          Buffer<glm::vec3>& vertices, int threads = 1);
+bool offset_packed_normals(const Mesh& mesh, const Normals& normals, Buffer<PackedNormal>& faces,
+                           Buffer<PackedNormal>& vertices, int threads = 1);
 
 }  // namespace nome

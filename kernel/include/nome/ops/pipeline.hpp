@@ -111,8 +111,13 @@ class Pipeline {
   void set_progress(Progress progress);
 
   // The normals a display draws the last run's result with when the kernel has them already: an offset
-  // of two parallel copies (offset_float_normals), else false (the caller computes them).
-  bool display_normals(Buffer<glm::vec3>& faces, Buffer<glm::vec3>& vertices, int threads = 1) const;
+  // of two parallel copies (offset_packed_normals), else false (the caller computes them).
+  bool display_normals(Buffer<PackedNormal>& faces, Buffer<PackedNormal>& vertices, int threads = 1) const;
+  // Swaps the last run's result positions with `positions` when the result is a subdivision's or an
+  // offset's and `positions` has as many: a caller that keeps each result (a viewer's slider) then takes
+  // them without copying, and hands back an older array to be written over. The stages compute their
+  // positions again at the next run, whatever changed. Otherwise returns false and changes nothing.
+  bool exchange_result_positions(Buffer<Vec3>& positions);
 
   // What each stage did in the last run.
   StageWork work(Stage stage) const;
@@ -123,6 +128,8 @@ class Pipeline {
 
  private:
   void input_changed(int change);
+  // Whether the last result is the solid stages' (not the scene's or merge's mesh).
+  bool is_solid_result() const;
   // run(), with the budget checked for `budgeted` (the last level as quads when `streams_last_level`).
   const Mesh& run(const PipelineSettings& settings, const PipelineSettings& budgeted,
                   bool streams_last_level);
