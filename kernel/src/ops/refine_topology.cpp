@@ -1,3 +1,10 @@
+#include <emmintrin.h>
+
+#include <algorithm>
+#include <array>
+#include <type_traits>
+#include <vector>
+
 #include "ops/parallel_for.hpp"
 #include "ops/refinement_level.hpp"
 
@@ -10,6 +17,21 @@ using Level = Refinement::Level;
 template <class Parent>
 Index half_edge_child(const Parent& p, Index e, Index v) {
   return 2 * e + (p.edge_ends(e)[0] == v ? 0 : 1);
+}
+
+// The children, on corner c's side, of the edges leaving and arriving at c. A refined level tells which
+// end is which from its numbering (Level::leaves_first_end): two dependent scattered reads fewer per edge
+// (an edge's ends are distinct there, so the arriving edge's first end is c's vertex when it is not
+// prev(c)'s).
+template <class Parent>
+std::array<Index, 2> corner_halves(const Parent& p, Index c, Index leaving, Index arriving) {
+  if constexpr (std::is_same_v<Parent, Level>) {
+    return {2 * leaving + (p.leaves_first_end(c) ? 0 : 1),
+            2 * arriving + (p.leaves_first_end(p.prev_corner(c)) ? 1 : 0)};
+  } else {
+    const Index v = p.corner_vertex(c);
+    return {half_edge_child(p, leaving, v), half_edge_child(p, arriving, v)};
+  }
 }
 
 // Each parent corner c becomes child quad c: (vertex point, edge point of the edge leaving c, face
@@ -27,11 +49,12 @@ void child_corners(const Parent& p, Level& child, bool with_edges, int threads) 
       q[2] = p.corner_face(c);
       q[3] = nf + in;
       if (!with_edges) continue;
+      const auto [out_half, in_half] = corner_halves(p, c, out, in);
       Index* qe = child.corner_edges.data() + 4 * size_t(c);
-      qe[0] = half_edge_child(p, out, v);
+      qe[0] = out_half;
       qe[1] = 2 * ne + c;
       qe[2] = 2 * ne + pc;
-      qe[3] = half_edge_child(p, in, v);
+      qe[3] = in_half;
     }
   });
 }
@@ -69,33 +92,56 @@ void child_edges(const Parent& p, Level& child, int threads) {
 }
 
 // Fan sizes of the child vertices as CSR offsets: a face point has the face's degree, an edge point
-// 4 corners and 4 edges (2 and 3 on a border), a vertex point its parent's fan.
+// 4 corners and 4 edges (2 and 3 on a border), a vertex point its parent's fan. Written in parallel: the
+// face points' offsets are the parent's face offsets, the vertex points' its fan offsets, and the edge
+// points' follow from the border edges before each, counted range by range first.
 template <class Parent>
-void child_fan_offsets(const Parent& p, Level& child) {
-  const Index nf = p.num_faces(), ne = p.num_edges(), nv = p.num_vertices();
+void child_fan_offsets(const Parent& p, Level& child, int threads) {
+  const Index nf = p.num_faces(), ne = p.num_edges(), nv = p.num_vertices(), nc = p.num_corners();
   auto& co = child.fan_corner_offsets;
   auto& eo = child.fan_edge_offsets;
   resize_for_overwrite(co, size_t(nf) + ne + nv + 1);
   resize_for_overwrite(eo, co.size());
   co[0] = eo[0] = 0;
-  for (Index f = 0; f < nf; ++f) co[f + 1] = eo[f + 1] = p.face_end(f);
-  Index c = co[nf], e = eo[nf];
-  for (Index i = 0; i < ne; ++i) {
-    const bool border = p.is_boundary(i);
-    co[nf + i + 1] = c += border ? 2 : 4;
-    eo[nf + i + 1] = e += border ? 3 : 4;
-  }
-  for (Index v = 0; v < nv; ++v) {
-    co[nf + ne + v + 1] = c += Index(p.vertex_corners(v).size());
-    eo[nf + ne + v + 1] = e += Index(p.vertex_edges(v).size());
-  }
+  parallel_for(nf, threads, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f) co[f + 1] = eo[f + 1] = p.face_end(f);
+  });
+  const Index parts = Index(std::max(threads, 1)), part = (ne + parts - 1) / parts;
+  std::vector<Index> borders_before(parts + 1, 0);
+  const auto each_part = [&](const auto& body) {
+    parallel_for(
+        parts, threads,
+        [&](Index begin, Index end) {
+          for (Index t = begin; t < end; ++t) body(t, std::min(ne, t * part), std::min(ne, (t + 1) * part));
+        },
+        1);
+  };
+  each_part([&](Index t, Index begin, Index end) {
+    for (Index e = begin; e < end; ++e) borders_before[t + 1] += p.is_boundary(e) ? 1 : 0;
+  });
+  for (Index t = 0; t < parts; ++t) borders_before[t + 1] += borders_before[t];
+  each_part([&](Index t, Index begin, Index end) {
+    Index borders = borders_before[t];
+    for (Index e = begin; e < end; ++e) {
+      borders += p.is_boundary(e) ? 1 : 0;
+      co[nf + e + 1] = nc + 4 * (e + 1) - 2 * borders;
+      eo[nf + e + 1] = nc + 4 * (e + 1) - borders;
+    }
+  });
+  const Index corners_before = co[nf + ne], edges_before = eo[nf + ne];
+  parallel_for(nv, threads, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v) {
+      co[nf + ne + v + 1] = corners_before + p.fan_corner_offset(v + 1);
+      eo[nf + ne + v + 1] = edges_before + p.fan_edge_offset(v + 1);
+    }
+  });
 }
 
 // The fans themselves, in order (see Mesh).
 template <class Parent>
 void child_fans(const Parent& p, Level& child, int threads) {
   const Index nf = p.num_faces(), ne = p.num_edges();
-  child_fan_offsets(p, child);
+  child_fan_offsets(p, child, threads);
   resize_for_overwrite(child.fan_corners, child.fan_corner_offsets.back());
   resize_for_overwrite(child.fan_edges, child.fan_edge_offsets.back());
   Index* fc = child.fan_corners.data();
@@ -176,6 +222,49 @@ void refine_topology(const Parent& p, Level& child, LevelDetail detail, int thre
   child_fans(p, child, threads);
 }
 
+// refine_grandchild_quads over the faces [begin, end) of a refined level, whose faces are all quads: the
+// four corners of a face side by side in the lanes of SSE2 registers (x86-64's baseline), written as 16
+// stores of four corners each instead of 64 of one (the scalar loop was bound by its stores).
+void level_grandchild_quads(const Level& g, Index* out, Index begin, Index end) {
+  const Index nf = g.num_faces(), ne = g.num_edges(), nc = g.num_corners();
+  const Index ep = nc, vp = nc + 2 * ne + nc;
+  const __m128i lanes = _mm_setr_epi32(0, 1, 2, 3);
+  // Level::leaves_first_end for the four corners of a face: ((odd ^ flip) & keep) | always.
+  const __m128i flip = _mm_setr_epi32(1, 0, 0, 0), keep = _mm_setr_epi32(1, 0, 0, 1);
+  const __m128i always = _mm_setr_epi32(0, 1, 0, 0), one = _mm_set1_epi32(1);
+  const auto previous = [](__m128i x) { return _mm_shuffle_epi32(x, _MM_SHUFFLE(2, 1, 0, 3)); };
+  const auto splat = [](Index x) { return _mm_set1_epi32(int(x)); };
+  const auto load = [](const Index* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
+  for (Index f = begin; f < end; ++f) {
+    const Index b = 4 * f;
+    const __m128i vertex = load(g.corner_vertices.data() + b), leaving = load(g.corner_edges.data() + b);
+    const __m128i arriving = previous(leaving);
+    const __m128i corner = _mm_add_epi32(splat(b), lanes);
+    const __m128i first_end =
+        _mm_or_si128(_mm_and_si128(_mm_xor_si128(_mm_and_si128(leaving, one), flip), keep), always);
+    // Per lane k (corner b + k), child quad b + k's vertices j = 0..3 and edges j = 0..3, as grandchild
+    // points.
+    const __m128i vertices[4] = {_mm_add_epi32(vertex, splat(vp + nf + ne)),
+                                 _mm_add_epi32(leaving, splat(vp + nf)), splat(vp + f),
+                                 _mm_add_epi32(arriving, splat(vp + nf))};
+    const __m128i edges[4] = {
+        _mm_add_epi32(_mm_add_epi32(leaving, leaving), _mm_sub_epi32(splat(ep + 1), first_end)),
+        _mm_add_epi32(corner, splat(ep + 2 * ne)), _mm_add_epi32(previous(corner), splat(ep + 2 * ne)),
+        _mm_add_epi32(_mm_add_epi32(arriving, arriving), _mm_add_epi32(splat(ep), previous(first_end)))};
+    Index* q = out + 16 * std::size_t(b);
+    for (int j = 0; j < 4; ++j) {
+      // Rows k of (vertex j, edge j, the corner, edge j - 1): a 4x4 transpose.
+      const __m128i low = _mm_unpacklo_epi32(vertices[j], edges[j]);
+      const __m128i high = _mm_unpackhi_epi32(vertices[j], edges[j]);
+      const __m128i low_corner = _mm_unpacklo_epi32(corner, edges[(j + 3) & 3]);
+      const __m128i high_corner = _mm_unpackhi_epi32(corner, edges[(j + 3) & 3]);
+      const __m128i rows[4] = {_mm_unpacklo_epi64(low, low_corner), _mm_unpackhi_epi64(low, low_corner),
+                               _mm_unpacklo_epi64(high, high_corner), _mm_unpackhi_epi64(high, high_corner)};
+      for (int k = 0; k < 4; ++k) _mm_storeu_si128(reinterpret_cast<__m128i*>(q + 16 * k + 4 * j), rows[k]);
+    }
+  }
+}
+
 // Grandparent corner c gives child quad c (child_corners), whose corner 4c+k gives grandchild quad
 // 4c+k: (vertex point of the child quad's k-th vertex, edge point of its k-th edge, face point of child
 // quad c, edge point of its edge k-1). The 16 corners of c are written in one go, in order.
@@ -189,22 +278,28 @@ void refine_grandchild_quads(const Grandparent& g, Level& grandchild, int thread
   resize_for_overwrite(grandchild.corner_vertices, 16 * size_t(nc));
   grandchild.corner_edges = {};
   drop_adjacency(grandchild);
-  parallel_for(nc, threads, [&](Index begin, Index end) {
-    for (Index c = begin; c < end; ++c) {
-      const Index v = g.corner_vertex(c), pc = g.prev_corner(c);
-      const Index leaving = g.corner_edge(c), arriving = g.corner_edge(pc);
-      const Index vertices[4] = {nf + ne + v, nf + leaving, g.corner_face(c), nf + arriving};
-      const Index edges[4] = {half_edge_child(g, leaving, v), 2 * ne + c, 2 * ne + pc,
-                              half_edge_child(g, arriving, v)};
-      Index* q = grandchild.corner_vertices.data() + 16 * size_t(c);
-      for (int k = 0; k < 4; ++k) {
-        q[4 * k] = vp + vertices[k];
-        q[4 * k + 1] = ep + edges[k];
-        q[4 * k + 2] = c;
-        q[4 * k + 3] = ep + edges[(k + 3) & 3];
+  Index* out = grandchild.corner_vertices.data();
+  if constexpr (std::is_same_v<Grandparent, Level>) {
+    parallel_for(nf, threads, [&](Index begin, Index end) { level_grandchild_quads(g, out, begin, end); });
+  } else {
+    parallel_for(nc, threads, [&](Index begin, Index end) {
+      for (Index c = begin; c < end; ++c) {
+        const Index v = g.corner_vertex(c), pc = g.prev_corner(c);
+        const Index leaving = g.corner_edge(c), arriving = g.corner_edge(pc);
+        const auto [leaving_half, arriving_half] = corner_halves(g, c, leaving, arriving);
+        const Index vertices[4] = {vp + nf + ne + v, vp + nf + leaving, vp + g.corner_face(c),
+                                   vp + nf + arriving};
+        const Index edges[4] = {ep + leaving_half, ep + 2 * ne + c, ep + 2 * ne + pc, ep + arriving_half};
+        Index* q = out + 16 * size_t(c);
+        for (int k = 0; k < 4; ++k) {
+          q[4 * k] = vertices[k];
+          q[4 * k + 1] = edges[k];
+          q[4 * k + 2] = c;
+          q[4 * k + 3] = edges[(k + 3) & 3];
+        }
       }
-    }
-  });
+    });
+  }
 }
 
 template void refine_topology(const MeshLevelView&, Level&, LevelDetail, int);

@@ -51,6 +51,15 @@ struct Refinement::Level {
     return {corner_vertices[c], corner_vertices[next_corner(c)]};
   }
   Index edge_corner(Index e, int side) const { return edge_corners[e][side]; }
+  // Whether corner c's vertex is the first end of the edge leaving it (edge_ends(corner_edge(c))[0]),
+  // told by the numbering of a refined level's edges without reading the edge: corner 4p+k of a parent
+  // corner p leaves along a half 2e (from the parent edge's first end: k = 0 on an even edge) or 2e+1 (from
+  // its edge point: k = 3 on an odd one), or along an interior edge, which runs from its edge point (k = 1)
+  // to the face point (k = 2). See refine_topology.cpp. Bit 2k + (edge odd) of a table: no branches.
+  bool leaves_first_end(Index c) const {
+    constexpr unsigned table = 0b10001101;  // k = 0: even; k = 1: any; k = 2: none; k = 3: odd
+    return (table >> (2 * (c & 3) + (corner_edges[c] & 1))) & 1;
+  }
   bool is_mobius(Index e) const { return edge_flags[e] & mobius_flag; }
   bool is_sharp(Index e) const { return edge_flags[e] & sharp_flag; }
   bool is_boundary(Index e) const { return edge_flags[e] & boundary_flag; }
@@ -61,6 +70,9 @@ struct Refinement::Level {
   std::span<const Index> vertex_edges(Index v) const {
     return {fan_edges.data() + fan_edge_offsets[v], fan_edge_offsets[v + 1] - fan_edge_offsets[v]};
   }
+  // Where vertex v's fan starts (v = num_vertices(): the end of the last).
+  Index fan_corner_offset(Index v) const { return fan_corner_offsets[v]; }
+  Index fan_edge_offset(Index v) const { return fan_edge_offsets[v]; }
 };
 
 // A base Mesh seen through the accessors of a Level.
@@ -86,6 +98,8 @@ class MeshLevelView {
   bool is_crease(Index e) const { return m_.edge(e).is_sharp || m_.edge(e).is_boundary(); }
   std::span<const Index> vertex_corners(Index v) const { return m_.vertex_corners(v); }
   std::span<const Index> vertex_edges(Index v) const { return m_.vertex_edges(v); }
+  Index fan_corner_offset(Index v) const { return m_.fan_corner_offsets()[v]; }
+  Index fan_edge_offset(Index v) const { return m_.fan_edge_offsets()[v]; }
 
  private:
   const Mesh& m_;

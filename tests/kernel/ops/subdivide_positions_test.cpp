@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -326,6 +327,8 @@ TEST_CASE("the classic pass by base-face tiles gives the bits of one level at a 
         Buffer<Vec3> out(refinement.num_vertices(), Vec3(std::nan("")));
         refinement.refine_positions(base, SubdivisionRule::classic, out, threads);
         CHECK(out == stepwise.positions());
+        // The quads too: a refined level's edge ends and the last level's quads are told arithmetically.
+        CHECK(std::ranges::equal(refinement.quad_vertices(), stepwise.corner_vertices()));
       }
     }
   }
