@@ -222,6 +222,8 @@ void refine_topology(const Parent& p, Level& child, LevelDetail detail, int thre
   child_fans(p, child, threads);
 }
 
+namespace {
+
 // refine_grandchild_quads over the faces [begin, end) of a refined level, whose faces are all quads: the
 // four corners of a face side by side in the lanes of SSE2 registers (x86-64's baseline), written as 16
 // stores of four corners each instead of 64 of one (the scalar loop was bound by its stores).
@@ -264,6 +266,8 @@ void level_grandchild_quads(const Level& g, Index* out, Index begin, Index end) 
     }
   }
 }
+
+}  // namespace
 
 // Grandparent corner c gives child quad c (child_corners), whose corner 4c+k gives grandchild quad
 // 4c+k: (vertex point of the child quad's k-th vertex, edge point of its k-th edge, face point of child
