@@ -2,8 +2,28 @@
 
 #include <chrono>
 #include <exception>
+#include <utility>
 
 namespace nome {
+
+void FirstError::run(const std::function<void(unsigned)>& task, unsigned i) noexcept {
+  try {
+    task(i);
+  } catch (...) {
+    const std::lock_guard lock(mutex_);
+    if (!error_) error_ = std::current_exception();
+  }
+}
+
+void FirstError::rethrow() {
+  std::exception_ptr error;
+  {
+    const std::lock_guard lock(mutex_);
+    std::swap(error, error_);
+  }
+  if (error) std::rethrow_exception(error);
+}
+
 namespace {
 
 // Waits until `value` differs from `old` and returns the new value: first spinning for a few tens of
@@ -25,11 +45,13 @@ std::uint32_t wait_for_change(const std::atomic<std::uint32_t>& value, std::uint
 }
 
 void run_on_new_threads(unsigned count, const std::function<void(unsigned)>& task) {
+  FirstError error;
   std::vector<std::thread> threads;
   threads.reserve(count - 1);
-  for (unsigned i = 1; i < count; ++i) threads.emplace_back(task, i);
-  task(0);
+  for (unsigned i = 1; i < count; ++i) threads.emplace_back([&, i] { error.run(task, i); });
+  error.run(task, 0);
   for (std::thread& thread : threads) thread.join();
+  error.rethrow();
 }
 
 }  // namespace
@@ -71,20 +93,15 @@ void WorkerPool::run(unsigned count, const std::function<void(unsigned)>& task) 
   unfinished_.store(std::uint32_t(workers_.size()), std::memory_order_relaxed);
   pass_.fetch_add(1, std::memory_order_release);
   pass_.notify_all();
-  // The workers hold the task until they are done: an exception here waits for them too.
-  std::exception_ptr error;
-  try {
-    task(0);
-  } catch (...) {
-    error = std::current_exception();
-  }
+  // The workers hold the task until they are done: an exception in any task waits for them too.
+  error_.run(task, 0);
   for (std::uint32_t left = unfinished_.load(std::memory_order_acquire); left != 0;)
     left = wait_for_change(unfinished_, left);
-  if (error) std::rethrow_exception(error);
+  error_.rethrow();
 }
 
 void WorkerPool::serve(unsigned worker) {
-  if (worker + 1 < count_) (*task_)(worker + 1);
+  if (worker + 1 < count_) error_.run(*task_, worker + 1);
   if (unfinished_.fetch_sub(1, std::memory_order_acq_rel) == 1) unfinished_.notify_one();
 }
 

@@ -95,3 +95,23 @@ TEST_CASE("An exception in the caller's task reaches the caller after the other 
   after.run(pool);
   CHECK(after.each_ran_once());
 }
+
+TEST_CASE("An exception in a worker's task reaches the caller, also on threads of a busy pool", "[kernel]") {
+  WorkerPool pool;
+  std::atomic<int> others{0};
+  const auto throwing = [&](unsigned i) {
+    if (i == 2) throw std::runtime_error("task 2");
+    ++others;
+  };
+  CHECK_THROWS_WITH(pool.run(3, throwing), "task 2");
+  CHECK(others == 2);
+  // From inside a task the pool is busy: the nested pass runs on threads of its own.
+  CHECK_THROWS_WITH(pool.run(2,
+                             [&](unsigned i) {
+                               if (i == 0) pool.run(3, throwing);
+                             }),
+                    "task 2");
+  Pass after(3);
+  after.run(pool);
+  CHECK(after.each_ran_once());
+}

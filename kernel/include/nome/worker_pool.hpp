@@ -2,12 +2,25 @@
 
 #include <atomic>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
 
 namespace nome {
+
+// The first exception thrown by the tasks of a pass, on whichever thread, for the caller to rethrow.
+class FirstError {
+ public:
+  void run(const std::function<void(unsigned)>& task, unsigned i) noexcept;
+  // Rethrows the exception kept, if any, and forgets it.
+  void rethrow();
+
+ private:
+  std::mutex mutex_;
+  std::exception_ptr error_;
+};
 
 // Threads kept from one parallel pass to the next. Starting a thread costs tens of microseconds on these
 // machines, and a refinement or a slider's tick runs dozens of passes of a few hundred microseconds each.
@@ -22,8 +35,8 @@ class WorkerPool {
   static WorkerPool& shared();
 
   // Runs task(i) for every i in [0, count), task(0) on the calling thread, and returns once all have
-  // run. A pass asked for while another runs (from another thread, or from inside a task) gets threads
-  // of its own for its length.
+  // run; then rethrows the first exception a task threw, on any thread. A pass asked for while another runs
+  // (from another thread, or from inside a task) gets threads of its own for its length.
   void run(unsigned count, const std::function<void(unsigned)>& task);
 
  private:
@@ -39,6 +52,7 @@ class WorkerPool {
   // Workers yet to finish the current pass: every worker answers every pass, those without a task at once,
   // so that none still reads `count_` when the next pass writes it.
   std::atomic<std::uint32_t> unfinished_{0};
+  FirstError error_;  // of the current pass
 };
 
 }  // namespace nome
