@@ -127,11 +127,12 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
   }
   // A new topology's copy (memory bound) beside the display arrays; a kept copy of the same topology
   // takes the positions once the display arrays have read them.
-  if (!is_same) copies_.clear();
   std::future<std::shared_ptr<const Mesh>> copied;
-  if (!is_same)
+  if (!is_same) {
+    copies_.clear();
     copied = std::async(settings.threads > 1 ? std::launch::async : std::launch::deferred,
                         [&] { return new_copy(mesh); });
+  }
   result.display.positions = display_positions(mesh, *result.display.topology, settings.threads);
   result.display.face_colors = render::display_face_colors(mesh);
   if (is_same) {
