@@ -1,5 +1,6 @@
 #include <atomic>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -82,36 +83,27 @@ TEST_CASE("A pass nested in a task, or asked for from another thread, still runs
   CHECK(good == 400);
 }
 
-TEST_CASE("An exception in the caller's task reaches the caller after the other tasks ran", "[kernel]") {
-  WorkerPool pool;
-  std::atomic<int> others{0};
-  const auto throwing = [&](unsigned i) {
-    if (i == 0) throw std::runtime_error("task 0");
-    ++others;
-  };
-  CHECK_THROWS_WITH(pool.run(3, throwing), "task 0");
-  CHECK(others == 2);
-  Pass after(3);
-  after.run(pool);
-  CHECK(after.each_ran_once());
-}
-
-TEST_CASE("An exception in a worker's task reaches the caller, also on threads of a busy pool", "[kernel]") {
-  WorkerPool pool;
-  std::atomic<int> others{0};
-  const auto throwing = [&](unsigned i) {
-    if (i == 2) throw std::runtime_error("task 2");
-    ++others;
-  };
-  CHECK_THROWS_WITH(pool.run(3, throwing), "task 2");
-  CHECK(others == 2);
-  // From inside a task the pool is busy: the nested pass runs on threads of its own.
-  CHECK_THROWS_WITH(pool.run(2,
-                             [&](unsigned i) {
-                               if (i == 0) pool.run(3, throwing);
-                             }),
-                    "task 2");
-  Pass after(3);
-  after.run(pool);
-  CHECK(after.each_ran_once());
+TEST_CASE("An exception in any task reaches the caller after the other tasks ran, also on a busy pool",
+          "[kernel]") {
+  for (const unsigned thrower : {0u, 2u}) {
+    INFO("task " << thrower << " throws");
+    WorkerPool pool;
+    std::atomic<int> others{0};
+    const std::string what = "task " + std::to_string(thrower);
+    const auto throwing = [&](unsigned i) {
+      if (i == thrower) throw std::runtime_error(what);
+      ++others;
+    };
+    CHECK_THROWS_WITH(pool.run(3, throwing), what);
+    CHECK(others == 2);
+    // From inside a task the pool is busy: the nested pass runs on threads of its own.
+    CHECK_THROWS_WITH(pool.run(2,
+                               [&](unsigned i) {
+                                 if (i == 0) pool.run(3, throwing);
+                               }),
+                      what);
+    Pass after(3);
+    after.run(pool);
+    CHECK(after.each_ran_once());
+  }
 }
