@@ -7,7 +7,7 @@ namespace nome {
 // slider that rebuilds a 300,000-face sweep spent four times longer faulting pages than computing (issue
 // 15's figures). A program calls this first thing in main(); the kernel never changes the allocator by
 // itself. Larger blocks are the kernel's Buffers (transparent huge pages): up to a quarter of the memory
-// (2 GB at most) of those is kept too, each for the next Buffer of its size.
+// (2 GB at most) of those is kept too, for the next Buffers of any size.
 void keep_freed_memory();
 
 }  // namespace nome

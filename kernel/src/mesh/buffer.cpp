@@ -2,40 +2,148 @@
 
 #include <sys/mman.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
 #include <map>
 #include <mutex>
+#include <set>
 
 namespace nome {
 namespace {
 
 constexpr std::size_t huge_page = std::size_t(2) << 20;
 
-// Freed big blocks kept for the next allocation of the same rounded size, once a program asked for it
-// (keep_freed_buffers): glibc hands 2 MB-aligned blocks back out as fresh pages, so without this every
-// mesh of a few hundred thousand faces faulted in all its memory again (three quarters of a sweep's build).
+std::size_t rounded_size(std::size_t bytes) {
+  return (bytes + huge_page - 1) / huge_page * huge_page;
+}
+
+// Big blocks come straight from mmap, 2 MB aligned, so that kept memory can be cut, joined and moved to
+// where a new block needs it (munmap and mremap work on pages, not on what malloc handed out).
+char* map_block(std::size_t rounded) {
+  const std::size_t mapped = rounded + huge_page;
+  void* raw = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (raw == MAP_FAILED) throw std::bad_alloc();
+  char* start = static_cast<char*>(raw);
+  char* block = reinterpret_cast<char*>((reinterpret_cast<std::uintptr_t>(start) + huge_page - 1) &
+                                        ~std::uintptr_t(huge_page - 1));
+  if (block > start) munmap(start, std::size_t(block - start));
+  const std::size_t tail = mapped - std::size_t(block - start) - rounded;
+  if (tail > 0) munmap(block + rounded, tail);
+  madvise(block, rounded, MADV_HUGEPAGE);  // advice only: without huge pages it still works
+  return block;
+}
+
+// Freed big blocks kept for later allocations of any size, once a program asked for it
+// (keep_freed_buffers): the first touch of a fresh page costs about 30 times a write to a warm one on
+// these machines, so a command whose later stages (an offset) reuse the memory its earlier ones (a
+// subdivision's temporaries) freed runs several times faster than one that maps new memory for them.
+// A request takes the smallest kept range that holds it, or else moves kept ranges, largest first, into
+// a fresh block with mremap (the pages move, warm, without a copy); what they do not cover stays fresh.
 struct BlockCache {
   std::mutex mutex;
-  std::multimap<std::size_t, void*> blocks;  // rounded size -> block
+  std::map<char*, std::size_t> ranges;               // start -> bytes, none touching another
+  std::multimap<std::size_t, char*> ranges_by_size;  // bytes -> start, the same ranges
+  // Where one mapping may end and the next begin inside a range (ranges joined, pieces moved together):
+  // mremap moves one mapping at a time. More seams than mappings cost only extra calls.
+  std::set<char*> seams;
   std::size_t bytes = 0, limit = 0;
 
-  ~BlockCache() {
-    for (const auto& [size, block] : blocks) ::operator delete(block, std::align_val_t(huge_page));
+  void add(char* start, std::size_t size) {
+    ranges.emplace(start, size);
+    ranges_by_size.emplace(size, start);
+    bytes += size;
   }
-  void* take(std::size_t rounded) {
+  void remove(std::map<char*, std::size_t>::iterator range) {
+    auto same_size = ranges_by_size.find(range->second);
+    while (same_size->second != range->first) ++same_size;
+    ranges_by_size.erase(same_size);
+    bytes -= range->second;
+    ranges.erase(range);
+  }
+  // The pages of [start, start + size) no longer ours at this address (moved or unmapped).
+  void forget_seams(char* start, std::size_t size) {
+    seams.erase(seams.lower_bound(start), seams.lower_bound(start + size));
+  }
+  // Moves [from, from + size) to `to`, one mapping at a time; false if the system refused (the pages
+  // not moved stay where they were, the ones at `to` stay fresh).
+  bool move(char* from, std::size_t size, char* to) {
+    char* piece = from;
+    auto seam = seams.upper_bound(from);
+    while (piece < from + size) {
+      char* end = from + size;
+      if (seam != seams.end() && *seam < end) end = *seam++;
+      if (mremap(piece, std::size_t(end - piece), std::size_t(end - piece), MREMAP_MAYMOVE | MREMAP_FIXED,
+                 to + (piece - from)) == MAP_FAILED)
+        return false;
+      if (piece > from) seams.insert(to + (piece - from));
+      piece = end;
+    }
+    forget_seams(from, size);
+    return true;
+  }
+  char* take(std::size_t rounded) {
     const std::lock_guard lock(mutex);
-    const auto it = blocks.find(rounded);
-    if (it == blocks.end()) return nullptr;
-    void* block = it->second;
-    blocks.erase(it);
-    bytes -= rounded;
+    if (const auto fit = ranges_by_size.lower_bound(rounded); fit != ranges_by_size.end()) {
+      char* start = fit->second;
+      const std::size_t size = fit->first;
+      remove(ranges.find(start));
+      if (size > rounded) add(start + rounded, size - rounded);
+      return start;
+    }
+    if (ranges.empty()) return nullptr;
+    char* block = map_block(rounded);
+    std::size_t filled = 0;
+    while (filled < rounded && !ranges_by_size.empty()) {
+      const auto largest = std::prev(ranges_by_size.end());
+      char* start = largest->second;
+      const std::size_t whole = largest->first, size = std::min(whole, rounded - filled);
+      remove(ranges.find(start));
+      if (whole > size) add(start + size, whole - size);
+      if (!move(start, size, block + filled)) {
+        unmap(start, size);
+        continue;
+      }
+      seams.insert(block + filled);
+      filled += size;
+    }
+    if (filled < rounded) seams.insert(block + filled);
     return block;
   }
-  bool keep(void* block, std::size_t rounded) {
+  bool keep(char* start, std::size_t size) {
     const std::lock_guard lock(mutex);
-    if (bytes + rounded > limit) return false;
-    blocks.emplace(rounded, block);
-    bytes += rounded;
+    if (bytes + size > limit) return false;
+    const auto next = ranges.lower_bound(start);
+    if (next != ranges.begin()) {
+      const auto before = std::prev(next);
+      if (before->first + before->second == start) {
+        seams.insert(start);
+        start = before->first;
+        size += before->second;
+        remove(before);
+      }
+    }
+    if (next != ranges.end() && start + size == next->first) {
+      seams.insert(next->first);
+      size += next->second;
+      remove(next);
+    }
+    add(start, size);
     return true;
+  }
+  void unmap(char* start, std::size_t size) {
+    munmap(start, size);
+    forget_seams(start, size);
+  }
+  // Unmaps kept ranges, largest first, until at most `kept` bytes remain.
+  void shrink_to(std::size_t kept) {
+    while (bytes > kept) {
+      const auto largest = std::prev(ranges_by_size.end());
+      char* start = largest->second;
+      const std::size_t size = largest->first;
+      remove(ranges.find(start));
+      unmap(start, size);
+    }
   }
 };
 
@@ -44,31 +152,20 @@ BlockCache& block_cache() {
   return cache;
 }
 
-std::size_t rounded_size(std::size_t bytes) {
-  return (bytes + huge_page - 1) / huge_page * huge_page;
-}
-
 }  // namespace
 
 void keep_freed_buffers(std::size_t limit) {
   BlockCache& cache = block_cache();
   const std::lock_guard lock(cache.mutex);
   cache.limit = limit;
-  while (cache.bytes > limit) {
-    const auto it = cache.blocks.begin();
-    ::operator delete(it->second, std::align_val_t(huge_page));
-    cache.bytes -= it->first;
-    cache.blocks.erase(it);
-  }
+  cache.shrink_to(limit);
 }
 
 void* allocate_buffer(std::size_t bytes) {
   if (bytes < huge_page) return ::operator new(bytes);
   const std::size_t rounded = rounded_size(bytes);
-  if (void* kept = block_cache().take(rounded)) return kept;
-  void* block = ::operator new(rounded, std::align_val_t(huge_page));
-  madvise(block, rounded, MADV_HUGEPAGE);  // advice only: without huge pages it still works
-  return block;
+  if (char* kept = block_cache().take(rounded)) return kept;
+  return map_block(rounded);
 }
 
 // Unsized deletes: clang-14 (the fuzz build) has no sized deallocation by default.
@@ -77,7 +174,13 @@ void free_buffer(void* block, std::size_t bytes) noexcept {
     ::operator delete(block);
     return;
   }
-  if (!block_cache().keep(block, rounded_size(bytes))) ::operator delete(block, std::align_val_t(huge_page));
+  char* start = static_cast<char*>(block);
+  const std::size_t rounded = rounded_size(bytes);
+  BlockCache& cache = block_cache();
+  if (!cache.keep(start, rounded)) {
+    const std::lock_guard lock(cache.mutex);
+    cache.unmap(start, rounded);
+  }
 }
 
 }  // namespace nome

@@ -12,8 +12,9 @@ namespace nome {
 // machines) about 500-fold.
 void* allocate_buffer(std::size_t bytes);
 void free_buffer(void* block, std::size_t bytes) noexcept;
-// Keeps freed blocks of 2 MB or more, up to `limit` bytes in all, for the next allocation of their size
-// (0, the default, keeps none; keep_freed_memory() sets it for a program).
+// Keeps freed blocks of 2 MB or more, up to `limit` bytes in all, for later allocations of any size: a
+// smaller one takes part of a block, a larger one the kept blocks' pages moved together and fresh ones
+// for the rest (0, the default, keeps none; keep_freed_memory() sets it for a program).
 void keep_freed_buffers(std::size_t limit);
 
 // The allocator of Buffer: new elements are default-initialized, so arrays of trivial types are not
