@@ -147,3 +147,23 @@ TEST_CASE("STL and OBJ of the offset from its polygons are the bytes of its Mesh
       CHECK(ascii == streamed_ascii);
     }
 }
+
+TEST_CASE("after an offset's polygons the subdivision stays cached, and moved vertices rebuild it", "[io]") {
+  const Mesh torus = build_mesh(test::torus(8, 4));
+  Pipeline pipeline;
+  pipeline.set_input(torus);
+  REQUIRE(pipeline.run_surface(streamed_settings(2, 0.05)).polygons);
+  // What `nome export` then runs for the print check: the surface under the offset.
+  PipelineSettings surface = streamed_settings(2);
+  surface.stage = Stage::subdivided;
+  CHECK(pipeline.run(surface).positions() == Pipeline().run(torus, surface).positions());
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::cached);
+  Mesh moved = torus;
+  moved.positions()[0] += Vec3(0.1, 0.0, 0.0);
+  pipeline.set_input(moved);
+  CHECK(pipeline.run(surface).positions() == Pipeline().run(moved, surface).positions());
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::rebuilt);
+  pipeline.set_input(torus);
+  CHECK(pipeline.run(surface).positions() == Pipeline().run(torus, surface).positions());
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::positions);
+}

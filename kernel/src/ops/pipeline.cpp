@@ -175,8 +175,13 @@ PipelineSurface Pipeline::run_offset_polygons(const Mesh& input, const PipelineS
   // The offset's edges copy the input's sharp marks: only its Mesh carries them.
   if (needs_creases && has_sharp_edge(input)) return {&run(s), std::nullopt, std::nullopt};
   progress_("offset", 0.0);
-  PipelineSurface surface{nullptr, std::nullopt,
-                          offset_polygons(input, offset_normals(input, s.threads), s.distance())};
+  // A writer's one pass: the subdivision's refinement and the face normals are not needed again, and the
+  // polygons take their blocks instead of fresh pages (`nome export` of a level-5 torus's solid: 62 MB
+  // less at its peak of 784 MB).
+  solid_->release_refinements();
+  Normals normals = offset_normals(input, s.threads);
+  normals.faces = {};
+  PipelineSurface surface{nullptr, std::nullopt, offset_polygons(input, normals, s.distance())};
   progress_("offset", 1.0);
   return surface;
 }

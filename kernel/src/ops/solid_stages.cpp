@@ -97,6 +97,11 @@ bool SolidStages::exchange_result_positions(Buffer<Vec3>& positions) {
   return true;
 }
 
+void SolidStages::release_refinements() {
+  before_.refinement.reset();
+  after_.refinement.reset();
+}
+
 StageWork SolidStages::work(Stage stage) const {
   switch (stage) {
     case Stage::subdivided:
@@ -112,9 +117,12 @@ StageWork SolidStages::work(Stage stage) const {
 
 Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int levels,
                                    const PipelineSettings& s) {
-  if (has_new_topology_ || !stage.refinement || stage.levels != levels ||
-      stage.refinement->boundary() != s.boundary || stage.refinement->creases() != s.creases ||
-      !stage.refinement->fits(in)) {
+  // The result stands for the settings it was made with; the refinement, which a position pass needs, may
+  // have been released (release_refinements).
+  const bool is_same_topology = !has_new_topology_ && stage.levels == levels &&
+                                stage.boundary == s.boundary && stage.creases == s.creases &&
+                                (!stage.refinement || stage.refinement->fits(in));
+  if (!is_same_topology || (has_new_positions_ && !stage.refinement)) {
     progress_("subdivision", 0.0);
     // Into the last refinement's blocks where there is one: a slider that changes the topology then
     // faults in no fresh pages. A refinement that throws is dropped, as a new one would not be kept.
@@ -129,6 +137,8 @@ Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int 
       }
     }
     stage.levels = levels;
+    stage.boundary = s.boundary;
+    stage.creases = s.creases;
     progress_("subdivision", 0.4);
     Buffer<Vec3> positions(stage.refinement->num_vertices());
     stage.refinement->refine_positions(in, s.rule, positions, s.threads);

@@ -26,6 +26,9 @@ class SolidStages {
   // Moves the last stage's result out (none ran: none); the caches start over.
   std::optional<Mesh> take_result();
 
+  // Frees the subdivision stages' refinements (a one-shot caller's memory for its next stage): their
+  // results stay cached, and the next run that moves vertices rebuilds them.
+  void release_refinements();
   StageWork work(Stage stage) const;
   void set_progress(Progress progress) { progress_ = std::move(progress); }
   // The last result's display normals when it is an offset of two parallel copies (offset_packed_normals:
@@ -40,7 +43,9 @@ class SolidStages {
   struct SubdivisionStage {
     std::optional<Refinement> refinement;
     Mesh result;
-    int levels = 0;
+    int levels = 0;  // 0: no result
+    BoundaryMode boundary = BoundaryMode::edge_only;
+    CreaseOptions creases;
     StageWork work = StageWork::skipped;
   };
   struct OffsetStage {

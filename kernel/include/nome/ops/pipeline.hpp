@@ -102,7 +102,9 @@ class Pipeline {
   // The result of run() for a writer, with the same positions and polygons in the same order as run()'s
   // Mesh: the last subdivision level as quads straight from its Refinement (about a fifth of the memory);
   // an offset with no levels after it as offset_polygons (about a fifth, no edges or fans); otherwise
-  // run()'s Mesh. Valid until the next run. `needs_creases` as for run_to_last_subdivision.
+  // run()'s Mesh. Valid until the next run. `needs_creases` as for run_to_last_subdivision. Before an
+  // offset's polygons it frees the subdivisions' refinements: a later run keeps their results while
+  // nothing changes, and rebuilds them for moved vertices.
   PipelineSurface run_surface(const PipelineSettings& settings, bool needs_creases = false);
   // Moves the last result out (for a one-shot caller such as the command line); the caches start over.
   Mesh take_result();
