@@ -59,12 +59,12 @@ struct Labels {
 };
 
 Index next_corner(const MeshArrays& a, Index c) {
-  const Index f = a.corner_faces[c];
+  const Index f = a.corner_face(c);
   return c + 1 == a.face_offsets[f + 1] ? a.face_offsets[f] : c + 1;
 }
 
 Index prev_corner(const MeshArrays& a, Index c) {
-  const Index f = a.corner_faces[c];
+  const Index f = a.corner_face(c);
   return c == a.face_offsets[f] ? a.face_offsets[f + 1] - 1 : c - 1;
 }
 
@@ -145,7 +145,7 @@ void find_edges(MeshArrays& m, Index nv, const Labels& labels, Problems& problem
         e = static_cast<Index>(m.edges.size());
         Edge edge;
         edge.vertices = {from, to};
-        edge.faces[0] = m.corner_faces[c];
+        edge.faces[0] = m.corner_face(c);
         edge.corners[0] = c;
         m.edges.push_back(edge);
         stamp[other] = e;
@@ -153,12 +153,12 @@ void find_edges(MeshArrays& m, Index nv, const Labels& labels, Problems& problem
         Edge& edge = m.edges[e];
         if (edge.faces[1] != no_index) {
           problems.add("edge (" + labels.vertex(edge.vertices[0]) + ", " + labels.vertex(edge.vertices[1]) +
-                           ") has a third face " + labels.face(m.corner_faces[c]) + " besides " +
+                           ") has a third face " + labels.face(m.corner_face(c)) + " besides " +
                            labels.face(edge.faces[0]) + " and " + labels.face(edge.faces[1]),
-                       m.corner_faces[c]);
+                       m.corner_face(c));
           continue;
         }
-        edge.faces[1] = m.corner_faces[c];
+        edge.faces[1] = m.corner_face(c);
         edge.corners[1] = c;
         edge.is_mobius = from == edge.vertices[0];
       }
@@ -213,7 +213,7 @@ bool walk_fan(MeshArrays& m, Index v, std::span<const Index> corners, std::vecto
       m.fan_edges[out++] = e_out;
       break;
     }
-    const Index f_next = edge.other_face(m.corner_faces[c]);
+    const Index f_next = edge.other_face(m.corner_face(c));
     const Index side = edge.faces[0] == f_next ? 0 : 1;
     Index c_next = edge.corners[side];
     if (m.corner_vertices[c_next] != v) c_next = next_corner(m, c_next);
@@ -286,7 +286,7 @@ void find_fans(MeshArrays& m, Index nv, const SoupGrid* grid, const Labels& labe
     } else if (!walk_fan(m, v, std::span<const Index>(vertex_corner_list.data() + b, k), visited, out)) {
       problems.add("vertex " + labels.vertex(v) + ": its " + std::to_string(k) +
                        " faces do not form one fan (the surface touches itself there)",
-                   m.corner_faces[vertex_corner_list[b]]);
+                   m.corner_face(vertex_corner_list[b]));
     }
     m.fan_edge_offsets[v + 1] = out;
   }
@@ -360,6 +360,13 @@ Mesh build_mesh_from(PolygonSoup& soup) {
 
 void Mesh::find_corner_faces() {
   Buffer<Index>& corner_faces = arrays_.corner_faces;
+  const Buffer<Index>& offsets = arrays_.face_offsets;
+  bool is_quads = true;
+  for (Index f = 0; f <= num_faces(); ++f) is_quads &= offsets[f] == 4 * f;
+  if (is_quads) {
+    Buffer<Index>().swap(corner_faces);  // its block goes back for other arrays
+    return;
+  }
   resize_for_overwrite(corner_faces, num_corners());
   for (Index f = 0; f < num_faces(); ++f)
     std::fill(corner_faces.begin() + face_first_corner(f), corner_faces.begin() + arrays_.face_offsets[f + 1],
@@ -418,7 +425,7 @@ void Mesh::find_components() {
 
 Index Mesh::vertex_component(Index v) const {
   const auto corners = vertex_corners(v);
-  return corners.empty() ? no_index : arrays_.face_components[arrays_.corner_faces[corners.front()]];
+  return corners.empty() ? no_index : arrays_.face_components[corner_face(corners.front())];
 }
 
 std::string Mesh::vertex_label(Index v) const {

@@ -7,7 +7,7 @@
 
 namespace nome {
 
-// The edges of faces laid out as `grid` says (m's corner_vertices, face_offsets and corner_faces filled),
+// The edges of faces laid out as `grid` says (m's corner_vertices and face_offsets filled),
 // numbered and oriented as build_mesh's search would give them, found from the layout with no search.
 // False, with m's edges and corner_edges cleared, when the faces do not follow the layout or the layout is
 // one whose keys could name one edge twice (too few rings or points).

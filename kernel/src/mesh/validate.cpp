@@ -35,7 +35,10 @@ void check_arrays(const Mesh& m, Violations& out) {
   if (fo.empty() || fo.front() != 0 || fo.back() != nc) out.add("face_offsets do not span the corners");
   for (size_t f = 0; f + 1 < fo.size(); ++f)
     if (fo[f + 1] < fo[f] + 3) out.add("face " + std::to_string(f) + " has fewer than 3 corners");
-  if (m.corner_edges().size() != nc || m.corner_faces().size() != nc || m.corner_signs().size() != nc)
+  bool is_quads = true;
+  for (size_t f = 0; f < fo.size(); ++f) is_quads &= fo[f] == 4 * f;
+  if (m.corner_edges().size() != nc || m.corner_faces().size() != (is_quads ? 0 : nc) ||
+      m.corner_signs().size() != nc)
     out.add("corner arrays differ in size");
   for (Index c = 0; c < nc; ++c)
     if (m.corner_vertices()[c] >= m.num_vertices() || m.corner_edges()[c] >= m.num_edges())

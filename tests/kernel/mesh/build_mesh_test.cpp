@@ -2,6 +2,7 @@
 
 #include "nome/error.hpp"
 #include "nome/mesh/mesh.hpp"
+#include "nome/ops/subdivide.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
@@ -207,4 +208,25 @@ TEST_CASE("copy, soup round trip and transform", "[kernel]") {
   const Mesh moved = transformed(m, shift);
   CHECK(moved.position(0) == m.position(0) + Vec3(1, 2, 3));
   CHECK(moved.corner_vertices() == m.corner_vertices());
+}
+
+TEST_CASE("a mesh of quads only finds a corner's face without a table, any other mesh with one", "[kernel]") {
+  auto check_corner_faces = [](const Mesh& m) {
+    Index c = 0;
+    for (Index f = 0; f < m.num_faces(); ++f)
+      for (Index i = 0; i < m.face_degree(f); ++i, ++c) REQUIRE(m.corner_face(c) == f);
+    CHECK(validate(m).empty());
+    check_fans(m);
+  };
+  const Mesh quads = subdivide(build_mesh(test::mobius_band(6, 2)), {.levels = 1});
+  CHECK(quads.corner_faces().empty());
+  check_corner_faces(quads);
+  // The band and a triangle apart from it.
+  PolygonSoup mixed = test::mobius_band(6, 2);
+  const Index a = mixed.add_vertex({0.0, 0.0, 5.0}), b = mixed.add_vertex({1.0, 0.0, 5.0}),
+              c = mixed.add_vertex({0.0, 1.0, 5.0});
+  mixed.add_face({a, b, c});
+  const Mesh with_triangle = build_mesh(mixed);
+  CHECK(with_triangle.corner_faces().size() == with_triangle.num_corners());
+  check_corner_faces(with_triangle);
 }

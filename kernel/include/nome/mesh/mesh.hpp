@@ -34,7 +34,9 @@ struct Edge {
 // subdivision level, an offset solid) fills for assemble_mesh, and what a Mesh holds besides its loops and
 // names. Corner faces and boundary loops are derived; components too unless given.
 struct MeshArrays {
-  Buffer<Index> corner_faces;  // derived: written by assemble_mesh
+  // Derived, by assemble_mesh: empty when every face is a quad (corner c's face is then c / 4: a subdivided
+  // mesh or its offset saves 16 bytes a face).
+  Buffer<Index> corner_faces;
   Buffer<Vec3> positions;
   Buffer<Index> face_offsets{0};
   Buffer<Index> corner_vertices;
@@ -53,6 +55,8 @@ struct MeshArrays {
   std::vector<float> edge_sharpness;
   std::vector<float> vertex_sharpness;
   std::vector<bool> face_holes;
+
+  Index corner_face(Index c) const { return corner_faces.empty() ? c >> 2 : corner_faces[c]; }
 };
 
 // A 2-manifold polygon mesh, possibly with borders, possibly non-orientable, as index arrays.
@@ -87,11 +91,11 @@ class Mesh {
   Index face_degree(Index f) const { return arrays_.face_offsets[f + 1] - arrays_.face_offsets[f]; }
   Index face_first_corner(Index f) const { return arrays_.face_offsets[f]; }
   Index next_corner(Index c) const {
-    Index f = arrays_.corner_faces[c];
+    Index f = arrays_.corner_face(c);
     return c + 1 == arrays_.face_offsets[f + 1] ? arrays_.face_offsets[f] : c + 1;
   }
   Index prev_corner(Index c) const {
-    Index f = arrays_.corner_faces[c];
+    Index f = arrays_.corner_face(c);
     return c == arrays_.face_offsets[f] ? arrays_.face_offsets[f + 1] - 1 : c - 1;
   }
 
@@ -99,11 +103,12 @@ class Mesh {
   const Buffer<Index>& face_offsets() const { return arrays_.face_offsets; }
   const Buffer<Index>& corner_vertices() const { return arrays_.corner_vertices; }
   const Buffer<Index>& corner_edges() const { return arrays_.corner_edges; }
+  // Empty when every face is a quad (see corner_face).
   const Buffer<Index>& corner_faces() const { return arrays_.corner_faces; }
   const Buffer<signed char>& corner_signs() const { return arrays_.corner_signs; }
   Index corner_vertex(Index c) const { return arrays_.corner_vertices[c]; }
   Index corner_edge(Index c) const { return arrays_.corner_edges[c]; }
-  Index corner_face(Index c) const { return arrays_.corner_faces[c]; }
+  Index corner_face(Index c) const { return arrays_.corner_face(c); }
   int corner_sign(Index c) const { return arrays_.corner_signs[c]; }
 
   // Edges.
