@@ -113,6 +113,46 @@ struct LevelSix {
   double ms = 0, fresh_ms = 0, speed_up = 0, openmesh_ms = 0, cgal_ms = 0;
 };
 
+struct PeerMs {
+  double openmesh = 0, cgal = 0;  // 0: not installed
+};
+
+// OpenMesh's and CGAL's times for the same subdivision, printed as multiples of ours (`ours_ms`).
+PeerMs print_peers([[maybe_unused]] const Mesh& torus, [[maybe_unused]] int level,
+                   [[maybe_unused]] double ours_ms) {
+  PeerMs peers;
+#ifdef NOME_HAVE_OPENMESH
+  peers.openmesh = best_ms(level <= 4 ? 3 : 1, [&] {
+    OmMesh om = to_openmesh(torus);
+    OpenMesh::Subdivider::Uniform::CatmullClarkT<OmMesh> cc;
+    cc.attach(om);
+    cc(size_t(level));
+    cc.detach();
+  });
+  std::printf(" %7.1fx", peers.openmesh / ours_ms);
+#endif
+#ifdef NOME_HAVE_CGAL
+  peers.cgal = best_ms(level <= 4 ? 3 : 1, [&] {
+    CgalMesh cm = to_cgal(torus);
+    CGAL::Subdivision_method_3::CatmullClark_subdivision(cm, CGAL::parameters::number_of_iterations(level));
+  });
+  std::printf(" %8.1fx", peers.cgal / ours_ms);
+#endif
+  return peers;
+}
+
+void print_peer_legend() {
+#ifdef NOME_HAVE_OPENMESH
+  std::printf(
+      "(OpenMesh column: OpenMesh CatmullClarkT time / ours single-threaded, same input, same run)\n");
+#endif
+#ifdef NOME_HAVE_CGAL
+  std::printf(
+      "(CGAL column: CGAL Surface_mesh CatmullClark_subdivision time / ours, same input, same run)\n");
+#endif
+}
+
+// The level table: levels 1 to 6 of the torus, with the peers beside ours when `with_peers`.
 LevelSix torus_levels(int threads_available, bool with_peers) {
   LevelSix six;
   const Mesh torus = build_mesh(test::torus(64, 32));
@@ -141,44 +181,11 @@ LevelSix torus_levels(int threads_available, bool with_peers) {
                            : one_wall;
     std::printf("%5d %10.0f %10.2f %10.2f %12.1f %9.1f %10.2f %11.2fx", level, faces, one, fresh,
                 faces / one / 1e3, peak / faces, two, one_wall / two);
-    if (level == 6) {
-      six.ms = one;
-      six.fresh_ms = fresh;
-      six.speed_up = one_wall / two;
-    }
-    if (!with_peers) {
-      std::printf("\n");
-      continue;
-    }
-#ifdef NOME_HAVE_OPENMESH
-    const double om_ms = best_ms(level <= 4 ? 3 : 1, [&] {
-      OmMesh om = to_openmesh(torus);
-      OpenMesh::Subdivider::Uniform::CatmullClarkT<OmMesh> cc;
-      cc.attach(om);
-      cc(size_t(level));
-      cc.detach();
-    });
-    std::printf(" %7.1fx", om_ms / one);
-    if (level == 6) six.openmesh_ms = om_ms;
-#endif
-#ifdef NOME_HAVE_CGAL
-    const double cgal_ms = best_ms(level <= 4 ? 3 : 1, [&] {
-      CgalMesh cm = to_cgal(torus);
-      CGAL::Subdivision_method_3::CatmullClark_subdivision(cm, CGAL::parameters::number_of_iterations(level));
-    });
-    std::printf(" %8.1fx", cgal_ms / one);
-    if (level == 6) six.cgal_ms = cgal_ms;
-#endif
+    const PeerMs peers = with_peers ? print_peers(torus, level, one) : PeerMs{};
     std::printf("\n");
+    if (level == 6) six = {one, fresh, one_wall / two, peers.openmesh, peers.cgal};
   }
-#ifdef NOME_HAVE_OPENMESH
-  std::printf(
-      "(OpenMesh column: OpenMesh CatmullClarkT time / ours single-threaded, same input, same run)\n");
-#endif
-#ifdef NOME_HAVE_CGAL
-  std::printf(
-      "(CGAL column: CGAL Surface_mesh CatmullClark_subdivision time / ours, same input, same run)\n");
-#endif
+  if (with_peers) print_peer_legend();
   return six;
 }
 

@@ -137,6 +137,42 @@ void single_sample_figures(const StageResult& shown, const render::Camera& camer
       size.x, size.y, draw.wall_ms, draw.cpu_ms, floor.wall_ms, floor.cpu_ms, load().c_str());
 }
 
+// Five frames with nothing new to show: median wall and CPU milliseconds.
+template <class Frame>
+TrivialDraw time_frames(const Frame& frame) {
+  std::vector<double> wall, cpu;
+  for (int i = 0; i < 5; ++i) {
+    const auto start = Clock::now();
+    const double cpu_start = cpu_ms();
+    frame(0.0);
+    wall.push_back(ms_since(start));
+    cpu.push_back(cpu_ms() - cpu_start);
+  }
+  return {median(wall), median(cpu)};
+}
+
+struct SliderFrames {
+  double frame_ms = 0, latency_ms = 0;  // medians
+};
+
+// Eleven slider moves, each from the change to the frame that shows its result (the job runs beside the
+// frames): the frames' time and the changes' latency.
+template <class Frame>
+SliderFrames slider_frames(Session& session, const StageView& view, const Frame& frame) {
+  std::vector<double> frame_ms, latency_ms;
+  for (int i = 0; i < 11; ++i) {
+    session.set_parameter("t_r", i % 2 ? 0.35 : 0.36);
+    const auto start = Clock::now();
+    do {
+      const auto frame_start = Clock::now();
+      frame(0.0);
+      frame_ms.push_back(ms_since(frame_start));
+    } while (view.is_busy());
+    latency_ms.push_back(ms_since(start));
+  }
+  return {median(frame_ms), median(latency_ms)};
+}
+
 }  // namespace
 
 void million_figures() {
@@ -204,36 +240,18 @@ void frame_figures() {
   const Index faces = view.shown_mesh()->num_faces();
   floor_figures(*view.shown(), camera.projection_matrix(double(size.x) / size.y) * camera.view_matrix(),
                 size);
-  std::vector<double> draw_ms, draw_cpu, frame_ms, latency_ms;
-  for (int i = 0; i < 5; ++i) {
-    const auto start = Clock::now();
-    const double cpu = cpu_ms();
-    frame(0.0);
-    draw_ms.push_back(ms_since(start));
-    draw_cpu.push_back(cpu_ms() - cpu);
-  }
+  const TrivialDraw draw = time_frames(frame);
   // The same draw into a viewport of 16x16 pixels: what the vertices cost.
   const double vertex_cpu = time_draws(*renderer, camera, size, {16, 16}).cpu_ms;
-  // From the slider's change to the frame that shows its result: the job runs beside the frames.
-  for (int i = 0; i < 11; ++i) {
-    session.set_parameter("t_r", i % 2 ? 0.35 : 0.36);
-    const auto start = Clock::now();
-    do {
-      const auto frame_start = Clock::now();
-      frame(0.0);
-      frame_ms.push_back(ms_since(frame_start));
-    } while (view.is_busy());
-    latency_ms.push_back(ms_since(start));
-  }
+  const SliderFrames slider = slider_frames(session, view, frame);
   std::printf(
       "  slider t_r (moves vertices) at %u faces, 1280x800 4x MSAA: whole frame, draw included, median %.1f "
       "ms (target < 33 ms), from the change to its picture %.1f ms; the draw alone %.1f ms (%.1f ms CPU, "
       "all threads; %.1f ms CPU into 16x16 pixels) [%s]\n",
-      faces, median(frame_ms), median(latency_ms), median(draw_ms), median(draw_cpu), vertex_cpu,
-      load().c_str());
+      faces, slider.frame_ms, slider.latency_ms, draw.wall_ms, draw.cpu_ms, vertex_cpu, load().c_str());
   single_sample_figures(*view.shown(), camera, *renderer, size);
   framebuffer.bind();
-  topology_figures(session, view, frame, faces, median(draw_ms));
+  topology_figures(session, view, frame, faces, draw.wall_ms);
 }
 
 double cpu_ms() {
