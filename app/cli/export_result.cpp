@@ -29,12 +29,11 @@ ExportCounts write_result(LoadedInput& loaded, const std::filesystem::path& path
       else
         write_stl(path, streamed, format.stl, progress);
     };
-    if (surface.polygons) {
-      const PolygonSoup& solid = *surface.polygons;
-      write(solid);
+    if (surface.solid) {
+      write(*surface.solid);
       // Each polygon is a fan of its corner count less two triangles.
-      return {solid.num_vertices(), solid.num_faces(),
-              solid.face_vertices.size() - 2 * std::uint64_t(solid.num_faces())};
+      return {surface.solid->num_vertices(), surface.solid->num_faces(),
+              surface.solid->num_corners() - 2 * std::uint64_t(surface.solid->num_faces())};
     }
     if (surface.quads) {
       write(*surface.quads);

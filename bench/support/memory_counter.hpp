@@ -2,13 +2,13 @@
 
 #include <cstddef>
 
-// Heap bytes live and their peak, counted by this executable's replacement operator new/delete.
+// Resident bytes and their peak, from /proc/self/status: the kernel's big arrays are pages mapped for
+// them (nome/mesh/buffer.hpp), which no operator new sees.
 namespace nome::bench {
 
-std::size_t live_bytes();
-// Starts a new peak measurement from the bytes live now.
+// Starts a new peak measurement from the bytes resident now.
 void reset_peak();
-// The highest live byte count since reset_peak(), minus the bytes live at that reset.
+// The highest resident byte count since reset_peak(), minus the bytes resident at that reset.
 std::size_t peak_bytes_since_reset();
 
 }  // namespace nome::bench

@@ -26,7 +26,7 @@ PipelineSettings streamed_settings(int levels, double distance = 0.0, int after 
   return s;
 }
 
-// Writes `ext` once from the pipeline's Mesh and once from run_surface's quads or polygons (a pipeline
+// Writes `ext` once from the pipeline's Mesh and once from run_surface's quads or solid (a pipeline
 // each) and returns both.
 std::pair<std::string, std::string> both_ways(const Mesh& mesh, const PipelineSettings& s,
                                               const std::string& ext, StlFormat format = StlFormat::binary) {
@@ -40,16 +40,16 @@ std::pair<std::string, std::string> both_ways(const Mesh& mesh, const PipelineSe
   Pipeline streamed;
   streamed.set_input(mesh);
   const PipelineSurface surface = streamed.run_surface(s, ext == ".obj");
-  REQUIRE(bool(surface.quads) != bool(surface.polygons));
+  REQUIRE(bool(surface.quads) != bool(surface.solid));
   CHECK_FALSE(surface.mesh);
   if (surface.quads && ext == ".obj")
     write_obj(from_quads, *surface.quads);
   else if (surface.quads)
     write_stl(from_quads, *surface.quads, format);
   else if (ext == ".obj")
-    write_obj(from_quads, *surface.polygons);
+    write_obj(from_quads, *surface.solid);
   else
-    write_stl(from_quads, *surface.polygons, format);
+    write_stl(from_quads, *surface.solid, format);
   return {test::file_bytes(from_mesh), test::file_bytes(from_quads)};
 }
 
@@ -112,19 +112,19 @@ TEST_CASE("run_surface gives the Mesh where the quads cannot stand for it", "[io
   pipeline.set_input(band);
   CHECK_FALSE(pipeline.run_surface(streamed_settings(2), true).quads);
   CHECK(pipeline.run_surface(streamed_settings(2), false).quads);
-  // The offset last: its polygons, unless an OBJ would tag the sharp edges its Mesh copies.
+  // The offset last: streamed, unless an OBJ would tag the sharp edges its Mesh copies.
   const PipelineSurface offset = pipeline.run_surface(streamed_settings(0, 0.05));
   CHECK_FALSE(offset.quads);
   CHECK_FALSE(offset.mesh);
-  REQUIRE(offset.polygons);
-  CHECK(offset.polygons->num_faces() == pipeline.run(streamed_settings(0, 0.05)).num_faces());
+  REQUIRE(offset.solid);
+  CHECK(offset.solid->num_faces() == pipeline.run(streamed_settings(0, 0.05)).num_faces());
   const PipelineSurface tagged = pipeline.run_surface(streamed_settings(0, 0.05), true);
-  CHECK_FALSE(tagged.polygons);
+  CHECK_FALSE(tagged.solid);
   REQUIRE(tagged.mesh);
   CHECK(tagged.mesh->edge(0).is_sharp);
 }
 
-TEST_CASE("STL and OBJ of the offset from its polygons are the bytes of its Mesh's", "[io]") {
+TEST_CASE("STL and OBJ of the offset computed as it is written are the bytes of its Mesh's", "[io]") {
   const Mesh torus = build_mesh(test::torus(8, 4));
   const Mesh band = build_mesh(test::mobius_band(12, 2));
   // Triangles and a pentagon: the polygons' own corner layout, not the quads'.
@@ -134,6 +134,7 @@ TEST_CASE("STL and OBJ of the offset from its polygons are the bytes of its Mesh
     mixed.add_vertex(p);
   mixed.add_face({0, 1, 2, 3, 4});
   mixed.add_face({1, 0, 5});
+  mixed.add_vertex({3.0, 3.0, 3.0});  // without faces: the solid has no vertices for it
   for (const Mesh& mesh : {torus, band, build_mesh(mixed)})
     for (int levels : {0, 1}) {
       CAPTURE(mesh.num_faces(), levels);
@@ -148,11 +149,11 @@ TEST_CASE("STL and OBJ of the offset from its polygons are the bytes of its Mesh
     }
 }
 
-TEST_CASE("after an offset's polygons the subdivision stays cached, and moved vertices rebuild it", "[io]") {
+TEST_CASE("after a streamed offset the subdivision stays cached, and moved vertices rebuild it", "[io]") {
   const Mesh torus = build_mesh(test::torus(8, 4));
   Pipeline pipeline;
   pipeline.set_input(torus);
-  REQUIRE(pipeline.run_surface(streamed_settings(2, 0.05)).polygons);
+  REQUIRE(pipeline.run_surface(streamed_settings(2, 0.05)).solid);
   // What `nome export` then runs for the print check: the surface under the offset.
   PipelineSettings surface = streamed_settings(2);
   surface.stage = Stage::subdivided;

@@ -26,7 +26,7 @@ void write_obj_surface(FileBlocks& file, const Surface& surface) {
   std::ostream(&file) << "# written by nome: " << surface.num_vertices() << " vertices, "
                       << surface.num_faces() << " faces\n";
   for (Index v = 0; v < surface.num_vertices(); ++v) {
-    const Vec3& p = surface.position(v);
+    const Vec3 p = surface.position(v);
     char* at = file.room(longest_line);
     *at++ = 'v';
     for (int k = 0; k < 3; ++k) {
@@ -67,6 +67,10 @@ void write_obj(const std::filesystem::path& path, const QuadSurface& surface) {
 
 void write_obj(const std::filesystem::path& path, const PolygonSoup& soup) {
   write_file_in_blocks(path, [&](FileBlocks& file) { write_obj_surface(file, SoupSurface(soup)); });
+}
+
+void write_obj(const std::filesystem::path& path, const OffsetSurface& solid) {
+  write_file_in_blocks(path, [&](FileBlocks& file) { write_obj_surface(file, solid); });
 }
 
 }  // namespace nome

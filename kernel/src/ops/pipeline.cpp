@@ -170,24 +170,24 @@ void Pipeline::run_before_surface(const PipelineSettings& s, bool needs_creases)
   if (!run_to_last_offset(s)) run_to_last_subdivision(s, needs_creases);
 }
 
-PipelineSurface Pipeline::run_offset_polygons(const Mesh& input, const PipelineSettings& s,
-                                              bool needs_creases) {
+PipelineSurface Pipeline::run_offset_surface(const Mesh& input, const PipelineSettings& s,
+                                             bool needs_creases) {
   // The offset's edges copy the input's sharp marks: only its Mesh carries them.
   if (needs_creases && has_sharp_edge(input)) return {&run(s), std::nullopt, std::nullopt};
   progress_("offset", 0.0);
-  // A writer's one pass: the subdivision's refinement and the face normals are not needed again, and the
-  // polygons take their blocks instead of fresh pages (`nome export` of a level-5 torus's solid: 62 MB
-  // less at its peak of 784 MB).
+  // A writer's one pass: the subdivision's refinement is not needed again, and the normals take its
+  // blocks instead of fresh pages; the face normals go back as soon as the vertex normals are made.
   solid_->release_refinements();
   Normals normals = offset_normals(input, s.threads);
   normals.faces = {};
-  PipelineSurface surface{nullptr, std::nullopt, offset_polygons(input, normals, s.distance())};
+  PipelineSurface surface{nullptr, std::nullopt,
+                          OffsetSurface(input, std::move(normals.vertices), s.distance())};
   progress_("offset", 1.0);
   return surface;
 }
 
 PipelineSurface Pipeline::run_surface(const PipelineSettings& s, bool needs_creases) {
-  if (const Mesh* input = run_to_last_offset(s)) return run_offset_polygons(*input, s, needs_creases);
+  if (const Mesh* input = run_to_last_offset(s)) return run_offset_surface(*input, s, needs_creases);
   const LastSubdivision last = run_to_last_subdivision(s, needs_creases);
   if (last.levels == 0) return {last.input, std::nullopt, std::nullopt};
   progress_("subdivision", 0.0);

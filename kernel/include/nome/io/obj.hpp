@@ -6,6 +6,7 @@
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/polygon_soup.hpp"
 #include "nome/mesh/quad_surface.hpp"
+#include "nome/ops/offset_surface.hpp"
 
 namespace nome {
 
@@ -22,8 +23,10 @@ void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSub
 // The same bytes from the last level of a subdivision, without its Mesh (Pipeline::run_quads with
 // creases: the surface's mesh would have no tags to write).
 void write_obj(const std::filesystem::path& path, const QuadSurface& surface);
-// The same bytes from positions and polygons (the offset as Pipeline::run_surface gives it, when the
-// surface under it has no sharp edges to tag).
+// The same bytes from positions and polygons.
 void write_obj(const std::filesystem::path& path, const PolygonSoup& soup);
+// The same bytes from an offset solid computed as it is written (as Pipeline::run_surface gives it, when
+// the surface under it has no sharp edges to tag).
+void write_obj(const std::filesystem::path& path, const OffsetSurface& solid);
 
 }  // namespace nome

@@ -11,6 +11,7 @@
 #include "nome/mesh/polygon_soup.hpp"
 #include "nome/mesh/quad_surface.hpp"
 #include "nome/ops/merge.hpp"
+#include "nome/ops/offset_surface.hpp"
 #include "nome/ops/pipeline_input.hpp"
 #include "nome/ops/pipeline_settings.hpp"
 #include "nome/progress.hpp"
@@ -46,12 +47,12 @@ struct LastSubdivision {
   int levels = 0;
 };
 
-// The result of Pipeline::run_surface: the last subdivision's quads, the offset solid's positions and
-// polygons, or the Mesh when neither can stand for it.
+// The result of Pipeline::run_surface: the last subdivision's quads, the offset solid as it is written,
+// or the Mesh when neither can stand for it.
 struct PipelineSurface {
   const Mesh* mesh = nullptr;
   std::optional<QuadSurface> quads;
-  std::optional<PolygonSoup> polygons;
+  std::optional<OffsetSurface> solid;
 };
 
 class SceneStage;
@@ -101,10 +102,10 @@ class Pipeline {
   void run_before_surface(const PipelineSettings& settings, bool needs_creases = false);
   // The result of run() for a writer, with the same positions and polygons in the same order as run()'s
   // Mesh: the last subdivision level as quads straight from its Refinement (about a fifth of the memory);
-  // an offset with no levels after it as offset_polygons (about a fifth, no edges or fans); otherwise
-  // run()'s Mesh. Valid until the next run. `needs_creases` as for run_to_last_subdivision. Before an
-  // offset's polygons it frees the subdivisions' refinements: a later run keeps their results while
-  // nothing changes, and rebuilds them for moved vertices.
+  // an offset with no levels after it as an OffsetSurface (its input's vertex normals, nothing stored
+  // per face); otherwise run()'s Mesh. Valid until the next run. `needs_creases` as for
+  // run_to_last_subdivision. Before an offset it frees the subdivisions' refinements: a later run keeps
+  // their results while nothing changes, and rebuilds them for moved vertices.
   PipelineSurface run_surface(const PipelineSettings& settings, bool needs_creases = false);
   // Moves the last result out (for a one-shot caller such as the command line); the caches start over.
   Mesh take_result();
@@ -135,9 +136,8 @@ class Pipeline {
   // run(), with the budget checked for `budgeted` (the last level as quads when `streams_last_level`).
   const Mesh& run(const PipelineSettings& settings, const PipelineSettings& budgeted,
                   bool streams_last_level);
-  // run_surface's offset of `input` (run_to_last_offset's) as polygons.
-  PipelineSurface run_offset_polygons(const Mesh& input, const PipelineSettings& settings,
-                                      bool needs_creases);
+  // run_surface's offset of `input` (run_to_last_offset's).
+  PipelineSurface run_offset_surface(const Mesh& input, const PipelineSettings& settings, bool needs_creases);
 
   std::unique_ptr<SceneStage> scene_;
   std::unique_ptr<MergeStage> merged_;
