@@ -65,10 +65,6 @@ void write_obj(const std::filesystem::path& path, const QuadSurface& surface) {
   write_file_in_blocks(path, [&](FileBlocks& file) { write_obj_surface(file, surface); });
 }
 
-void write_obj(const std::filesystem::path& path, const PolygonSoup& soup) {
-  write_file_in_blocks(path, [&](FileBlocks& file) { write_obj_surface(file, SoupSurface(soup)); });
-}
-
 void write_obj(const std::filesystem::path& path, const OffsetSurface& solid) {
   write_file_in_blocks(path, [&](FileBlocks& file) { write_obj_surface(file, solid); });
 }

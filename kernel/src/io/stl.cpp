@@ -100,12 +100,6 @@ void write_stl(const std::filesystem::path& path, const QuadSurface& surface, St
   write_file_in_blocks(path, [&](FileBlocks& out) { write_stl_surface(out, surface, format, progress); });
 }
 
-void write_stl(const std::filesystem::path& path, const PolygonSoup& soup, StlFormat format,
-               const Progress& progress) {
-  write_file_in_blocks(path,
-                       [&](FileBlocks& out) { write_stl_surface(out, SoupSurface(soup), format, progress); });
-}
-
 void write_stl(const std::filesystem::path& path, const OffsetSurface& solid, StlFormat format,
                const Progress& progress) {
   write_file_in_blocks(path, [&](FileBlocks& out) { write_stl_surface(out, solid, format, progress); });

@@ -131,15 +131,6 @@ class OffsetBuilder {
     return assemble_mesh(std::move(a));
   }
 
-  PolygonSoup polygons(const Normals& normals, double distance) const {
-    PolygonSoup s;
-    resize_for_overwrite(s.positions, 2 * size_t(nv_out_));
-    write_offset_positions(m_, normals, distance, s.positions);
-    faces(s.face_offsets, s.face_vertices);
-    s.face_colors = face_colors();
-    return s;
-  }
-
  private:
   // Without isolated vertices (the usual case) the ranks are the identity: no lookup.
   Index out_vertex(Index v, int side) const { return 2 * (ranks_are_identity_ ? v : rank_[v]) + Index(side); }
@@ -413,11 +404,6 @@ void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh
   solid = with_offset_builder(mesh, [&](const auto& builder) {
     return builder.build(normals, distance, std::move(storage), threads);
   });
-}
-
-PolygonSoup offset_polygons(const Mesh& mesh, const Normals& normals, double distance) {
-  check_distance("offset_polygons", distance);
-  return with_offset_builder(mesh, [&](const auto& builder) { return builder.polygons(normals, distance); });
 }
 
 void offset_positions(const Mesh& mesh, double distance, std::span<Vec3> out) {

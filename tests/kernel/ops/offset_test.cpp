@@ -7,6 +7,7 @@
 #include "nome/error.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/offset.hpp"
+#include "nome/ops/offset_surface.hpp"
 #include "support/mesh_measures.hpp"
 #include "support/same_mesh.hpp"
 #include "support/shapes.hpp"
@@ -112,23 +113,29 @@ TEST_CASE("offset_positions on two threads writes the positions of one", "[kerne
   CHECK(one == std::vector<Vec3>(solid.positions().begin(), solid.positions().end()));
 }
 
-TEST_CASE("offset_polygons gives offset()'s positions, polygons and colours without the adjacency",
-          "[kernel]") {
-  PolygonSoup band = test::mobius_band(10, 2);
-  for (Index f = 0; f < band.num_faces(); ++f)
-    band.face_colors.push_back(Color(0.1f * float(f % 7), 0.5f, 1.0f));
-  const PolygonSoup shapes[] = {band, test::klein_bottle(8, 6), test::grid(3, 2)};
+TEST_CASE("an OffsetSurface reads as offset()'s positions and polygons, bit for bit", "[kernel]") {
+  PolygonSoup with_lone_vertex = test::grid(3, 2);
+  with_lone_vertex.add_vertex({5.0, 5.0, 5.0});  // no faces: no vertices in the solid
+  const PolygonSoup shapes[] = {test::mobius_band(10, 2), test::klein_bottle(8, 6), with_lone_vertex};
   for (const PolygonSoup& shape : shapes) {
     const Mesh m = build_mesh(shape);
     const Mesh solid = offset(m, {0.05});
-    const PolygonSoup polygons = offset_polygons(m, compute_normals(m), 0.05);
-    CHECK(polygons.positions == solid.positions());
-    CHECK(polygons.face_offsets == solid.face_offsets());
-    CHECK(polygons.face_vertices == solid.corner_vertices());
-    CHECK(polygons.face_colors == solid.face_colors());
+    const OffsetSurface streamed(m, compute_normals(m).vertices, 0.05);
+    REQUIRE(streamed.num_vertices() == solid.num_vertices());
+    REQUIRE(streamed.num_faces() == solid.num_faces());
+    CHECK(streamed.num_corners() == solid.num_corners());
+    for (Index v = 0; v < solid.num_vertices(); ++v) REQUIRE(streamed.position(v) == solid.position(v));
+    for (Index f = 0; f < solid.num_faces(); ++f) {
+      const auto expected = solid.face_vertices(f);
+      const auto corners = streamed.face_vertices(f);
+      REQUIRE(streamed.face_degree(f) == expected.size());
+      REQUIRE(std::vector<Index>(corners.begin(), corners.end()) ==
+              std::vector<Index>(expected.begin(), expected.end()));
+    }
   }
-  CHECK_THROWS_AS(offset_polygons(build_mesh(band), compute_normals(build_mesh(band)), 0.0),
-                  InvalidInputError);
+  const Mesh band = build_mesh(test::mobius_band(10, 2));
+  CHECK_THROWS_AS(OffsetSurface(band, compute_normals(band).vertices, 0.0), InvalidInputError);
+  CHECK_THROWS_AS(OffsetSurface(band, Buffer<Vec3>(3), 0.05), InvalidInputError);
 }
 
 TEST_CASE("offset_into rebuilds in the blocks of the solid it replaces what offset() builds", "[kernel]") {

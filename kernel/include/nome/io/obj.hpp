@@ -23,8 +23,6 @@ void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSub
 // The same bytes from the last level of a subdivision, without its Mesh (Pipeline::run_quads with
 // creases: the surface's mesh would have no tags to write).
 void write_obj(const std::filesystem::path& path, const QuadSurface& surface);
-// The same bytes from positions and polygons.
-void write_obj(const std::filesystem::path& path, const PolygonSoup& soup);
 // The same bytes from an offset solid computed as it is written (as Pipeline::run_surface gives it, when
 // the surface under it has no sharp edges to tag).
 void write_obj(const std::filesystem::path& path, const OffsetSurface& solid);

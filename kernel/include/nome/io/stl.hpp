@@ -19,9 +19,6 @@ void write_stl(const std::filesystem::path& path, const Mesh& mesh, StlFormat fo
 // The same bytes from the last level of a subdivision, without its Mesh (Pipeline::run_quads).
 void write_stl(const std::filesystem::path& path, const QuadSurface& surface,
                StlFormat format = StlFormat::binary, const Progress& progress = {});
-// The same bytes from positions and polygons.
-void write_stl(const std::filesystem::path& path, const PolygonSoup& soup,
-               StlFormat format = StlFormat::binary, const Progress& progress = {});
 // The same bytes from an offset solid computed as it is written (as Pipeline::run_surface gives it).
 void write_stl(const std::filesystem::path& path, const OffsetSurface& solid,
                StlFormat format = StlFormat::binary, const Progress& progress = {});

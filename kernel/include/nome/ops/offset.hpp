@@ -35,11 +35,6 @@ Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& optio
 // `solid` is touched. Uses up to `threads` threads (two at most).
 void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh& solid, int threads = 1);
 
-// The same solid as positions and polygons only, numbered as offset() numbers them, without the edges,
-// fans and components a Mesh carries: what export and drawing need, in a fraction of offset()'s time and
-// memory. Throws as offset() does.
-PolygonSoup offset_polygons(const Mesh& mesh, const Normals& normals, double distance);
-
 // The position pass alone: writes the positions offset(mesh, {distance}) would have into `out`
 // (2 per vertex that has faces), for a caller that keeps the topology and moves only the vertices; on up
 // to `threads` threads when every vertex has faces.

@@ -9,7 +9,7 @@
 namespace nome {
 
 // The solid that offset() makes, as a writer reads it: the positions and polygons of
-// offset_polygons(mesh, normals, distance), numbered alike and bit for bit the same, computed from the
+// offset(mesh, normals, {distance}), numbered alike and bit for bit the same, computed from the
 // surface and its vertex normals as they are read instead of stored. Exporting a solid then touches no
 // memory for it, where the stored polygons were 44 bytes a face of fresh pages, which cost more than
 // their arithmetic on these machines. Reads `mesh`, which must outlive it; keeps the vertex normals.
@@ -37,9 +37,9 @@ class OffsetSurface {
   const Mesh* mesh_;
   Buffer<Vec3> normals_;
   double distance_;
-  Index num_sources_ = 0;           // vertices with faces
-  std::vector<Index> rank_;         // empty when every vertex has faces (the identity)
-  std::vector<Index> sources_;      // the input vertex of each output pair; empty likewise
+  Index num_sources_ = 0;            // vertices with faces
+  std::vector<Index> rank_;          // empty when every vertex has faces (the identity)
+  std::vector<Index> sources_;       // the input vertex of each output pair; empty likewise
   std::vector<Index> border_edges_;  // in loop order
   mutable std::vector<Index> face_;
 };
