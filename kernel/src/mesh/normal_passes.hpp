@@ -121,9 +121,6 @@ void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>
   // subdivided one) corner c's face is c / 4, one random read less per corner.
   signed char lowest_sign = 1;
   for (const signed char s : mesh.corner_signs()) lowest_sign = std::min(lowest_sign, s);
-  bool is_quad_mesh = true;
-  const Index* offsets = mesh.face_offsets().data();
-  for (Index f = 0; f <= mesh.num_faces(); ++f) is_quad_mesh &= offsets[f] == 4 * f;
   SharedList list(degenerate);
   const auto gather = [&](auto is_quads, auto has_signs) {
     parallel_for(mesh.num_vertices(), threads, [&](Index begin, Index end) {
@@ -149,7 +146,7 @@ void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>
   };
   const std::bool_constant<true> yes;
   const std::bool_constant<false> no;
-  if (is_quad_mesh)
+  if (mesh.is_quad_mesh())
     lowest_sign > 0 ? gather(yes, no) : gather(yes, yes);
   else
     lowest_sign > 0 ? gather(no, no) : gather(no, yes);

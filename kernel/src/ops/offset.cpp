@@ -75,13 +75,6 @@ struct QuadCorners {
   Index next(Index c) const { return (c & ~Index(3)) | ((c + 1) & 3); }
 };
 
-bool is_quad_mesh(const Mesh& m) {
-  const Buffer<Index>& offsets = m.face_offsets();
-  for (Index f = 0; f < m.num_faces(); ++f)
-    if (offsets[f + 1] - offsets[f] != 4) return false;
-  return true;
-}
-
 // Builds the offset's arrays. Input vertex v on side `side` (0: v+, 1: v-) is output vertex
 // 2 rank(v) + side. The corner with sign s sits on side 0 in the positive copy when s = +1.
 template <class Corners>
@@ -379,7 +372,7 @@ class OffsetBuilder {
 // The builder with the corner layout of `mesh`.
 template <class Work>
 auto with_offset_builder(const Mesh& mesh, const Work& work) {
-  if (is_quad_mesh(mesh)) return work(OffsetBuilder<QuadCorners>(mesh, QuadCorners{}));
+  if (mesh.is_quad_mesh()) return work(OffsetBuilder<QuadCorners>(mesh, QuadCorners{}));
   return work(OffsetBuilder<PolygonCorners>(mesh, PolygonCorners{mesh}));
 }
 

@@ -105,6 +105,8 @@ class Mesh {
   const Buffer<Index>& corner_edges() const { return arrays_.corner_edges; }
   // Empty when every face is a quad (see corner_face).
   const Buffer<Index>& corner_faces() const { return arrays_.corner_faces; }
+  // Every face is a quad (every subdivided mesh and its offset): face f has corners 4f .. 4f+3.
+  bool is_quad_mesh() const { return arrays_.corner_faces.empty(); }
   const Buffer<signed char>& corner_signs() const { return arrays_.corner_signs; }
   Index corner_vertex(Index c) const { return arrays_.corner_vertices[c]; }
   Index corner_edge(Index c) const { return arrays_.corner_edges[c]; }
