@@ -8,31 +8,11 @@
 #include "nome/error.hpp"
 #include "nome/mesh/face_orientation.hpp"
 #include "nome/mesh/normals.hpp"
+#include "ops/offset_input.hpp"
 #include "ops/parallel_for.hpp"
 
 namespace nome {
 namespace {
-
-void check_distance(const char* who, double distance) {
-  if (!(distance > 0.0) || !std::isfinite(distance))
-    throw InvalidInputError(std::string(who) + ": the offset distance must be positive and finite, got " +
-                            std::to_string(distance));
-}
-
-// Output vertex pair of each input vertex: vertices without faces get none. Empty when every vertex has
-// faces (the usual case): the ranks are then the identity, and an array of them would cost fresh pages.
-std::vector<Index> vertex_ranks(const Mesh& mesh, Index& count) {
-  // A count over the fan offsets (it vectorises): each slider tick's offset_positions asks again.
-  const Index* fans = mesh.fan_corner_offsets().data();
-  count = 0;
-  for (Index v = 0; v < mesh.num_vertices(); ++v) count += fans[v] != fans[v + 1] ? 1 : 0;
-  if (count == mesh.num_vertices()) return {};
-  std::vector<Index> rank(mesh.num_vertices(), no_index);
-  count = 0;
-  for (Index v = 0; v < mesh.num_vertices(); ++v)
-    if (!mesh.is_isolated_vertex(v)) rank[v] = count++;
-  return rank;
-}
 
 // v+ and v- of each vertex that has faces, in vertex order; on up to `threads` threads when every vertex
 // has faces (vertex v's pair is then at 2v).
@@ -378,12 +358,31 @@ auto with_offset_builder(const Mesh& mesh, const Work& work) {
 
 }  // namespace
 
+void check_offset_distance(const char* who, double distance) {
+  if (!(distance > 0.0) || !std::isfinite(distance))
+    throw InvalidInputError(std::string(who) + ": the offset distance must be positive and finite, got " +
+                            std::to_string(distance));
+}
+
+std::vector<Index> vertex_ranks(const Mesh& mesh, Index& count) {
+  // A count over the fan offsets (it vectorises): each slider tick's offset_positions asks again.
+  const Index* fans = mesh.fan_corner_offsets().data();
+  count = 0;
+  for (Index v = 0; v < mesh.num_vertices(); ++v) count += fans[v] != fans[v + 1] ? 1 : 0;
+  if (count == mesh.num_vertices()) return {};
+  std::vector<Index> rank(mesh.num_vertices(), no_index);
+  count = 0;
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    if (!mesh.is_isolated_vertex(v)) rank[v] = count++;
+  return rank;
+}
+
 Mesh offset(const Mesh& mesh, const OffsetOptions& options) {
   return offset(mesh, compute_normals(mesh), options);
 }
 
 Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options) {
-  check_distance("offset", options.distance);
+  check_offset_distance("offset", options.distance);
   Mesh solid = with_offset_builder(mesh, [&](const auto& builder) {
     return builder.build(normals, options.distance, MeshArrays(), options.threads);
   });
@@ -392,7 +391,7 @@ Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& optio
 }
 
 void offset_into(const Mesh& mesh, const Normals& normals, double distance, Mesh& solid, int threads) {
-  check_distance("offset_into", distance);
+  check_offset_distance("offset_into", distance);
   MeshArrays storage = take_arrays(std::move(solid));
   solid = with_offset_builder(mesh, [&](const auto& builder) {
     return builder.build(normals, distance, std::move(storage), threads);
@@ -405,7 +404,7 @@ void offset_positions(const Mesh& mesh, double distance, std::span<Vec3> out) {
 
 void offset_positions(const Mesh& mesh, const Normals& normals, double distance, std::span<Vec3> out,
                       int threads) {
-  check_distance("offset_positions", distance);
+  check_offset_distance("offset_positions", distance);
   Index count = 0;
   vertex_ranks(mesh, count);
   if (out.size() != 2 * size_t(count))

@@ -1,28 +1,23 @@
 #include "nome/ops/offset_surface.hpp"
 
-#include <cmath>
 #include <string>
 
 #include "nome/error.hpp"
+#include "ops/offset_input.hpp"
 
 namespace nome {
 
 OffsetSurface::OffsetSurface(const Mesh& mesh, Buffer<Vec3> vertex_normals, double distance)
     : mesh_(&mesh), normals_(std::move(vertex_normals)), distance_(distance) {
-  if (!(distance > 0.0) || !std::isfinite(distance))
-    throw InvalidInputError("OffsetSurface: the offset distance must be positive and finite, got " +
-                            std::to_string(distance));
+  check_offset_distance("OffsetSurface", distance);
   if (normals_.size() != mesh.num_vertices())
     throw InvalidInputError("OffsetSurface: expected " + std::to_string(mesh.num_vertices()) +
                             " vertex normals, got " + std::to_string(normals_.size()));
-  for (Index v = 0; v < mesh.num_vertices(); ++v) num_sources_ += mesh.is_isolated_vertex(v) ? 0 : 1;
-  if (num_sources_ != mesh.num_vertices()) {
-    rank_.assign(mesh.num_vertices(), no_index);
+  rank_ = vertex_ranks(mesh, num_sources_);
+  if (!rank_.empty()) {
+    sources_.resize(num_sources_);
     for (Index v = 0; v < mesh.num_vertices(); ++v)
-      if (!mesh.is_isolated_vertex(v)) {
-        rank_[v] = Index(sources_.size());
-        sources_.push_back(v);
-      }
+      if (rank_[v] != no_index) sources_[rank_[v]] = v;
   }
   for (Index l = 0; l < mesh.num_boundary_loops(); ++l)
     for (Index e : mesh.loop_edges(l)) border_edges_.push_back(e);
