@@ -6,6 +6,7 @@
 #include "nome/error.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/subdivide.hpp"
+#include "support/same_mesh.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
@@ -151,4 +152,16 @@ TEST_CASE("a refinement rebuilt for another base gives what a new one gives", "[
       CHECK(a.corner_vertices() == b.corner_vertices());
     }
   }
+}
+
+TEST_CASE("two threads refine a large mesh with borders as one does", "[kernel]") {
+  // Over 2^16 parent edges the fan offsets are counted in one part a thread, each part with border edges
+  // before it: a part that did not start after the earlier parts' borders would shift every fan.
+  const Mesh base = build_mesh(test::grid(200, 200));
+  REQUIRE(base.num_edges() >= Index(1) << 16);
+  Refinement one(base, 1, BoundaryMode::edge_only, 1);
+  Refinement two(base, 1, BoundaryMode::edge_only, 2);
+  const auto positions = one.refine_positions(base, SubdivisionRule::classic);
+  test::check_same_mesh(one.mesh(base, {positions.begin(), positions.end()}, 1),
+                        two.mesh(base, {positions.begin(), positions.end()}, 2));
 }
