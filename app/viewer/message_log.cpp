@@ -35,7 +35,8 @@ void MessageLog::diagnostics(const std::vector<scene::Diagnostic>& list) {
   for (const scene::Diagnostic& d : list) {
     const MessageLevel level =
         d.severity == scene::Severity::error ? MessageLevel::error : MessageLevel::warning;
-    add(level, d.to_string(), scene::SourcePlace{d.file, d.location});
+    // The log shows the level itself.
+    add(level, d.place() + ": " + d.message, scene::SourcePlace{d.file, d.location});
   }
 }
 

@@ -29,6 +29,7 @@ bool SessionController::open(const std::filesystem::path& path) {
     const PolygonSoup& soup = session_->scene_soup();
     log_.info("opened " + path.string() + " (" + std::to_string(soup.num_vertices()) + " vertices, " +
               std::to_string(soup.num_faces()) + " faces)");
+    report_scene_warnings();
     return true;
   } catch (const std::exception& e) {
     log_.error(e.what());
@@ -137,6 +138,10 @@ void SessionController::set_print_setup(const PrintPlacementOptions& setup) {
   } catch (const Error& e) {
     log_.error(e.what());
   }
+}
+
+void SessionController::report_scene_warnings() {
+  if (const scene::Scene* scene = session_->scene()) log_.diagnostics(scene->warnings());
 }
 
 void SessionController::set_parameter(const std::string& name, double value) {

@@ -135,6 +135,8 @@ class SessionController {
   bool set_instance_surfaces(const InstanceSurfaces& surfaces);
   // Logs the edits a slider move left without their vertices (kept, hidden) and those it brought back.
   void report_unresolved(const std::vector<UnresolvedEdit>& before);
+  // The scene's warnings (a face left out, a name defined again), each with its place in the text.
+  void report_scene_warnings();
   UndoHistory::Step slider_step(std::vector<std::pair<Index, double>> before,
                                 std::vector<std::pair<Index, double>> after);
 };

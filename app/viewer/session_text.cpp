@@ -12,6 +12,7 @@ bool SessionController::reload(const std::string* text) {
     else
       session_->reload();
     text_errors_.clear();
+    report_scene_warnings();
     return true;
   } catch (const scene::SceneError& e) {
     // The last good geometry stays on screen; the text pane marks the places.

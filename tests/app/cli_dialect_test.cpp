@@ -46,27 +46,45 @@ TEST_CASE("the --dialect option overrides what the statements say, for every com
   CHECK_THAT(bad.err, Catch::Contains("--dialect expects 2016 or jipcad, found 'nome3'"));
 }
 
-TEST_CASE("at least 40 of JIPCAD's 42 example files open, the rest are refused with a location", "[app]") {
+TEST_CASE("41 of JIPCAD's 42 example files open, the malformed one is refused with a location", "[app]") {
   NOME_NEEDS_SHARED_EXAMPLES("jipcad");
   std::vector<std::string> files;
   for (const auto& entry : std::filesystem::directory_iterator(nome::test::shared_examples_dir("jipcad")))
     if (entry.path().extension() == ".nom") files.push_back(entry.path().string());
   std::sort(files.begin(), files.end());
   CHECK(files.size() == 42);
-  size_t opened = 0;
+  std::vector<std::string> refused;
   for (const std::string& file : files) {
     // Opening is reading and joining: the files' own subdivision blocks are tested elsewhere.
     const auto r = nome::test::run_nome_in_process({"info", file, "--subdiv", "0"});
     INFO(file << "\n" << r.err);
     if (r.status == 0) {
-      ++opened;
       CHECK_THAT(r.out, Catch::Contains("components"));
     } else {
       CHECK(r.status == 1);
       CHECK_THAT(r.err, Catch::Matches("nome: " + file + ":[0-9]+:[0-9]+: (.|\n)*"));
+      refused.push_back(std::filesystem::path(file).filename().string());
     }
   }
-  CHECK(opened >= 40);
+  // Its `instance assembly scale (...)` names no definition and its background reads `(0.l 0.8 0.9)`:
+  // JIPCAD's own grammar (Nom.g4) refuses both.
+  CHECK(refused == std::vector<std::string>{"render__render_setting.nom"});
+}
+
+TEST_CASE("13-EdgePoly.nom opens: its faces that name missing points are left out, its paths resolve",
+          "[app]") {
+  NOME_NEEDS_SHARED_EXAMPLES("jipcad");
+  const std::string file = nome::test::shared_examples_dir("jipcad") + "geom___13-EdgePoly.nom";
+  const auto r = nome::test::run_nome_in_process({"info", file, "--subdiv", "0"});
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains(file + ":49:13: warning: unknown point 'txb': face 'tf3' left out"));
+  CHECK_THAT(r.err, Catch::Contains(file + ":50:17: warning: unknown point 'txy': face 'tf4' left out"));
+  // The prism keeps 6 of its 8 faces (two open ends), the cube all 7; both polylines find their vertices.
+  CHECK_THAT(r.out, Catch::Contains("instance iP3P: 7 vertices, 6 faces"));
+  CHECK_THAT(r.out, Catch::Contains("instance iWCube: 8 vertices, 7 faces"));
+  CHECK_THAT(r.out, Catch::Contains("instance ibar: 2 vertices, 0 faces, 1 rim lines"));
+  CHECK_THAT(r.out, Catch::Contains("instance instTempPoly0: 2 vertices, 0 faces, 1 rim lines"));
 }
 
 TEST_CASE("Generators.nom's pieces that meet at a point are split there, with a warning", "[app]") {

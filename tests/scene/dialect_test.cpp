@@ -193,3 +193,50 @@ TEST_CASE("the successor's tuples hold bare expressions, a sign after a space st
   CHECK(positions[2] == Vec3(-2, 2, 2));
   CHECK(s.ast().points[0].xyz[1].expr == no_index);  // a plain number stays a literal
 }
+
+TEST_CASE("in JIPCAD's dialect a face naming an unknown point is left out with a warning", "[scene]") {
+  // JIPCAD skips points it cannot find; one of its example files relies on that. The 2016 dialect refuses.
+  const std::string mesh =
+      "mesh m\n"
+      "  point a (0 0 0) endpoint  point b (1 0 0) endpoint  point c (0 1 0) endpoint\n"
+      "  face f1 (a b c) endface\n"
+      "  face f2 (a c x) endface\n"
+      "endmesh\n"
+      "instance i m endinstance\n";
+  const Scene jip = Scene::from_text(mesh, "m.nom", {.dialect = Dialect::jipcad});
+  REQUIRE(jip.instances().size() == 1);
+  CHECK(jip.instances()[0].geometry.soup.num_faces() == 1);
+  CHECK(jip.instances()[0].geometry.soup.face_names == std::vector<std::string>{"i_f1"});
+  REQUIRE(jip.warnings().size() == 1);
+  CHECK(jip.warnings()[0].to_string() == "m.nom:4:16: warning: unknown point 'x': face 'f2' left out");
+  try {
+    (void)Scene::from_text(mesh, "m.nome", {.dialect = Dialect::report2016});
+    FAIL("the 2016 dialect accepted an unknown vertex");
+  } catch (const SceneError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("m.nome:4:16: unknown vertex 'x'"));
+  }
+  // Outside a face a missing point stays an error in both dialects.
+  CHECK_THROWS_WITH(Scene::from_text(mesh + "polyline l (i.a y) endpolyline\ninstance il l endinstance\n",
+                                     "l.nom", {.dialect = Dialect::jipcad}),
+                    Catch::Contains("l.nom:7:17: unknown point 'y'"));
+}
+
+TEST_CASE("a JIPCAD vertex path may name each instance's definition after it", "[scene]") {
+  // `.i.m.b`, as JIPCAD's editor writes it, is the vertex `i.b`.
+  const Scene s = Scene::from_text(
+      "mesh m\n"
+      "  point a (0 0 0) endpoint  point b (1 0 0) endpoint  point c (0 1 0) endpoint\n"
+      "  face f (a b c) endface\n"
+      "endmesh\n"
+      "instance i m translate(0 0 2) endinstance\n"
+      "polyline l (i.a .i.m.b) endpolyline\n"
+      "instance il l endinstance\n",
+      "p.nom", {.dialect = Dialect::jipcad});
+  REQUIRE(s.instances().size() == 2);
+  const Piece& line = s.instances()[1].geometry;
+  REQUIRE(line.rims.size() == 1);
+  REQUIRE(line.rims[0].vertices.size() == 2);
+  CHECK(line.soup.positions[line.rims[0].vertices[0]] == Vec3(0, 0, 2));
+  CHECK(line.soup.positions[line.rims[0].vertices[1]] == Vec3(1, 0, 2));
+  CHECK(s.warnings().empty());
+}

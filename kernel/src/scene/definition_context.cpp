@@ -81,6 +81,8 @@ Index DefinitionContext::vertex(const Name& name) {
   Index v = no_index;
   if (is_pt) {
     v = piece_.add_vertex(*position(name), name.text);
+  } else if (!may_name_placed_vertex(name.text)) {
+    error(name.location, "unknown point '" + name.text + "'");
   } else if (const Scene::VertexRef* ref = scene_.lookup_vertex(name, errors_)) {
     const Scene::Placement& source = scene_.placements_[ref->placement];
     v = piece_.add_vertex(source.world.soup.positions[ref->vertex],
@@ -93,9 +95,20 @@ Index DefinitionContext::vertex(const Name& name) {
 
 void DefinitionContext::add_face(const std::vector<Name>& names, const std::string& face_name,
                                  const std::optional<Name>& surface, SourceLocation at) {
+  const size_t errors_before = errors_.size();
   std::vector<Index> corners;
   for (const Name& n : names) corners.push_back(vertex(n));
-  if (std::find(corners.begin(), corners.end(), no_index) != corners.end()) return;
+  if (std::find(corners.begin(), corners.end(), no_index) != corners.end()) {
+    // JIPCAD skips a point it cannot find and goes on; its files rely on that (one of its examples names
+    // points that do not exist). In its dialect the face is left out instead, with a warning: a face
+    // with points missing is not the one its author meant.
+    if (scene_.dialect().dialect == Dialect::jipcad) {
+      for (size_t i = errors_before; i < errors_.size(); ++i)
+        warning(errors_[i].location, errors_[i].message + ": face '" + face_name + "' left out");
+      errors_.resize(errors_before);
+    }
+    return;
+  }
   piece_.soup.note_origin(scene_.where(at));
   piece_.add_face(corners, face_name);
   if (surface) piece_.set_face_color(piece_.soup.num_faces() - 1, surface_color(*surface));

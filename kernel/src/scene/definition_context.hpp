@@ -18,6 +18,13 @@ class DefinitionScope {
   bool is_point(const std::string& name) const {
     return scene_.points_.count(name) > 0 || scene_.control_points_.count(name) > 0;
   }
+  // Whether a name that is not a point may name another placement's vertex. In JIPCAD's dialect only a path
+  // does (`inst.point`): a bare name there means a point, so an unknown one is a missing point, not a
+  // vertex found by suffix as in the 2016 report.
+  bool may_name_placed_vertex(const std::string& name) const {
+    return !is_point(name) &&
+           (scene_.dialect().dialect != Dialect::jipcad || name.find('_') != std::string::npos);
+  }
   // The control point of that name, or null.
   const ControlPointDecl* control_point(const std::string& name) const;
   // What a name defines: its row of statement_kinds() and declaration, if a definition of a kind.

@@ -36,11 +36,13 @@ std::string location_text(SourceLocation at) {
   return std::to_string(at.line) + ":" + std::to_string(at.column);
 }
 
+std::string Diagnostic::place() const {
+  return (file.empty() ? std::string("<input>") : file) + ":" + std::to_string(location.line) + ":" +
+         std::to_string(location.column);
+}
+
 std::string Diagnostic::to_string() const {
-  std::string out = file.empty() ? std::string("<input>") : file;
-  out += ":" + std::to_string(location.line) + ":" + std::to_string(location.column) + ": ";
-  if (severity == Severity::warning) out += "warning: ";
-  return out + message;
+  return place() + ": " + (severity == Severity::warning ? "warning: " : "") + message;
 }
 
 void Diagnostics::error(SourceLocation at, std::string message) {

@@ -198,7 +198,7 @@ void Scene::mark_references(const std::vector<Index>& placements) {
     kind.vertex_lists(scope, p.target.index, lists);
     p.references = std::any_of(lists.begin(), lists.end(), [&](const std::vector<Name>* names) {
       return std::any_of(names->begin(), names->end(),
-                         [&](const Name& n) { return !scope.is_point(n.text); });
+                         [&](const Name& n) { return scope.may_name_placed_vertex(n.text); });
     });
   }
 }

@@ -29,9 +29,19 @@ void Scene::build_vertex_index() const {
   }
 }
 
+std::string Scene::without_definition_names(std::string name) const {
+  for (const auto& [definition, _] : definitions_) {
+    const std::string segment = "_" + definition + "_";
+    for (size_t at = name.find(segment); at != std::string::npos; at = name.find(segment, at))
+      name.erase(at, definition.size() + 1);
+  }
+  return name;
+}
+
 const Scene::VertexRef* Scene::lookup_vertex(const Name& name, std::vector<Diagnostic>& errors) const {
   if (!is_vertex_index_current_) build_vertex_index();
-  const auto it = vertex_suffixes_.find(name.text);
+  auto it = vertex_suffixes_.find(name.text);
+  if (it == vertex_suffixes_.end()) it = vertex_suffixes_.find(without_definition_names(name.text));
   if (it != vertex_suffixes_.end() && it->second.size() == 1) return &it->second.front();
   const auto full_name = [&](const VertexRef& r) -> std::string {
     return placements_[r.placement].world.soup.vertex_names[r.vertex];

@@ -1,6 +1,11 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <fstream>
+
+#include "app/viewer_support.hpp"
 #include "viewer/message_log.hpp"
+#include "viewer/session_controller.hpp"
 #include "viewer/source_text.hpp"
 
 using namespace nome;
@@ -36,6 +41,7 @@ TEST_CASE("the log keeps a diagnostic's place, and finds one at the start of an 
   CHECK(m[0].place == scene::SourcePlace{"a b.nome", {3, 7}});
   CHECK(m[1].level == viewer::MessageLevel::warning);
   CHECK(m[1].place == scene::SourcePlace{"a b.nome", {5, 1}});
+  CHECK(m[1].text == "a b.nome:5:1: inexact join");  // the level is the log's own column
   CHECK(m[2].place == scene::SourcePlace{"/tmp/x.nome", {12, 4}});
   CHECK_FALSE(m[3].place);
   const scene::SceneError error({{scene::Severity::error, "c.nome", {1, 2}, "first"},
@@ -43,4 +49,31 @@ TEST_CASE("the log keeps a diagnostic's place, and finds one at the start of an 
   log.error(error);
   REQUIRE(log.messages().size() == 6);
   CHECK(log.messages()[5].place == scene::SourcePlace{"c.nome", {4, 5}});
+}
+
+TEST_CASE("opening or applying a scene logs its warnings at their places", "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("scene_warnings");
+  const std::string file = dir + "/missing.nom";
+  const std::string text =
+      "# nome-dialect: jipcad\n"
+      "mesh m\n"
+      "  point a (0 0 0) endpoint  point b (1 0 0) endpoint  point c (0 1 0) endpoint\n"
+      "  face f1 (a b c) endface\n"
+      "  face f2 (a c x) endface\n"
+      "endmesh\n"
+      "instance i m endinstance\n";
+  std::ofstream(file) << text;
+  viewer::MessageLog log;
+  viewer::SessionController sessions(log, nome::test::TestViewer::private_stores());
+  REQUIRE(sessions.open(file));
+  const auto warning = [&] {
+    return std::find_if(log.messages().begin(), log.messages().end(),
+                        [](const viewer::Message& m) { return m.level == viewer::MessageLevel::warning; });
+  };
+  REQUIRE(warning() != log.messages().end());
+  CHECK(warning()->text == file + ":5:16: unknown point 'x': face 'f2' left out");
+  CHECK(warning()->place == scene::SourcePlace{file, {5, 16}});
+  log.clear();
+  REQUIRE(sessions.apply_text(text));
+  CHECK(warning() != log.messages().end());
 }

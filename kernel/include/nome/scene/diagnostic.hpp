@@ -26,6 +26,8 @@ struct Diagnostic {
   SourceLocation location;
   std::string message;
 
+  // `file:line:col`
+  std::string place() const;
   std::string to_string() const;
 };
 

@@ -253,6 +253,9 @@ class Scene {
   // that looks no vertex up by name, a sweep's, never pays for indexing its hundred thousand names).
   void build_vertex_index() const;
   const VertexRef* lookup_vertex(const Name& name, std::vector<Diagnostic>& errors) const;
+  // A path as JIPCAD's editor writes it, each instance followed by its definition's name
+  // (`iP3P_Prism3Pyr_tpyr`), without those names (`iP3P_tpyr`), as this program names placed vertices.
+  std::string without_definition_names(std::string name) const;
   std::vector<std::string> resolve_deleted(const std::vector<Name>& names, std::vector<Diagnostic>& errors);
   void resolve_sharp_edits(std::vector<Diagnostic>& errors);
 
