@@ -10,6 +10,7 @@
 #include "cli/progress_bar.hpp"
 #include "cli/turntable_output.hpp"
 #include "nome/error.hpp"
+#include "nome/scene/scene_rim_lines.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/section_plane.hpp"
 #include "render/snapshot.hpp"
@@ -161,6 +162,11 @@ std::string output_argument(const Arguments& parsed) {
   return *out;
 }
 
+// ", N polyline segments" when the scenes have polylines (a scene of lines alone has no faces).
+std::string polylines_drawn(const render::LineSegments& rims) {
+  return rims.empty() ? "" : ", " + std::to_string(rims.segments.size() / 2) + " polyline segments";
+}
+
 render::Backend backend_argument(const Arguments& parsed) {
   const auto name = parsed.value("--backend");
   if (!name) return render::Backend::automatic;
@@ -183,7 +189,9 @@ int render_command(const std::vector<std::string>& args) {
   if (parsed.has("--help")) {
     std::cout
         << "Draws the result headless (no display, no GPU needed) with the viewer's renderer and writes "
-           "a PNG.\nFront faces and back faces have their own colours: a one-sided surface shows both.\n\n"
+           "a PNG.\nFront faces and back faces have their own colours: a one-sided surface shows both. A "
+           "scene's "
+           "polylines are drawn over the faces in the viewer's rim colour.\n\n"
         << parsed.help();
     return 0;
   }
@@ -206,6 +214,8 @@ int render_command(const std::vector<std::string>& args) {
                         : loaded.pipeline.take_result();
   bar.finish();
   apply_render_defaults(loaded.scenes, parsed, options.display);
+  for (const scene::Scene& scene : loaded.scenes)
+    render::add_rim_segments(scene::scene_rim_lines(scene), options.rims);
   apply_section_argument(parsed, mesh, loaded.settings, options.display);
   const double load_ms = milliseconds(start);
   const auto context_start = Clock::now();
@@ -214,7 +224,7 @@ int render_command(const std::vector<std::string>& args) {
   if (verbose) std::cerr << "nome: " << context.platform() << ": " << context.description() << "\n";
   if (parsed.has("--turntable")) {
     std::cerr << "nome: wrote " << write_turntable(mesh, options, parsed, out) << ", " << mesh.num_faces()
-              << " faces, " << context.platform() << "\n";
+              << " faces" << polylines_drawn(options.rims) << ", " << context.platform() << "\n";
     return 0;
   }
   const auto draw_start = Clock::now();
@@ -230,7 +240,7 @@ int render_command(const std::vector<std::string>& args) {
     std::cerr << figures;
   }
   std::cerr << "nome: wrote " << out << " (" << image.width << "x" << image.height << ", " << mesh.num_faces()
-            << " faces, " << context.platform() << ")\n";
+            << " faces" << polylines_drawn(options.rims) << ", " << context.platform() << ")\n";
   return 0;
 }
 

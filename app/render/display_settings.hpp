@@ -31,6 +31,7 @@ struct DisplaySettings {
   glm::vec3 back_color{0.25f, 0.45f, 0.80f};   // blue: the other side
   glm::vec3 selection_color{0.95f, 0.25f, 0.20f};
   glm::vec3 sharp_color{0.10f, 0.85f, 0.95f};  // cyan: edges marked sharp
+  glm::vec3 rim_color{0.05f, 0.45f, 0.55f};    // teal: polylines (rim lines) and their vertices
   glm::vec4 wire_color{0.08f, 0.08f, 0.10f, 1.0f};
   glm::vec4 mobius_color{0.85f, 0.10f, 0.55f, 1.0f};
   glm::vec4 border_color{0.05f, 0.60f, 0.30f, 1.0f};

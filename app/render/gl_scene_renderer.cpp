@@ -36,7 +36,7 @@ class GlSceneRenderer final : public SceneRenderer {
   }
 
   void draw(const Camera& camera, glm::ivec2 framebuffer_size, const PixelRect& viewport,
-            const DisplaySettings& display, const glm::vec3& rim_color) override {
+            const DisplaySettings& display) override {
     // One clear of the whole framebuffer covers the viewport too: a multisampled clear costs llvmpipe
     // a pass over four samples per pixel.
     renderer_.begin(Renderer::Frame::of(camera, {0, 0}, glm::max(framebuffer_size, {1, 1})),
@@ -46,7 +46,7 @@ class GlSceneRenderer final : public SceneRenderer {
     if (!buffers_) return;
     renderer_.draw_mesh(*buffers_, frame, display);
     renderer_.draw_cubes(cubes_, frame);
-    renderer_.draw_lines(rim_lines_, frame, glm::vec4(rim_color, 1.0f), display.highlight_width);
+    renderer_.draw_lines(rim_lines_, frame, glm::vec4(display.rim_color, 1.0f), display.highlight_width);
     renderer_.draw_lines(sharp_lines_, frame, glm::vec4(display.sharp_color, 1.0f), display.highlight_width);
     renderer_.draw_lines(selection_lines_, frame, glm::vec4(display.selection_color, 1.0f),
                          display.highlight_width * 1.5f);

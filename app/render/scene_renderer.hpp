@@ -47,7 +47,7 @@ class SceneRenderer {
 
   // Clears the framebuffer and draws the mesh, the markers and the overlays into the viewport.
   virtual void draw(const Camera& camera, glm::ivec2 framebuffer_size, const PixelRect& viewport,
-                    const DisplaySettings& display, const glm::vec3& rim_color) = 0;
+                    const DisplaySettings& display) = 0;
   // The picture drawn so far (a screenshot); throws Error when the backend has none.
   virtual Image read_pixels(glm::ivec2 framebuffer_size) const = 0;
 };

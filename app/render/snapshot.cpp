@@ -4,6 +4,7 @@
 
 #include "render/camera.hpp"
 #include "render/framebuffer.hpp"
+#include "render/line_set.hpp"
 #include "render/mesh_buffers.hpp"
 #include "render/renderer.hpp"
 
@@ -16,9 +17,18 @@ std::vector<ViewAngle> views_around(ViewAngle first, int count) {
   return views;
 }
 
+std::vector<Vec3> framed_points(const Mesh& mesh, const SnapshotOptions& options) {
+  std::vector<Vec3> points(mesh.positions().begin(), mesh.positions().end());
+  points.insert(points.end(), options.rims.points.begin(), options.rims.points.end());
+  return points;
+}
+
 Image render_snapshot(const Mesh& mesh, const SnapshotOptions& options) {
   const Renderer renderer;
   const MeshBuffers buffers(build_display_data(mesh));
+  LineSet rims;
+  rims.set(options.rims.points, options.rims.segments);
+  const std::vector<Vec3> framed = framed_points(mesh, options);
   const Framebuffer framebuffer(options.width, options.height, options.samples);
   framebuffer.bind();
 
@@ -33,7 +43,7 @@ Image render_snapshot(const Mesh& mesh, const SnapshotOptions& options) {
   for (int i = 0; i < int(options.views.size()); ++i) {
     Camera camera;
     camera.set_view(options.views[i].azimuth, options.views[i].elevation);
-    camera.fit(mesh.positions(), double(tile.x) / double(tile.y));
+    camera.fit(framed, double(tile.x) / double(tile.y));
     if (options.target) camera.target = *options.target;
     if (options.distance) camera.distance = *options.distance;
     // Tiles fill rows from the top; GL counts rows from the bottom.
@@ -41,6 +51,8 @@ Image render_snapshot(const Mesh& mesh, const SnapshotOptions& options) {
     const Renderer::Frame frame = Renderer::Frame::of(camera, origin, tile);
     if (count > 1) renderer.begin(frame, background);
     renderer.draw_mesh(buffers, frame, options.display);
+    renderer.draw_lines(rims, frame, glm::vec4(options.display.rim_color, 1.0f),
+                        options.display.highlight_width);
   }
   return framebuffer.read(options.is_transparent);
 }

@@ -8,6 +8,7 @@
 #include "nome/mesh/mesh.hpp"
 #include "render/display_settings.hpp"
 #include "render/image.hpp"
+#include "render/rim_segments.hpp"
 
 namespace nome::render {
 
@@ -28,7 +29,12 @@ struct SnapshotOptions {
   DisplaySettings display;
   bool is_transparent = false;  // background alpha 0 (the PNG keeps an alpha channel)
   int samples = 4;              // multisampling
+  // The scene's polylines, drawn over the mesh in display.rim_color as the viewer draws them.
+  LineSegments rims;
 };
+
+// What a view frames: the mesh's vertices and the polylines' points.
+std::vector<Vec3> framed_points(const Mesh& mesh, const SnapshotOptions& options);
 
 // The views of several tiles: `count` azimuths evenly around the first view, same elevation.
 std::vector<ViewAngle> views_around(ViewAngle first, int count);

@@ -7,6 +7,7 @@
 #include "nome/error.hpp"
 #include "render/camera.hpp"
 #include "render/framebuffer.hpp"
+#include "render/line_set.hpp"
 #include "render/mesh_buffers.hpp"
 #include "render/mesh_display_data.hpp"
 #include "render/renderer.hpp"
@@ -19,21 +20,24 @@ std::vector<Image> render_turntable(const Mesh& mesh, const SnapshotOptions& opt
   const std::vector<ViewAngle> views = views_around(first, frames);
   const double aspect = double(options.width) / double(options.height);
   // One framing for all: the centre of the box, and the farthest distance any azimuth's fit asks for.
+  const std::vector<Vec3> framed = framed_points(mesh, options);
   glm::dvec3 low(0.0), high(0.0);
-  if (mesh.num_vertices() > 0) low = high = mesh.position(0);
-  for (const Vec3& p : mesh.positions()) low = glm::min(low, p), high = glm::max(high, p);
+  if (!framed.empty()) low = high = framed.front();
+  for (const Vec3& p : framed) low = glm::min(low, p), high = glm::max(high, p);
   const glm::dvec3 centre = options.target.value_or(0.5 * (low + high));
   double distance = 0.0;
   for (const ViewAngle& view : views) {
     Camera camera;
     camera.set_view(view.azimuth, view.elevation);
-    camera.fit(mesh.positions(), aspect);
+    camera.fit(framed, aspect);
     distance = std::max(distance, camera.distance + glm::length(camera.target - centre));
   }
   if (options.distance) distance = *options.distance;
 
   const Renderer renderer;
   const MeshBuffers buffers(build_display_data(mesh));
+  LineSet rims;
+  rims.set(options.rims.points, options.rims.segments);
   const Framebuffer framebuffer(options.width, options.height, options.samples);
   framebuffer.bind();
   const glm::vec4 background = options.is_transparent ? glm::vec4(0.0f) : options.display.background;
@@ -46,6 +50,8 @@ std::vector<Image> render_turntable(const Mesh& mesh, const SnapshotOptions& opt
     const Renderer::Frame frame = Renderer::Frame::of(camera, {0, 0}, {options.width, options.height});
     renderer.begin(frame, background);
     renderer.draw_mesh(buffers, frame, options.display);
+    renderer.draw_lines(rims, frame, glm::vec4(options.display.rim_color, 1.0f),
+                        options.display.highlight_width);
     out.push_back(framebuffer.read(options.is_transparent));
   }
   return out;

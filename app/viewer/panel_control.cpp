@@ -177,7 +177,7 @@ ControlPanelChanges draw_color_section(const ControlPanelModel& model) {
   ImGui::ColorEdit3("back faces", &display.back_color.x, flags);
   changes.is_selection_changed = ImGui::ColorEdit3("selected", &display.selection_color.x, flags);
   ImGui::ColorEdit3("background", &display.background.x, flags);
-  ImGui::ColorEdit3("rim lines", &model.rim_color.x, flags);
+  ImGui::ColorEdit3("rim lines", &model.display.rim_color.x, flags);
   changes.is_edit_color_changed = ImGui::ColorEdit3("temporary", &model.edit_colors.temporary.x, flags);
   changes.is_edit_color_changed |=
       ImGui::ColorEdit3("consolidated", &model.edit_colors.consolidated.x, flags);

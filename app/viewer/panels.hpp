@@ -57,7 +57,6 @@ struct ControlPanelModel {
   PipelineSettings& settings;
   ZipperOptions& zipper;
   render::DisplaySettings& display;
-  glm::vec3& rim_color;
   EditColors& edit_colors;
   const Document* document;  // none without a file
   bool can_edit;

@@ -9,6 +9,7 @@
 #include "nome/scene/scene_rim_lines.hpp"
 #include "render/bounding_box.hpp"
 #include "render/image.hpp"
+#include "render/rim_segments.hpp"
 
 namespace nome::viewer {
 
@@ -70,7 +71,7 @@ bool Window::frame(const InputFrame& input) {
   arrange_layout();
   apply_section(section_, view_.camera(), 0.5 * (shown_low_ + shown_high_),
                 stage_.shown() && stage_.shown()->stage >= Stage::offset, display_);
-  renderer_.draw(view_.camera(), platform_.framebuffer_size(), viewport_pixels(), display_, rim_color_);
+  renderer_.draw(view_.camera(), platform_.framebuffer_size(), viewport_pixels(), display_);
   draw_panels();
   draw_prompts();
   record_view_state();
@@ -283,7 +284,7 @@ void Window::show_result(StageResult result) {
 
 void Window::refresh_selection() {
   if (const Mesh* mesh = stage_.shown_mesh()) {
-    show_selection(renderer_, *mesh, rims_, selection_, display_.selection_color, rim_color_,
+    show_selection(renderer_, *mesh, rims_, selection_, display_.selection_color, display_.rim_color,
                    print_check_.markers());
     show_sharp_edges(renderer_, *mesh);
   }
@@ -295,16 +296,9 @@ void Window::show_rim_lines(RimLines lines) {
     selection_.clear();
     log_.info("selection cleared: the rim lines changed");
   }
-  std::vector<glm::vec3> points;
-  std::vector<std::uint32_t> segments;
-  for (Index l = 0; l < lines.num_lines(); ++l) {
-    const auto first = std::uint32_t(points.size()), n = lines.offsets[l + 1] - lines.offsets[l];
-    for (Index v = lines.offsets[l]; v < lines.offsets[l + 1]; ++v)
-      points.push_back(glm::vec3(lines.positions[v]));
-    for (std::uint32_t i = 0; i + 1 < n; ++i) segments.insert(segments.end(), {first + i, first + i + 1});
-    if (lines.is_closed[l] && n > 2) segments.insert(segments.end(), {first + n - 1, first});
-  }
-  renderer_.set_lines(render::Overlay::rim, points, segments);
+  render::LineSegments drawn;
+  render::add_rim_segments(lines, drawn);
+  renderer_.set_lines(render::Overlay::rim, drawn.points, drawn.segments);
   rim_lines_ = std::move(lines);
   if (const StageResult* shown = stage_.shown())
     rims_ = pickable_rims(rim_lines_, *shown->mesh, shown->borders);

@@ -132,7 +132,6 @@ class Window : private ScriptHost {
   struct ViewState {
     PipelineSettings settings;
     render::DisplaySettings colors;  // only its colours are recorded
-    glm::vec3 rim_color;
     EditColors edit_colors;
   };
   ViewState view_state() const;
@@ -190,7 +189,6 @@ class Window : private ScriptHost {
   Action browser_purpose_ = Action::open;
 
   render::DisplaySettings display_;
-  glm::vec3 rim_color_{0.05f, 0.45f, 0.55f};
   EditColors edit_colors_;
   glm::vec3 instance_color_{0.9f, 0.45f, 0.1f};
   ZipperOptions zipper_options_;

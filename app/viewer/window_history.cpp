@@ -9,13 +9,13 @@ namespace {
 
 bool same_colors(const render::DisplaySettings& a, const render::DisplaySettings& b) {
   return a.front_color == b.front_color && a.back_color == b.back_color &&
-         a.selection_color == b.selection_color && a.background == b.background;
+         a.selection_color == b.selection_color && a.rim_color == b.rim_color && a.background == b.background;
 }
 
 }  // namespace
 
 Window::ViewState Window::view_state() const {
-  return {stage_.settings(), display_, rim_color_, edit_colors_};
+  return {stage_.settings(), display_, edit_colors_};
 }
 
 void Window::restore(const ViewState& state) {
@@ -24,7 +24,7 @@ void Window::restore(const ViewState& state) {
   display_.back_color = state.colors.back_color;
   display_.selection_color = state.colors.selection_color;
   display_.background = state.colors.background;
-  rim_color_ = state.rim_color;
+  display_.rim_color = state.colors.rim_color;
   edit_colors_ = state.edit_colors;
   recorded_ = view_state();
   refresh_selection();
@@ -35,7 +35,6 @@ void Window::record_view_state() {
   const bool is_held = ImGui::IsAnyItemActive();
   const ViewState now = view_state();
   const bool is_same = now.settings == recorded_.settings && same_colors(now.colors, recorded_.colors) &&
-                       now.rim_color == recorded_.rim_color &&
                        now.edit_colors.temporary == recorded_.edit_colors.temporary &&
                        now.edit_colors.consolidated == recorded_.edit_colors.consolidated;
   if (!is_same && sessions_.has_session()) {

@@ -115,7 +115,7 @@ void Window::draw_sidebars() {
     report_.panels.push_back({"controls", layout_.left});
     if (begin_docked_panel("Controls", layout_.left, &width, take_scroll(ScrolledPanel::controls))) {
       const ControlPanelChanges changes = draw_control_panel(
-          actions_, {selection_, stage_.settings(), zipper_options_, display_, rim_color_, edit_colors_,
+          actions_, {selection_, stage_.settings(), zipper_options_, display_, edit_colors_,
                      sessions_.document(), can_edit(), sessions_.is_parameter_lock_on(), sif_pairing(),
                      instance_color_, sharpness_, stage_.shown_mesh()});
       if (changes.is_instance_color_applied) color_instances(instance_color_);

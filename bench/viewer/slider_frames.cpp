@@ -113,7 +113,7 @@ TrivialDraw time_draws(render::SceneRenderer& renderer, const render::Camera& ca
   for (int i = 0; i < 5; ++i) {
     const auto start = Clock::now();
     const double cpu_start = cpu_ms();
-    renderer.draw(camera, size, {{0, 0}, viewport}, render::DisplaySettings{}, glm::vec3(1.0f));
+    renderer.draw(camera, size, {{0, 0}, viewport}, render::DisplaySettings{});
     glFinish();
     wall.push_back(ms_since(start));
     cpu.push_back(cpu_ms() - cpu_start);
@@ -232,7 +232,7 @@ void frame_figures() {
       show(*renderer, *result);
       view.show(std::move(*result), now);
     }
-    renderer->draw(camera, size, {{0, 0}, size}, display, glm::vec3(1.0f));
+    renderer->draw(camera, size, {{0, 0}, size}, display);
     glFinish();
   };
   while (!view.shown()) frame(0.0);

@@ -15,6 +15,11 @@ std::string asset(const std::string& name) {
   return std::string(NOME_SOURCE_DIR) + "/assets/" + name;
 }
 
+// The default rim colour (teal, DisplaySettings::rim_color), shaded edges included.
+bool is_rim_color(const std::uint8_t* p) {
+  return p[0] < 60 && p[1] > 80 && p[1] < 150 && p[2] > 100 && p[2] < 180;
+}
+
 }  // namespace
 
 TEST_CASE("nome render writes a PNG of the requested size and reports the backend", "[app]") {
@@ -142,4 +147,36 @@ TEST_CASE("nome render --stage scene shows the parts before --merge glues them",
   };
   CHECK(border_pixels_in_middle("scene") > 50);
   CHECK(border_pixels_in_middle("merged") == 0);
+}
+
+TEST_CASE("nome render draws a scene's polylines, framed, as the viewer does", "[app]") {
+  // A scene of one closed polyline and no faces: before, a blank picture.
+  const std::string dir = test::scratch_dir("cli_render_polylines");
+  std::ofstream(dir + "/square.nome") << "point a (0 0 0) endpoint point b (1 0 0) endpoint\n"
+                                         "point c (1 1 0) endpoint point d (0 1 0) endpoint\n"
+                                         "polyline sq (a b c d) isloop endpolyline\n"
+                                         "instance s sq endinstance\n";
+  const test::CommandResult r =
+      test::run_nome("render " + dir + "/square.nome -o " + dir + "/sq.png --size 200x150 --view 0,0");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("0 faces, 4 polyline segments"));
+  const render::Image image = render::read_png(dir + "/sq.png");
+  // The rim colour (teal) in each quarter of the picture: the square's four sides, fitted to the view.
+  int quarters[4] = {};
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      if (is_rim_color(image.pixel(x, y)))
+        ++quarters[(x < image.width / 2 ? 0 : 1) + (y < image.height / 2 ? 0 : 2)];
+    }
+  for (int q : quarters) CHECK(q > 50);
+  // A turntable's frames draw them too.
+  const test::CommandResult turning = test::run_nome("render " + dir + "/square.nome -o " + dir +
+                                                     "/turn.png --size 200x150 --turntable 4 --sheet");
+  REQUIRE(turning.status == 0);
+  const render::Image sheet = render::read_png(dir + "/turn.png");
+  int teal = 0;
+  for (int y = 0; y < sheet.height; ++y)
+    for (int x = 0; x < sheet.width; ++x) teal += is_rim_color(sheet.pixel(x, y)) ? 1 : 0;
+  CHECK(teal > 100);
 }

@@ -43,8 +43,8 @@ class FramebufferRenderer final : public render::SceneRenderer {
     gl_->set_lines(overlay, points, segments);
   }
   void draw(const render::Camera& camera, glm::ivec2 size, const render::PixelRect& viewport,
-            const render::DisplaySettings& display, const glm::vec3& rim_color) override {
-    gl_->draw(camera, size, viewport, display, rim_color);
+            const render::DisplaySettings& display) override {
+    gl_->draw(camera, size, viewport, display);
   }
   render::Image read_pixels(glm::ivec2) const override { return framebuffer_.read(false); }
 

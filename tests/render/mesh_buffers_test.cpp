@@ -41,7 +41,7 @@ TEST_CASE("moved vertices update the buffers in place, drawn as fresh buffers of
     display.shading = shading;
     display.draws_wireframe = true;
     auto draw = [&](render::SceneRenderer& renderer) {
-      renderer.draw(camera, size, {{0, 0}, size}, display, glm::vec3(1.0f));
+      renderer.draw(camera, size, {{0, 0}, size}, display);
       return framebuffer.read(false);
     };
     const auto updated = render::make_gl_scene_renderer();
