@@ -11,6 +11,7 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/scene/parser.hpp"
 #include "nome/scene/save_nome.hpp"
+#include "support/missing_point_scene.hpp"
 #include "support/shared_examples.hpp"
 
 using namespace nome;
@@ -196,13 +197,7 @@ TEST_CASE("the successor's tuples hold bare expressions, a sign after a space st
 
 TEST_CASE("in JIPCAD's dialect a face naming an unknown point is left out with a warning", "[scene]") {
   // JIPCAD skips points it cannot find; one of its example files relies on that. The 2016 dialect refuses.
-  const std::string mesh =
-      "mesh m\n"
-      "  point a (0 0 0) endpoint  point b (1 0 0) endpoint  point c (0 1 0) endpoint\n"
-      "  face f1 (a b c) endface\n"
-      "  face f2 (a c x) endface\n"
-      "endmesh\n"
-      "instance i m endinstance\n";
+  const std::string mesh(test::missing_point_scene);
   const Scene jip = Scene::from_text(mesh, "m.nom", {.dialect = Dialect::jipcad});
   REQUIRE(jip.instances().size() == 1);
   CHECK(jip.instances()[0].geometry.soup.num_faces() == 1);

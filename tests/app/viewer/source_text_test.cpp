@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "app/viewer_support.hpp"
+#include "support/missing_point_scene.hpp"
 #include "viewer/message_log.hpp"
 #include "viewer/session_controller.hpp"
 #include "viewer/source_text.hpp"
@@ -54,14 +55,7 @@ TEST_CASE("the log keeps a diagnostic's place, and finds one at the start of an 
 TEST_CASE("opening or applying a scene logs its warnings at their places", "[app]") {
   const std::string dir = nome::test::private_scratch_dir("scene_warnings");
   const std::string file = dir + "/missing.nom";
-  const std::string text =
-      "# nome-dialect: jipcad\n"
-      "mesh m\n"
-      "  point a (0 0 0) endpoint  point b (1 0 0) endpoint  point c (0 1 0) endpoint\n"
-      "  face f1 (a b c) endface\n"
-      "  face f2 (a c x) endface\n"
-      "endmesh\n"
-      "instance i m endinstance\n";
+  const std::string text = "# nome-dialect: jipcad\n" + std::string(nome::test::missing_point_scene);
   std::ofstream(file) << text;
   viewer::MessageLog log;
   viewer::SessionController sessions(log, nome::test::TestViewer::private_stores());
