@@ -177,6 +177,15 @@ render::Backend backend_argument(const Arguments& parsed) {
   }
 }
 
+int print_help(const Arguments& parsed) {
+  std::cout
+      << "Draws the result headless (no display, no GPU needed) with the viewer's renderer and writes a "
+         "PNG.\nFront faces and back faces have their own colours: a one-sided surface shows both. A "
+         "scene's polylines are drawn over the faces in the viewer's rim colour.\n\n"
+      << parsed.help();
+  return 0;
+}
+
 }  // namespace
 
 int render_command(const std::vector<std::string>& args) {
@@ -186,15 +195,7 @@ int render_command(const std::vector<std::string>& args) {
       "[--backend egl|egl-device|osmesa] [pipeline options]",
       render_options());
   parsed.parse(args);
-  if (parsed.has("--help")) {
-    std::cout
-        << "Draws the result headless (no display, no GPU needed) with the viewer's renderer and writes "
-           "a PNG.\nFront faces and back faces have their own colours: a one-sided surface shows both. A "
-           "scene's "
-           "polylines are drawn over the faces in the viewer's rim colour.\n\n"
-        << parsed.help();
-    return 0;
-  }
+  if (parsed.has("--help")) return print_help(parsed);
   const std::string out = output_argument(parsed);
   render::SnapshotOptions options = snapshot_options(parsed);
   const render::Backend backend = backend_argument(parsed);
