@@ -202,7 +202,9 @@ EditOutcome Document::set_sharp(const std::vector<std::pair<std::string, std::st
   if (!(weight >= 0)) return {false, "a sharpness is 0 or more, found " + sharpness_text(weight)};
   weight = std::min(weight, infinite_sharpness);
   SetSharp command;
-  for (auto [a, b] : edges) {
+  for (const auto& given : edges) {
+    // Named copies, not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    std::string a = given.first, b = given.second;
     if (b < a) std::swap(a, b);
     const Index u = vertex_id(a), w = vertex_id(b);
     if (u == no_index || w == no_index) return {false, "no vertex named " + (u == no_index ? a : b)};
