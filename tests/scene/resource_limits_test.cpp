@@ -136,6 +136,23 @@ TEST_CASE("an error inside a group placed many times is reported once", "[scene]
   CHECK(errors[0] != errors[1]);
 }
 
+// The same scene, found again by the fuzz target (unknown_name_halfway_down_doubling_groups.nome): under
+// the budget, its 2^17 placements were still expanded before the scene failed. The unknown names are now
+// found first, each group read once, and reported as the tree meets them; a group no instance reaches
+// reports nothing.
+TEST_CASE("unknown names are reported in the order the instance tree meets them", "[scene]") {
+  const auto errors = scene_errors(
+      "point p (0 0 0) endpoint\n"
+      "group unused\n instance w nope3 endinstance\nendgroup\n"
+      "group g1\n instance x nope1 endinstance\nendgroup\n"
+      "group g2\n instance y g1 endinstance\n instance z nope2 endinstance\n instance y2 g1 "
+      "endinstance\nendgroup\n"
+      "instance r g2 endinstance\ninstance s g1 endinstance\n");
+  REQUIRE(errors.size() == 2);
+  CHECK_THAT(errors[0], Catch::StartsWith("t.nome:6:13: unknown name 'nope1'"));
+  CHECK_THAT(errors[1], Catch::StartsWith("t.nome:10:13: unknown name 'nope2'"));
+}
+
 namespace {
 
 // `count` funnels of n = $b_n segments side by side (n quads each).

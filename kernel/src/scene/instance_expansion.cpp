@@ -2,6 +2,8 @@
 // expanded, then walked from the top-level instances through their groups.
 #include <algorithm>
 #include <cstdio>
+#include <string_view>
+#include <unordered_set>
 
 #include "nome/scene/scene.hpp"
 #include "nome/scene/statement_kinds.hpp"
@@ -30,6 +32,9 @@ const InstanceDecl* Scene::statement(const Placement& p) const {
 }
 
 void Scene::expand_roots(std::vector<Diagnostic>& errors) {
+  // An unknown name fails the scene: found first, each group read once, since expanding would meet a
+  // statement inside a group once per placement of the group (2^17 times in a doubling chain of 17).
+  if (reports_unknown_targets(errors)) return;
   // The whole tree is counted before any of it is expanded, so that refusing it costs nothing.
   const std::vector<double> group_sizes = group_expansion_sizes();
   double placements = 0;
@@ -68,6 +73,44 @@ void Scene::report_unknown_target(const InstanceDecl& decl, std::vector<Diagnost
   else
     message += did_you_mean(decl.target.text, names);
   errors.push_back(located(decl.target.location, message));
+}
+
+bool Scene::reports_unknown_targets(std::vector<Diagnostic>& errors) const {
+  const size_t before = errors.size();
+  std::vector<char> is_read(ast_.groups.size(), 0);
+  // As expand recurses: a group, the statements expand_group reads (a repeated name is skipped there, and
+  // reported by from_ast), and the next of them.
+  struct Reading {
+    Index group;
+    std::vector<Index> statements;
+    size_t next = 0;
+  };
+  std::vector<Reading> stack;
+  const auto visit = [&](const InstanceDecl& decl) {
+    const auto it = definitions_.find(decl.target.text);
+    if (it == definitions_.end()) return report_unknown_target(decl, errors);
+    if (!is_group(it->second) || is_read[it->second.index]) return;
+    is_read[it->second.index] = 1;
+    Reading reading{it->second.index, {}};
+    std::unordered_set<std::string_view> names;
+    const std::vector<InstanceDecl>& statements = ast_.groups[reading.group].instances;
+    for (Index i = 0; i < statements.size(); ++i)
+      if (names.insert(statements[i].name.text).second) reading.statements.push_back(i);
+    stack.push_back(std::move(reading));
+  };
+  for (const InstanceDecl& root : ast_.instances) {
+    visit(root);
+    while (!stack.empty()) {
+      Reading& top = stack.back();
+      if (top.next == top.statements.size()) {
+        stack.pop_back();
+        continue;
+      }
+      const InstanceDecl& child = ast_.groups[top.group].instances[top.statements[top.next++]];
+      visit(child);  // may grow the stack: `top` is not used after it
+    }
+  }
+  return errors.size() > before;
 }
 
 void Scene::expand(const InstanceDecl& decl, Index group, Index statement, Index parent, Index top,

@@ -231,6 +231,8 @@ class Scene {
   void expand_group(Index group, Index placement, Index top, std::vector<Index>& stack,
                     std::vector<Diagnostic>& errors);
   void report_unknown_target(const InstanceDecl& decl, std::vector<Diagnostic>& errors) const;
+  // Reports the unknown names the instance tree would meet, in the order expand() would; true if any.
+  bool reports_unknown_targets(std::vector<Diagnostic>& errors) const;
   const InstanceDecl* statement(const Placement& p) const;
   bool is_group(const Definition& d) const;
   bool is_leaf(const Placement& p) const { return !is_group(p.target); }
