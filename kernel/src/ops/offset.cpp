@@ -90,7 +90,7 @@ class OffsetBuilder {
     };
     // The future waits for the helper even when this thread throws, and passes on the helper's exception.
     std::future<void> helper;
-    if (threads > 1 && nf_ >= min_faces_per_thread)
+    if (threads > 1 && nf_ >= min_items_a_thread)
       helper = std::async(std::launch::async, fans_and_components);
     resize_for_overwrite(a.positions, 2 * size_t(nv_out_));
     write_offset_positions(m_, normals, distance, a.positions);
@@ -333,9 +333,6 @@ class OffsetBuilder {
     if (m_.edge(e).vertices[0] == v) return ribbon_corner(j, positive ? 1 : 2);
     return ribbon_corner(j, positive ? 0 : 3);
   }
-
-  // Below this a thread costs more to start than it saves.
-  static constexpr Index min_faces_per_thread = 1 << 15;
 
   const Mesh& m_;
   Corners corners_;

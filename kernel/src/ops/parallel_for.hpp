@@ -7,13 +7,21 @@
 
 namespace nome {
 
-// Runs body(begin, end) over [0, n) split into `threads` contiguous ranges, the calling thread taking the
-// first. Small ranges stay on one thread: handing a range to another thread costs more than it saves below
-// ~10^5 items (fewer where an item is more work).
+// Below this many items a thread, handing a range to another thread costs more than it saves (fewer where
+// an item is more work: callers pass their own).
+inline constexpr Index min_items_a_thread = 1 << 15;
+
+// How many threads parallel_for gives n items: at most `threads`, and one per `min_items_per_thread`
+// items.
+inline Index parallel_parts(Index n, int threads, Index min_items_per_thread = min_items_a_thread) {
+  return std::clamp<Index>(n / min_items_per_thread, 1, Index(std::max(threads, 1)));
+}
+
+// Runs body(begin, end) over [0, n) split into parallel_parts contiguous ranges, the calling thread taking
+// the first.
 template <class Body>
-void parallel_for(Index n, int threads, const Body& body, Index min_items_per_thread = 1 << 15) {
-  const Index useful = std::max<Index>(1, n / min_items_per_thread);
-  const Index count = std::min<Index>(Index(std::max(threads, 1)), useful);
+void parallel_for(Index n, int threads, const Body& body, Index min_items_per_thread = min_items_a_thread) {
+  const Index count = parallel_parts(n, threads, min_items_per_thread);
   if (count <= 1) {
     body(Index(0), n);
     return;

@@ -106,9 +106,8 @@ void child_fan_offsets(const Parent& p, Level& child, int threads) {
   parallel_for(nf, threads, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f) co[f + 1] = eo[f + 1] = p.face_end(f);
   });
-  // One part a thread, as parallel_for splits: a single one below 2^15 edges, where waking another thread
-  // costs more than it saves.
-  const Index parts = std::clamp<Index>(ne >> 15, 1, Index(std::max(threads, 1)));
+  // One part a thread, as parallel_for splits the edges.
+  const Index parts = parallel_parts(ne, threads);
   const Index part = (ne + parts - 1) / parts;
   std::vector<Index> borders_before(parts + 1, 0);
   const auto each_part = [&](const auto& body) {
