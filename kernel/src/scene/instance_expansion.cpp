@@ -2,8 +2,6 @@
 // expanded, then walked from the top-level instances through their groups.
 #include <algorithm>
 #include <cstdio>
-#include <string_view>
-#include <unordered_set>
 
 #include "nome/scene/scene.hpp"
 #include "nome/scene/statement_kinds.hpp"
@@ -78,36 +76,25 @@ void Scene::report_unknown_target(const InstanceDecl& decl, std::vector<Diagnost
 bool Scene::reports_unknown_targets(std::vector<Diagnostic>& errors) const {
   const size_t before = errors.size();
   std::vector<char> is_read(ast_.groups.size(), 0);
-  // As expand recurses: a group, the statements expand_group reads (a repeated name is skipped there, and
-  // reported by from_ast), and the next of them.
-  struct Reading {
-    Index group;
-    std::vector<Index> statements;
-    size_t next = 0;
-  };
-  std::vector<Reading> stack;
+  std::vector<std::pair<Index, Index>> stack;  // a group and its next instance statement, as expand recurses
   const auto visit = [&](const InstanceDecl& decl) {
     const auto it = definitions_.find(decl.target.text);
     if (it == definitions_.end()) return report_unknown_target(decl, errors);
     if (!is_group(it->second) || is_read[it->second.index]) return;
     is_read[it->second.index] = 1;
-    Reading reading{it->second.index, {}};
-    std::unordered_set<std::string_view> names;
-    const std::vector<InstanceDecl>& statements = ast_.groups[reading.group].instances;
-    for (Index i = 0; i < statements.size(); ++i)
-      if (names.insert(statements[i].name.text).second) reading.statements.push_back(i);
-    stack.push_back(std::move(reading));
+    stack.push_back({it->second.index, 0});
   };
   for (const InstanceDecl& root : ast_.instances) {
     visit(root);
     while (!stack.empty()) {
-      Reading& top = stack.back();
-      if (top.next == top.statements.size()) {
+      const auto [group, next] = stack.back();
+      const std::vector<InstanceDecl>& statements = ast_.groups[group].instances;
+      if (next == statements.size()) {
         stack.pop_back();
         continue;
       }
-      const InstanceDecl& child = ast_.groups[top.group].instances[top.statements[top.next++]];
-      visit(child);  // may grow the stack: `top` is not used after it
+      ++stack.back().second;
+      visit(statements[next]);
     }
   }
   return errors.size() > before;
@@ -145,13 +132,10 @@ void Scene::expand(const InstanceDecl& decl, Index group, Index statement, Index
 void Scene::expand_group(Index group, Index placement, Index top, std::vector<Index>& stack,
                          std::vector<Diagnostic>& errors) {
   stack.push_back(group);
-  std::unordered_map<std::string, SourceLocation> seen;
+  // Its instance names are unique: define_names renamed the repeats.
   const GroupDecl& gd = ast_.groups[group];
-  for (Index i = 0; i < gd.instances.size(); ++i) {
-    const InstanceDecl& child = gd.instances[i];
-    if (!seen.emplace(child.name.text, child.name.location).second) continue;  // reported by from_ast
-    expand(child, group, i, placement, top, stack, errors);
-  }
+  for (Index i = 0; i < gd.instances.size(); ++i)
+    expand(gd.instances[i], group, i, placement, top, stack, errors);
   stack.pop_back();
 }
 
