@@ -62,26 +62,45 @@ class GlVertices {
   std::vector<std::uint32_t> negative_;  // per mesh vertex, its turned-round copy
 };
 
-// The triangles over GL vertices, each starting with a vertex that carries its face's id: a fan's apex
-// for all the fan's triangles, or each triangle's first vertex, repeated where it carries another face.
-// The triangles keep their corners' order: a rotation would change the rasteriser's tie-breaks between
-// coinciding triangles (a degenerate immersion such as the projective plane's).
+// The triangles over GL vertices, each starting with a vertex that carries its face's id: the face's
+// first corner for the triangles that start there (all of a fan's), else the triangle's own first vertex,
+// repeated where it carries another face. The triangles keep their corners' order: a rotation would change
+// the rasteriser's tie-breaks between coinciding triangles (a degenerate immersion such as the projective
+// plane's).
 void provoking_triangles(const Mesh& mesh, const DisplayTriangles& triangles, DisplayTopology& out) {
   GlVertices vertices(mesh, out);
-  out.triangles.reserve(std::size_t(triangles.size()) * 3);
+  resize_for_overwrite(out.triangles, std::size_t(triangles.size()) * 3);
+  std::uint32_t* gl = out.triangles.data();
   for (Index t = 0; t < triangles.size();) {
     const Index f = triangles.faces[t];
-    Index end = t;
-    bool is_fan = true;
-    for (; end < triangles.size() && triangles.faces[end] == f; ++end)
-      is_fan = is_fan && triangles.corners[end][0] == triangles.corners[t][0];
-    const std::uint32_t apex = vertices.carrier(vertices.of_corner(triangles.corners[t][0]), f);
-    for (; t < end; ++t) {
+    const Index start = triangles.corners[t][0];
+    const std::uint32_t apex = vertices.carrier(vertices.of_corner(start), f);
+    for (; t < triangles.size() && triangles.faces[t] == f; ++t, gl += 3) {
       const auto& c = triangles.corners[t];
-      const std::uint32_t first = is_fan ? apex : vertices.carrier(vertices.of_corner(c[0]), f);
-      out.triangles.insert(out.triangles.end(), {first, vertices.of_corner(c[1]), vertices.of_corner(c[2])});
+      gl[0] = c[0] == start ? apex : vertices.carrier(vertices.of_corner(c[0]), f);
+      gl[1] = vertices.of_corner(c[1]);
+      gl[2] = vertices.of_corner(c[2]);
     }
   }
+}
+
+// The segments of all edges, then the Möbius ones, then the border ones.
+void edge_segments(const Mesh& mesh, DisplayTopology& out) {
+  std::vector<std::uint32_t> mobius, border;
+  const Index edges = mesh.num_edges();
+  resize_for_overwrite(out.segments, 2 * std::size_t(edges));
+  for (Index i = 0; i < edges; ++i) {
+    const Edge& e = mesh.edge(i);
+    out.segments[2 * std::size_t(i)] = e.vertices[0];
+    out.segments[2 * std::size_t(i) + 1] = e.vertices[1];
+    if (e.is_mobius) mobius.insert(mobius.end(), {e.vertices[0], e.vertices[1]});
+    if (e.is_boundary()) border.insert(border.end(), {e.vertices[0], e.vertices[1]});
+  }
+  out.all_edges = {0, edges};
+  out.mobius_edges = {edges, std::uint32_t(mobius.size() / 2)};
+  out.border_edges = {out.mobius_edges.first + out.mobius_edges.count, std::uint32_t(border.size() / 2)};
+  out.segments.insert(out.segments.end(), mobius.begin(), mobius.end());
+  out.segments.insert(out.segments.end(), border.begin(), border.end());
 }
 
 // Positions [begin, end) rounded to single precision, and their box.
@@ -97,25 +116,13 @@ BoundingBox round_positions(const Buffer<Vec3>& positions, Buffer<glm::vec3>& ou
 
 }  // namespace
 
-DisplayTopology build_display_topology(const Mesh& mesh) {
+DisplayTopology build_display_topology(const Mesh& mesh, int threads) {
   DisplayTopology data;
   data.num_faces = mesh.num_faces();
   data.num_vertices = mesh.num_vertices();
   // The same triangles the viewer picks on.
-  provoking_triangles(mesh, display_triangles(mesh), data);
-  auto add_edges = [&](auto keep) {
-    SegmentRange range{std::uint32_t(data.segments.size() / 2), 0};
-    for (const Edge& e : mesh.edges()) {
-      if (!keep(e)) continue;
-      data.segments.push_back(e.vertices[0]);
-      data.segments.push_back(e.vertices[1]);
-      ++range.count;
-    }
-    return range;
-  };
-  data.all_edges = add_edges([](const Edge&) { return true; });
-  data.mobius_edges = add_edges([](const Edge& e) { return e.is_mobius; });
-  data.border_edges = add_edges([](const Edge& e) { return e.is_boundary(); });
+  provoking_triangles(mesh, display_triangles(mesh, threads), data);
+  edge_segments(mesh, data);
   return data;
 }
 
@@ -131,7 +138,7 @@ void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, 
                             std::to_string(mesh.num_vertices()) + " vertices");
   }
   const Buffer<Vec3>& positions = mesh.positions();
-  const std::vector<std::uint32_t>& extra = topology.extra_vertices;
+  const Buffer<std::uint32_t>& extra = topology.extra_vertices;
   resize_for_overwrite(out.vertices, positions.size());
   resize_for_overwrite(out.extra_vertices, extra.size());
   resize_for_overwrite(out.extra_normals, extra.size());

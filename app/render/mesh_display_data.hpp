@@ -31,10 +31,10 @@ struct SegmentRange {
 struct DisplayTopology {
   // GL vertex num_vertices + i repeats mesh vertex extra_vertices[i] & ~corner_sign_bit, its normal
   // turned round where corner_sign_bit is set.
-  std::vector<std::uint32_t> extra_vertices;
-  std::vector<std::uint32_t> vertex_faces;  // per GL vertex: the face of the triangles it starts
-  std::vector<std::uint32_t> triangles;     // three GL vertex ids each, the face's own vertex first
-  std::vector<std::uint32_t> segments;      // two vertex ids each
+  Buffer<std::uint32_t> extra_vertices;
+  Buffer<std::uint32_t> vertex_faces;  // per GL vertex: the face of the triangles it starts
+  Buffer<std::uint32_t> triangles;     // three GL vertex ids each, the face's own vertex first
+  Buffer<std::uint32_t> segments;      // two vertex ids each
   SegmentRange all_edges, mobius_edges, border_edges;
   std::uint32_t num_faces = 0;
   std::uint32_t num_vertices = 0;
@@ -68,7 +68,8 @@ struct MeshDisplayData {
   std::vector<std::array<std::uint8_t, 4>> face_colors;
 };
 
-DisplayTopology build_display_topology(const Mesh& mesh);
+// On up to `threads` threads where the work splits.
+DisplayTopology build_display_topology(const Mesh& mesh, int threads = 1);
 // Where DisplayPositions' face and vertex normals come from: computed from the mesh (compute_packed_normals),
 // or already in `out` (the kernel's, e.g. Pipeline::display_normals).
 enum class DisplayNormals { computed, given };

@@ -40,6 +40,8 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
     progress_ = {};
   }
   const auto start = std::chrono::steady_clock::now();
+  // The copy of the result lent last time (display) is the pipeline's again before it runs.
+  if (pipeline_copy_.valid()) pipeline_.give_back_result(pipeline_copy_.get());
   StageResult result;
   result.stage = settings.stage;
   pipeline_.set_input(input);
@@ -119,31 +121,43 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
     result.display.topology = last_->display;
     result.borders = last_->borders;
     result.topology = last_->topology;
-  } else {
-    result.display.topology =
-        std::make_shared<const render::DisplayTopology>(render::build_display_topology(mesh));
-    result.borders = std::make_shared<const BorderLookup>(mesh);
-    result.topology = topology_report(mesh);
-  }
-  // A new topology's copy (memory bound) beside the display arrays; a kept copy of the same topology
-  // takes the positions once the display arrays have read them.
-  std::future<std::shared_ptr<const Mesh>> copied;
-  if (!is_same) {
-    copies_.clear();
-    copied = std::async(settings.threads > 1 ? std::launch::async : std::launch::deferred,
-                        [&] { return new_copy(mesh); });
-  }
-  result.display.positions = display_positions(mesh, *result.display.topology, settings.threads);
-  result.display.face_colors = render::display_face_colors(mesh);
-  if (is_same) {
+    result.display.positions = display_positions(mesh, *result.display.topology, settings.threads);
+    result.display.face_colors = render::display_face_colors(mesh);
+    // A kept copy takes the positions once the display arrays have read them.
     const std::shared_ptr<const Mesh> kept = kept_copy(mesh);
     result.mesh = kept ? kept : new_copy(mesh);
-  } else {
-    result.mesh = copied.get();
+    last_settings_ = settings;
+    return;
   }
+  // Counted before the mesh is lent (the pipeline's then holds none).
+  result.topology = pipeline_.result_report();
+  const Index counts[4] = {mesh.num_vertices(), mesh.num_faces(), mesh.num_corners(), mesh.num_edges()};
+  // The pipeline's own result, lent, is what the frame shows: no copy of it before the frame; the
+  // pipeline's copy is made afterwards, beside the frames. The scene's or merge's mesh, which the pipeline
+  // keeps as it is, is copied beside the display arrays (memory bound).
+  copies_.clear();
+  auto shown = std::make_shared<Mesh>();
+  const bool is_lent = pipeline_.lend_result(*shown);
+  std::future<void> copied;
+  if (!is_lent)
+    copied =
+        std::async(settings.threads > 1 ? std::launch::async : std::launch::deferred, [&] { *shown = mesh; });
+  const Mesh& source = is_lent ? *shown : mesh;
+  result.display.topology = std::make_shared<const render::DisplayTopology>(
+      render::build_display_topology(source, settings.threads));
+  result.borders = std::make_shared<const BorderLookup>(source);
+  result.display.positions = display_positions(source, *result.display.topology, settings.threads);
+  result.display.face_colors = render::display_face_colors(source);
+  if (is_lent)
+    pipeline_copy_ = std::async(settings.threads > 1 ? std::launch::async : std::launch::deferred,
+                                [shown] { return Mesh(*shown); });
+  else
+    copied.get();
+  copies_.push_back(shown);
+  result.mesh = shown;
   last_settings_ = settings;
-  last_ = Shared{result.display.topology, result.borders,     result.topology, mesh.num_vertices(),
-                 mesh.num_faces(),        mesh.num_corners(), mesh.num_edges()};
+  last_ = Shared{
+      result.display.topology, result.borders, result.topology, counts[0], counts[1], counts[2], counts[3]};
 }
 
 }  // namespace nome::viewer

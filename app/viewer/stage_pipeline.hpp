@@ -1,5 +1,6 @@
 #pragma once
 
+#include <future>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -45,7 +46,9 @@ struct WorkProgress {
 // caches outlive a run: a slider that only moves vertices builds no mesh, and its result shares the last
 // one's display topology, borders and topology report (the renderer then updates positions only), its
 // mesh and display positions arrays no longer held elsewhere taking the new ones (no fresh pages; the
-// mesh's positions change places with the pipeline's, Pipeline::exchange_result_positions).
+// mesh's positions change places with the pipeline's, Pipeline::exchange_result_positions). A new
+// topology's result holds the pipeline's own mesh (Pipeline::lend_result): the frame does not wait for a
+// copy, which is made after the result is handed over and given back to the pipeline at the next run.
 class StagePipeline {
  public:
   StagePipeline();
@@ -70,6 +73,7 @@ class StagePipeline {
                                                                     int threads);
 
   std::mutex mutex_;
+  std::future<Mesh> pipeline_copy_;  // of the result lent to the last new topology's StageResult
   std::optional<PipelineSettings> last_settings_;
   // What results of the last one's topology share.
   struct Shared {

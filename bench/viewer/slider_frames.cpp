@@ -82,7 +82,7 @@ void topology_figures(Session& session, const StageView& view, const std::functi
 // The shown mesh's triangles over its own vertices (no extra GL vertices).
 std::vector<std::uint32_t> own_triangles(const StageResult& shown) {
   const render::DisplayTopology& topology = *shown.display.topology;
-  std::vector<std::uint32_t> triangles(topology.triangles);
+  std::vector<std::uint32_t> triangles(topology.triangles.begin(), topology.triangles.end());
   for (std::uint32_t& u : triangles)
     if (u >= topology.num_vertices)
       u = topology.extra_vertices[u - topology.num_vertices] & ~render::corner_sign_bit;

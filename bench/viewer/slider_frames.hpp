@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdlib>
 #include <span>
 #include <vector>
 
@@ -29,6 +30,10 @@ double cpu_ms();
 // for a slider that moves vertices and one that changes the topology.
 void million_figures();
 void frame_figures();
+// The viewer's first offset solid in a new process and warm (first_solid.cpp): the figures, and what the
+// new process runs and prints for them.
+void first_solid_figures();
+int print_first_solid();
 
 // The floor of a draw on this GL: the same triangles with a trivial shader (transform, constant colour)
 // into the bound framebuffer, median wall and CPU (all threads) milliseconds.

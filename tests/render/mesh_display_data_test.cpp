@@ -128,3 +128,17 @@ TEST_CASE("display positions take normals given with the mesh as they are", "[re
   CHECK_THROWS_AS(render::build_display_positions(band, t, missing, 1, render::DisplayNormals::given),
                   InvalidInputError);
 }
+
+TEST_CASE("the display topology made on two threads is the one made on one", "[render]") {
+  // Enough faces for two parts, with Möbius and border edges.
+  const Mesh mesh = build_mesh(test::disjoint_union(test::grid(300, 250), test::mobius_band(24, 3)));
+  const render::DisplayTopology one = render::build_display_topology(mesh, 1);
+  const render::DisplayTopology two = render::build_display_topology(mesh, 2);
+  CHECK(two.triangles == one.triangles);
+  CHECK(two.vertex_faces == one.vertex_faces);
+  CHECK(two.extra_vertices == one.extra_vertices);
+  CHECK(two.segments == one.segments);
+  CHECK(two.mobius_edges.first == one.mobius_edges.first);
+  CHECK(two.mobius_edges.count == 3);  // the band's seam
+  CHECK(two.border_edges.count == one.border_edges.count);
+}

@@ -224,6 +224,21 @@ bool Pipeline::exchange_result_positions(Buffer<Vec3>& positions) {
   return is_solid_result() && solid_->exchange_result_positions(positions);
 }
 
+bool Pipeline::lend_result(Mesh& mesh) {
+  return is_solid_result() && solid_->lend_result(mesh);
+}
+
+void Pipeline::give_back_result(Mesh&& copy) {
+  solid_->give_back_result(std::move(copy));
+}
+
+TopologyReport Pipeline::result_report() const {
+  if (!result_) return {};
+  if (is_solid_result())
+    if (std::optional<TopologyReport> report = solid_->derived_report()) return std::move(*report);
+  return topology_report(*result_);
+}
+
 StageWork Pipeline::work(Stage stage) const {
   if (stage == Stage::scene) return scene_->work();
   if (stage == Stage::merged) return merged_->work();

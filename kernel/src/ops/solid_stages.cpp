@@ -5,6 +5,8 @@
 #include "nome/error.hpp"
 #include "nome/ops/offset.hpp"
 #include "nome/ops/offset_normals.hpp"
+#include "nome/ops/offset_report.hpp"
+#include "nome/ops/subdivided_report.hpp"
 
 namespace nome {
 namespace {
@@ -34,6 +36,8 @@ const Mesh& SolidStages::run(const Mesh& input, InputChange change, const Pipeli
   has_new_topology_ = is_first_run || change == InputChange::topology;
   has_new_positions_ = has_new_topology_ || change == InputChange::positions || has_exchanged_result_;
   has_exchanged_result_ = false;
+  input_ = &input;
+  forget_lent_result();
   try {
     return run_stages(input, s, previous);
   } catch (...) {
@@ -95,6 +99,39 @@ bool SolidStages::exchange_result_positions(Buffer<Vec3>& positions) {
   result_->positions().swap(positions);
   has_exchanged_result_ = true;
   return true;
+}
+
+bool SolidStages::lend_result(Mesh& mesh) {
+  if (!result_) return false;
+  std::swap(*result_, mesh);
+  lent_ = result_;
+  return true;
+}
+
+void SolidStages::give_back_result(Mesh&& copy) {
+  if (!lent_) return;
+  *lent_ = std::move(copy);
+  lent_ = nullptr;
+}
+
+void SolidStages::forget_lent_result() {
+  // The stage whose result is missing makes it again (a subdivision into its refinement's blocks).
+  if (lent_ == &before_.result) before_.levels = 0;
+  if (lent_ == &offset_.result) offset_.has_result = false;
+  if (lent_ == &after_.result) after_.levels = 0;
+  lent_ = nullptr;
+}
+
+std::optional<TopologyReport> SolidStages::derived_report() const {
+  if (!result_ || lent_) return std::nullopt;
+  if (result_ == &offset_.result) return offset_topology_report(*offset_.input);
+  const bool is_after = result_ == &after_.result;
+  const Mesh& in = is_after ? offset_.result : *input_;
+  const SubdivisionStage& stage = is_after ? after_ : before_;
+  // Holes and BoundaryMode::none drop faces: only the result has what is left.
+  if (in.has_holes() || (stage.boundary == BoundaryMode::none && in.num_boundary_loops() > 0))
+    return std::nullopt;
+  return subdivided_topology_report(in, stage.levels);
 }
 
 void SolidStages::release_refinements() {

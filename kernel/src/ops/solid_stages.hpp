@@ -6,6 +6,7 @@
 
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/normals.hpp"
+#include "nome/mesh/topology_report.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/ops/subdivide.hpp"
 
@@ -36,6 +37,12 @@ class SolidStages {
   bool display_normals(Buffer<PackedNormal>& faces, Buffer<PackedNormal>& vertices, int threads) const;
   // Pipeline::exchange_result_positions for the last stage's result: false where no stage ran.
   bool exchange_result_positions(Buffer<Vec3>& positions);
+  // Pipeline::lend_result and give_back_result for the last stage's result: false where no stage ran.
+  bool lend_result(Mesh& mesh);
+  void give_back_result(Mesh&& copy);
+  // The last result's topology report found from its stage's input (Pipeline::result_report), or none
+  // where no stage ran or the last subdivision drops faces.
+  std::optional<TopologyReport> derived_report() const;
   // Warnings of the last run (degenerate faces met by the offset's normals).
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -60,6 +67,7 @@ class SolidStages {
   // Each returns the stage's output and updates the change flags for the stages after it.
   Mesh& subdivide_stage(SubdivisionStage& stage, const Mesh& in, int levels, const PipelineSettings& s);
   Mesh& offset_stage(const Mesh& in, const PipelineSettings& s);
+  void forget_lent_result();
 
   std::optional<PipelineSettings> last_settings_;
   bool has_new_topology_ = true;       // of the current stage's input, during a run
@@ -69,7 +77,9 @@ class SolidStages {
   OffsetStage offset_;
   std::vector<std::string> warnings_;
   Progress progress_;
-  Mesh* result_ = nullptr;  // the last stage that ran, or none when the result is the input
+  Mesh* result_ = nullptr;       // the last stage that ran, or none when the result is the input
+  Mesh* lent_ = nullptr;         // a result lent out (lend_result) and not given back
+  const Mesh* input_ = nullptr;  // of the last run
 };
 
 }  // namespace nome

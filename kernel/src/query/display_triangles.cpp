@@ -4,6 +4,7 @@
 #include <glm/vec2.hpp>
 
 #include "nome/mesh/normals.hpp"
+#include "ops/parallel_for.hpp"
 
 namespace nome {
 namespace {
@@ -74,30 +75,58 @@ void clip_ears(const std::vector<Vec2>& points, std::vector<std::array<Index, 3>
   for (size_t i = 1; i + 1 < left.size(); ++i) out.push_back({left[0], left[i], left[i + 1]});
 }
 
+// A quad's two triangles from its first corner, when it is convex in the plane of its normal (or
+// degenerate); the same test as for any face, without the general case's modular indexing.
+bool fan_quad(const Mesh& mesh, Index f, Index first, DisplayTriangles& out) {
+  const std::span<const Index> vertices = mesh.face_vertices(f);
+  const Vec3 normal = polygon_area_normal(vertices, mesh.positions());
+  const Vec3* p[4];
+  for (int i = 0; i < 4; ++i) p[i] = &mesh.position(vertices[i]);
+  if (glm::length(normal) > 0.0)
+    for (int i = 0; i < 4; ++i)
+      if (glm::dot(glm::cross(*p[i] - *p[(i + 3) & 3], *p[(i + 1) & 3] - *p[i]), normal) < 0.0) return false;
+  const Index t = first - 2 * f;
+  out.corners[t] = {first, first + 1, first + 2};
+  out.corners[t + 1] = {first, first + 2, first + 3};
+  out.faces[t] = out.faces[t + 1] = f;
+  return true;
+}
+
+// Face f's triangles into out from out.corners[first - 2f] on (a face of n corners has n - 2), with
+// `local` as scratch.
+void triangulate_face(const Mesh& mesh, Index f, DisplayTriangles& out,
+                      std::vector<std::array<Index, 3>>& local) {
+  const Index first = mesh.face_first_corner(f);
+  const Index degree = mesh.face_degree(f);
+  if (degree == 4 && fan_quad(mesh, f, first, out)) return;
+  local.clear();
+  const Vec3 normal = face_area_normal(mesh, f);
+  const double length = glm::length(normal);
+  if (degree == 3 || !(length > 0.0) || is_convex(mesh, mesh.face_vertices(f), normal)) {
+    for (Index i = 1; i + 1 < degree; ++i) local.push_back({0, i, i + 1});
+  } else {
+    clip_ears(project(mesh, mesh.face_vertices(f), normal / length), local);
+  }
+  Index t = first - 2 * f;
+  for (const auto& corners : local) {
+    out.corners[t] = {first + corners[0], first + corners[1], first + corners[2]};
+    out.faces[t++] = f;
+  }
+}
+
 }  // namespace
 
-DisplayTriangles display_triangles(const Mesh& mesh) {
+DisplayTriangles display_triangles(const Mesh& mesh, int threads) {
   DisplayTriangles out;
+  // Each face has two triangles fewer than corners, so face f's come from first corner - 2f on: the faces
+  // are independent.
   const Index count = mesh.num_corners() - 2 * mesh.num_faces();
-  out.corners.reserve(count);
-  out.faces.reserve(count);
-  std::vector<std::array<Index, 3>> local;
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
-    const Index first = mesh.face_first_corner(f);
-    const Index degree = mesh.face_degree(f);
-    local.clear();
-    const Vec3 normal = face_area_normal(mesh, f);
-    const double length = glm::length(normal);
-    if (degree == 3 || !(length > 0.0) || is_convex(mesh, mesh.face_vertices(f), normal)) {
-      for (Index i = 1; i + 1 < degree; ++i) local.push_back({0, i, i + 1});
-    } else {
-      clip_ears(project(mesh, mesh.face_vertices(f), normal / length), local);
-    }
-    for (const auto& t : local) {
-      out.corners.push_back({first + t[0], first + t[1], first + t[2]});
-      out.faces.push_back(f);
-    }
-  }
+  out.corners.resize(count);
+  out.faces.resize(count);
+  parallel_for(mesh.num_faces(), threads, [&](Index begin, Index end) {
+    std::vector<std::array<Index, 3>> local;
+    for (Index f = begin; f < end; ++f) triangulate_face(mesh, f, out, local);
+  });
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/offset.hpp"
 #include "nome/ops/pipeline.hpp"
+#include "support/same_report.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
@@ -308,4 +309,62 @@ TEST_CASE("a later stage's result positions change places with the caller's, the
     CHECK_FALSE(live.exchange_result_positions(kept));
     CHECK(kept == Buffer<Vec3>(band.num_vertices(), Vec3(7.0)));
   }
+}
+
+TEST_CASE("a later stage's result is lent out, then given back as a copy or made again", "[kernel]") {
+  const Mesh band = build_mesh(test::mobius_band(12, 2));
+  const Mesh band_moved = moved(band, 0.1);
+  for (const Stage stage : {Stage::subdivided, Stage::offset, Stage::subdivided_offset}) {
+    INFO("stage " << int(stage));
+    PipelineSettings s = full_options();
+    s.stage = stage;
+    Pipeline fresh;
+    const Mesh expected_moved = fresh.run(band_moved, s);
+    for (const bool gives_back : {true, false}) {
+      INFO("gives back " << gives_back);
+      Pipeline live;
+      const Buffer<Vec3> made = live.run(band, s).positions();
+      Mesh lent;
+      REQUIRE(live.lend_result(lent));
+      CHECK(lent.positions() == made);
+      CHECK(validate(lent).empty());
+      if (gives_back) live.give_back_result(Mesh(lent));
+      // Moved vertices flow into the copy given back; without one the stage makes its result again.
+      const Mesh& again = live.run(band_moved, s);
+      CHECK(again.positions() == expected_moved.positions());
+      CHECK(again.corner_vertices() == expected_moved.corner_vertices());
+      CHECK(live.work(stage) == (gives_back ? StageWork::positions : StageWork::rebuilt));
+      CHECK(lent.positions() == made);  // the lent mesh is the caller's
+    }
+  }
+  // The scene's and merge's meshes stay the pipeline's.
+  for (const Stage stage : {Stage::scene, Stage::merged}) {
+    PipelineSettings s = full_options();
+    s.stage = stage;
+    Pipeline live;
+    live.run(band, s);
+    Mesh lent;
+    CHECK_FALSE(live.lend_result(lent));
+    CHECK(lent.num_faces() == 0);
+    CHECK(live.run(band, s).num_faces() == band.num_faces());
+  }
+}
+
+TEST_CASE("the result's report, derived from a stage's input, is the one counted on the result", "[kernel]") {
+  Mesh holed = build_mesh(test::torus(6, 4));
+  holed.set_hole(3, true);
+  std::vector<Mesh> meshes = {build_mesh(test::mobius_band(12, 2)), build_mesh(test::klein_bottle(8, 6)),
+                              build_mesh(test::disjoint_union(test::tetrahedron(), test::mobius_band(7, 1)))};
+  meshes.push_back(std::move(holed));
+  for (const Mesh& mesh : meshes)
+    for (const Stage stage : {Stage::scene, Stage::subdivided, Stage::offset, Stage::subdivided_offset})
+      for (const BoundaryMode boundary : {BoundaryMode::edge_only, BoundaryMode::none}) {
+        CAPTURE(mesh.num_faces(), int(stage), int(boundary));
+        PipelineSettings s = full_options();
+        s.stage = stage;
+        s.boundary = boundary;
+        Pipeline live;
+        const Mesh& result = live.run(mesh, s);
+        test::check_same_report(live.result_report(), topology_report(result));
+      }
 }

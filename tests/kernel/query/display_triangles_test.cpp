@@ -37,6 +37,20 @@ void check_covers_faces(const Mesh& mesh, const DisplayTriangles& tri) {
   }
 }
 
+// The one face through `positions`, once starting at each of its corners.
+std::vector<Mesh> face_rotations(const std::vector<Vec3>& positions) {
+  PolygonSoup soup;
+  soup.positions.assign(positions.begin(), positions.end());
+  soup.face_offsets = {0, Index(soup.positions.size())};
+  for (Index v = 0; v < soup.positions.size(); ++v) soup.face_vertices.push_back(v);
+  std::vector<Mesh> meshes;
+  for (std::size_t rotation = 0; rotation < soup.positions.size(); ++rotation) {
+    std::rotate(soup.face_vertices.begin(), soup.face_vertices.begin() + 1, soup.face_vertices.end());
+    meshes.push_back(build_mesh(soup));
+  }
+  return meshes;
+}
+
 }  // namespace
 
 TEST_CASE("display triangles of procedural shapes keeps each face's orientation", "[kernel]") {
@@ -49,13 +63,8 @@ TEST_CASE("display triangles of procedural shapes keeps each face's orientation"
 
 TEST_CASE("a concave face is ear-clipped, never fanned across its notch", "[kernel]") {
   // An L-shape whose fan from corner 0 would cover the notch; each triangle must lie inside the L.
-  PolygonSoup soup;
-  soup.positions = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
-  soup.face_vertices = {0, 1, 2, 3, 4, 5};
-  soup.face_offsets = {0, 6};
-  for (int rotation = 0; rotation < 6; ++rotation) {
-    std::rotate(soup.face_vertices.begin(), soup.face_vertices.begin() + 1, soup.face_vertices.end());
-    const Mesh mesh = build_mesh(soup);
+  for (const Mesh& mesh :
+       face_rotations({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}})) {
     const DisplayTriangles tri = display_triangles(mesh);
     check_covers_faces(mesh, tri);
     for (const auto& t : tri.corners) {
@@ -66,4 +75,27 @@ TEST_CASE("a concave face is ear-clipped, never fanned across its notch", "[kern
       CHECK_FALSE((centroid.x > 1.0 && centroid.y > 1.0));
     }
   }
+}
+
+TEST_CASE("a concave quad is split along its inner diagonal, whichever corner is the reflex one",
+          "[kernel]") {
+  // A dart: corner 2 at (1, 0.5) points into the quad.
+  for (const Mesh& mesh : face_rotations({{0, 0, 0}, {2, 0, 0}, {1, 0.5, 0}, {0, 2, 0}})) {
+    const DisplayTriangles tri = display_triangles(mesh);
+    check_covers_faces(mesh, tri);
+    // Both triangles counter-clockwise: the diagonal through the reflex corner.
+    for (const auto& t : tri.corners) CHECK(triangle_area_normal(mesh, t).z > 0.0);
+  }
+}
+
+TEST_CASE("display triangles on two threads are those made on one", "[kernel]") {
+  // Enough faces for two parts, with concave faces and triangles among the quads.
+  PolygonSoup soup = test::grid(300, 250);
+  for (std::size_t v = 0; v < soup.positions.size(); v += 7) soup.positions[v] += Vec3(0.6, 0.45, 0.0);
+  const Mesh mesh = build_mesh(test::disjoint_union(soup, test::tetrahedron()));
+  const DisplayTriangles one = display_triangles(mesh, 1);
+  const DisplayTriangles two = display_triangles(mesh, 2);
+  CHECK(two.corners == one.corners);
+  CHECK(two.faces == one.faces);
+  check_covers_faces(mesh, two);
 }

@@ -10,6 +10,7 @@
 #include "nome/mesh/normals.hpp"
 #include "nome/mesh/polygon_soup.hpp"
 #include "nome/mesh/quad_surface.hpp"
+#include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
 #include "nome/ops/offset_surface.hpp"
 #include "nome/ops/pipeline_input.hpp"
@@ -121,6 +122,18 @@ class Pipeline {
   // them without copying, and hands back an older array to be written over. The stages compute their
   // positions again at the next run, whatever changed. Otherwise returns false and changes nothing.
   bool exchange_result_positions(Buffer<Vec3>& positions);
+
+  // Lends the last run's result, when it is a subdivision's or an offset's, to a caller that keeps it (a
+  // viewer shows it without copying it first): swapped with `mesh`. The caller gives a copy back with
+  // give_back_result before the next run, else that run makes the result again. Otherwise returns false
+  // and changes nothing.
+  bool lend_result(Mesh& mesh);
+  // A copy of the lent result, positions and all.
+  void give_back_result(Mesh&& copy);
+  // The last run's topology report: from its last stage's input where that stage decides it (an offset,
+  // a subdivision that outputs every face; subdivided_topology_report, offset_topology_report), else
+  // counted on the result. Call it before lending the result.
+  TopologyReport result_report() const;
 
   // What each stage did in the last run.
   StageWork work(Stage stage) const;

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <array>
-#include <vector>
 
 #include "nome/mesh/mesh.hpp"
 
@@ -15,12 +14,13 @@ namespace nome {
 // corners[t][i] -> corners[t][(i+1)%3] is a real polygon edge (not a fan diagonal) exactly when the second
 // corner follows the first in the face.
 struct DisplayTriangles {
-  std::vector<std::array<Index, 3>> corners;
-  std::vector<Index> faces;
+  Buffer<std::array<Index, 3>> corners;
+  Buffer<Index> faces;
 
   Index size() const { return static_cast<Index>(faces.size()); }
 };
 
-DisplayTriangles display_triangles(const Mesh& mesh);
+// On up to `threads` threads.
+DisplayTriangles display_triangles(const Mesh& mesh, int threads = 1);
 
 }  // namespace nome
