@@ -1,6 +1,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
 
 #include <glm/geometric.hpp>
 
@@ -197,4 +200,35 @@ TEST_CASE("an offset of two parallel copies shows its surface's normals, any oth
   REQUIRE(shown_surface);
   CHECK(shown_surface->display.positions->vertex_normals ==
         render::build_display_data(*shown_surface->mesh).positions->vertex_normals);
+}
+
+TEST_CASE("a new solid is read by a frame while the pipeline copies it and the next ticks run",
+          "[app][threads]") {
+  viewer::Session session = viewer::Session::open(NOME_SOURCE_DIR "/assets/funnel_cube_consolidated.nome");
+  StagePipeline pipeline;
+  PipelineSettings settings = viewer::initial_settings();
+  settings.stage = Stage::offset;
+  settings.threads = 2;  // the pipeline's copy on a thread of its own
+  auto run = [&](StagePipeline& p) { return p.run(session.pipeline_input(), settings, std::stop_token{}); };
+  const auto first = run(pipeline);
+  REQUIRE(first);
+  const Buffer<Vec3> first_positions = first->mesh->positions();
+  // The frame's thread reads the solid all along (its picking, its panels).
+  std::atomic<bool> done{false};
+  double sum = 0.0;
+  std::thread frame([&] {
+    while (!done)
+      for (const Vec3& p : first->mesh->positions()) sum += p.x;
+  });
+  for (const double h : {0.4, 0.5, 0.6}) {
+    session.set_parameter("fp_h", h);
+    const auto moved = run(pipeline);
+    REQUIRE(moved);
+    StagePipeline fresh;
+    CHECK(moved->mesh->positions() == run(fresh)->mesh->positions());
+  }
+  done = true;
+  frame.join();
+  CHECK(first->mesh->positions() == first_positions);
+  CHECK(std::isfinite(sum));
 }
