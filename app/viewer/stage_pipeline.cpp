@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <future>
+#include <memory>
 #include <thread>
 
 namespace nome::viewer {
@@ -40,8 +41,6 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
     progress_ = {};
   }
   const auto start = std::chrono::steady_clock::now();
-  // The copy of the result lent last time (display) is the pipeline's again before it runs.
-  if (pipeline_copy_.valid()) pipeline_.give_back_result(pipeline_copy_.get());
   StageResult result;
   result.stage = settings.stage;
   pipeline_.set_input(input);
@@ -132,12 +131,15 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
   // Counted before the mesh is lent (the pipeline's then holds none).
   result.topology = pipeline_.result_report();
   const Index counts[4] = {mesh.num_vertices(), mesh.num_faces(), mesh.num_corners(), mesh.num_edges()};
-  // The pipeline's own result, lent, is what the frame shows: no copy of it before the frame; the
-  // pipeline's copy is made afterwards, beside the frames. The scene's or merge's mesh, which the pipeline
-  // keeps as it is, is copied beside the display arrays (memory bound).
+  // The pipeline's own result, lent, is what the frame shows: no copy of it before the frame. The copy
+  // the pipeline takes back when it needs it (moved vertices) is made afterwards on a thread of its own,
+  // beside the frames, or on one thread when the pipeline asks. The scene's or merge's mesh, which the
+  // pipeline keeps as it is, is copied beside the display arrays (memory bound).
   copies_.clear();
   auto shown = std::make_shared<Mesh>();
-  const bool is_lent = pipeline_.lend_result(*shown);
+  auto copy_back = std::make_shared<std::future<Mesh>>();
+  const bool is_lent = pipeline_.lend_result(
+      *shown, [copy_back, shown] { return copy_back->valid() ? copy_back->get() : Mesh(*shown); });
   std::future<void> copied;
   if (!is_lent)
     copied =
@@ -148,11 +150,13 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
   result.borders = std::make_shared<const BorderLookup>(source);
   result.display.positions = display_positions(source, *result.display.topology, settings.threads);
   result.display.face_colors = render::display_face_colors(source);
-  if (is_lent)
-    pipeline_copy_ = std::async(settings.threads > 1 ? std::launch::async : std::launch::deferred,
-                                [shown] { return Mesh(*shown); });
-  else
+  if (is_lent && settings.threads > 1) {
+    std::packaged_task<Mesh()> copy([shown] { return Mesh(*shown); });
+    *copy_back = copy.get_future();
+    copy_thread_ = std::jthread(std::move(copy));  // joins the last copy first
+  } else if (!is_lent) {
     copied.get();
+  }
   copies_.push_back(shown);
   result.mesh = shown;
   last_settings_ = settings;

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stop_token>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "nome/edit/scene_document.hpp"
@@ -48,7 +49,8 @@ struct WorkProgress {
 // mesh and display positions arrays no longer held elsewhere taking the new ones (no fresh pages; the
 // mesh's positions change places with the pipeline's, Pipeline::exchange_result_positions). A new
 // topology's result holds the pipeline's own mesh (Pipeline::lend_result): the frame does not wait for a
-// copy, which is made after the result is handed over and given back to the pipeline at the next run.
+// copy, which is made after the result is handed over, and read by the pipeline only when a later run
+// takes the result up again (a run that makes a new topology does not wait for it).
 class StagePipeline {
  public:
   StagePipeline();
@@ -73,7 +75,7 @@ class StagePipeline {
                                                                     int threads);
 
   std::mutex mutex_;
-  std::future<Mesh> pipeline_copy_;  // of the result lent to the last new topology's StageResult
+  std::jthread copy_thread_;  // copies the result lent to the last new topology's StageResult
   std::optional<PipelineSettings> last_settings_;
   // What results of the last one's topology share.
   struct Shared {

@@ -224,12 +224,8 @@ bool Pipeline::exchange_result_positions(Buffer<Vec3>& positions) {
   return is_solid_result() && solid_->exchange_result_positions(positions);
 }
 
-bool Pipeline::lend_result(Mesh& mesh) {
-  return is_solid_result() && solid_->lend_result(mesh);
-}
-
-void Pipeline::give_back_result(Mesh&& copy) {
-  solid_->give_back_result(std::move(copy));
+bool Pipeline::lend_result(Mesh& mesh, std::function<Mesh()> copy_back) {
+  return is_solid_result() && solid_->lend_result(mesh, std::move(copy_back));
 }
 
 TopologyReport Pipeline::result_report() const {

@@ -37,9 +37,12 @@ const Mesh& SolidStages::run(const Mesh& input, InputChange change, const Pipeli
   has_new_positions_ = has_new_topology_ || change == InputChange::positions || has_exchanged_result_;
   has_exchanged_result_ = false;
   input_ = &input;
-  forget_lent_result();
   try {
-    return run_stages(input, s, previous);
+    const Mesh& result = run_stages(input, s, previous);
+    // A result still lent out was made anew or its stage left out: its copy is not needed.
+    lent_ = nullptr;
+    copy_back_ = nullptr;
+    return result;
   } catch (...) {
     // A stage left half done must not pass for a cached one next time.
     Progress progress = std::move(progress_);
@@ -101,25 +104,22 @@ bool SolidStages::exchange_result_positions(Buffer<Vec3>& positions) {
   return true;
 }
 
-bool SolidStages::lend_result(Mesh& mesh) {
+bool SolidStages::lend_result(Mesh& mesh, std::function<Mesh()> copy_back) {
   if (!result_) return false;
   std::swap(*result_, mesh);
   lent_ = result_;
+  copy_back_ = std::move(copy_back);
   return true;
 }
 
-void SolidStages::give_back_result(Mesh&& copy) {
-  if (!lent_) return;
-  *lent_ = std::move(copy);
+bool SolidStages::takes_back(Mesh& result) {
+  if (&result != lent_) return true;
   lent_ = nullptr;
-}
-
-void SolidStages::forget_lent_result() {
-  // The stage whose result is missing makes it again (a subdivision into its refinement's blocks).
-  if (lent_ == &before_.result) before_.levels = 0;
-  if (lent_ == &offset_.result) offset_.has_result = false;
-  if (lent_ == &after_.result) after_.levels = 0;
-  lent_ = nullptr;
+  const std::function<Mesh()> copy = std::move(copy_back_);
+  copy_back_ = nullptr;
+  if (!copy) return false;
+  result = copy();
+  return true;
 }
 
 std::optional<TopologyReport> SolidStages::derived_report() const {
@@ -159,7 +159,9 @@ Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int 
   const bool is_same_topology = !has_new_topology_ && stage.levels == levels &&
                                 stage.boundary == s.boundary && stage.creases == s.creases &&
                                 (!stage.refinement || stage.refinement->fits(in));
-  if (!is_same_topology || (has_new_positions_ && !stage.refinement)) {
+  const bool reuses_result =
+      is_same_topology && !(has_new_positions_ && !stage.refinement) && takes_back(stage.result);
+  if (!reuses_result) {
     progress_("subdivision", 0.0);
     // Into the last refinement's blocks where there is one: a slider that changes the topology then
     // faults in no fresh pages. A refinement that throws is dropped, as a new one would not be kept.
@@ -195,7 +197,8 @@ Mesh& SolidStages::subdivide_stage(SubdivisionStage& stage, const Mesh& in, int 
 
 Mesh& SolidStages::offset_stage(const Mesh& in, const PipelineSettings& s) {
   offset_.input = &in;
-  if (!has_new_topology_ && !has_new_positions_ && offset_.has_result) {
+  const bool reuses_result = !has_new_topology_ && offset_.has_result && takes_back(offset_.result);
+  if (reuses_result && !has_new_positions_) {
     offset_.work = StageWork::cached;
     return offset_.result;
   }
@@ -205,7 +208,7 @@ Mesh& SolidStages::offset_stage(const Mesh& in, const PipelineSettings& s) {
   progress_("offset", 0.3);
   if (std::string warning = degeneracy_warning(in, normals); !warning.empty())
     warnings_.push_back("offset: " + warning);
-  if (has_new_topology_ || !offset_.has_result) {
+  if (!reuses_result) {
     offset_into(in, normals, s.distance(), offset_.result, s.threads);
     offset_.has_result = true;
     offset_.work = StageWork::rebuilt;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,9 +38,8 @@ class SolidStages {
   bool display_normals(Buffer<PackedNormal>& faces, Buffer<PackedNormal>& vertices, int threads) const;
   // Pipeline::exchange_result_positions for the last stage's result: false where no stage ran.
   bool exchange_result_positions(Buffer<Vec3>& positions);
-  // Pipeline::lend_result and give_back_result for the last stage's result: false where no stage ran.
-  bool lend_result(Mesh& mesh);
-  void give_back_result(Mesh&& copy);
+  // Pipeline::lend_result for the last stage's result: false where no stage ran.
+  bool lend_result(Mesh& mesh, std::function<Mesh()> copy_back);
   // The last result's topology report found from its stage's input (Pipeline::result_report), or none
   // where no stage ran or the last subdivision drops faces.
   std::optional<TopologyReport> derived_report() const;
@@ -67,7 +67,9 @@ class SolidStages {
   // Each returns the stage's output and updates the change flags for the stages after it.
   Mesh& subdivide_stage(SubdivisionStage& stage, const Mesh& in, int levels, const PipelineSettings& s);
   Mesh& offset_stage(const Mesh& in, const PipelineSettings& s);
-  void forget_lent_result();
+  // Whether a stage may take up its `result` again: true unless it is lent out and cannot be copied
+  // back (then the stage makes it anew).
+  bool takes_back(Mesh& result);
 
   std::optional<PipelineSettings> last_settings_;
   bool has_new_topology_ = true;       // of the current stage's input, during a run
@@ -77,8 +79,9 @@ class SolidStages {
   OffsetStage offset_;
   std::vector<std::string> warnings_;
   Progress progress_;
-  Mesh* result_ = nullptr;       // the last stage that ran, or none when the result is the input
-  Mesh* lent_ = nullptr;         // a result lent out (lend_result) and not given back
+  Mesh* result_ = nullptr;  // the last stage that ran, or none when the result is the input
+  Mesh* lent_ = nullptr;    // a result lent out (lend_result) and not taken back
+  std::function<Mesh()> copy_back_;
   const Mesh* input_ = nullptr;  // of the last run
 };
 

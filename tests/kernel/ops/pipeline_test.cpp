@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <functional>
 
 #include "nome/error.hpp"
 #include "nome/mesh/topology_report.hpp"
@@ -311,30 +312,41 @@ TEST_CASE("a later stage's result positions change places with the caller's, the
   }
 }
 
-TEST_CASE("a later stage's result is lent out, then given back as a copy or made again", "[kernel]") {
+TEST_CASE("a later stage's result is lent out, copied back when taken up again, else made again",
+          "[kernel]") {
   const Mesh band = build_mesh(test::mobius_band(12, 2));
   const Mesh band_moved = moved(band, 0.1);
+  const Mesh other = build_mesh(test::mobius_band(14, 2));
   for (const Stage stage : {Stage::subdivided, Stage::offset, Stage::subdivided_offset}) {
     INFO("stage " << int(stage));
     PipelineSettings s = full_options();
     s.stage = stage;
     Pipeline fresh;
     const Mesh expected_moved = fresh.run(band_moved, s);
-    for (const bool gives_back : {true, false}) {
-      INFO("gives back " << gives_back);
+    for (const bool copies_back : {true, false}) {
+      INFO("copies back " << copies_back);
       Pipeline live;
       const Buffer<Vec3> made = live.run(band, s).positions();
       Mesh lent;
-      REQUIRE(live.lend_result(lent));
+      int copies = 0;
+      std::function<Mesh()> copy_back;
+      if (copies_back) copy_back = [&] { return ++copies, Mesh(lent); };
+      REQUIRE(live.lend_result(lent, copy_back));
       CHECK(lent.positions() == made);
       CHECK(validate(lent).empty());
-      if (gives_back) live.give_back_result(Mesh(lent));
-      // Moved vertices flow into the copy given back; without one the stage makes its result again.
+      // Moved vertices flow into the copy; without one the stage makes its result again.
       const Mesh& again = live.run(band_moved, s);
       CHECK(again.positions() == expected_moved.positions());
       CHECK(again.corner_vertices() == expected_moved.corner_vertices());
-      CHECK(live.work(stage) == (gives_back ? StageWork::positions : StageWork::rebuilt));
+      CHECK(live.work(stage) == (copies_back ? StageWork::positions : StageWork::rebuilt));
+      CHECK(copies == (copies_back ? 1 : 0));
       CHECK(lent.positions() == made);  // the lent mesh is the caller's
+      // A new topology makes the stage anew: the copy is never asked for.
+      REQUIRE(live.lend_result(lent, copy_back));
+      const int before = copies;
+      Pipeline fresh_other;
+      CHECK(live.run(other, s).positions() == fresh_other.run(other, s).positions());
+      CHECK(copies == before);
     }
   }
   // The scene's and merge's meshes stay the pipeline's.
@@ -344,7 +356,7 @@ TEST_CASE("a later stage's result is lent out, then given back as a copy or made
     Pipeline live;
     live.run(band, s);
     Mesh lent;
-    CHECK_FALSE(live.lend_result(lent));
+    CHECK_FALSE(live.lend_result(lent, [] { return Mesh(); }));
     CHECK(lent.num_faces() == 0);
     CHECK(live.run(band, s).num_faces() == band.num_faces());
   }

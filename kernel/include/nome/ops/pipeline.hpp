@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -124,12 +125,11 @@ class Pipeline {
   bool exchange_result_positions(Buffer<Vec3>& positions);
 
   // Lends the last run's result, when it is a subdivision's or an offset's, to a caller that keeps it (a
-  // viewer shows it without copying it first): swapped with `mesh`. The caller gives a copy back with
-  // give_back_result before the next run, else that run makes the result again. Otherwise returns false
-  // and changes nothing.
-  bool lend_result(Mesh& mesh);
-  // A copy of the lent result, positions and all.
-  void give_back_result(Mesh&& copy);
+  // viewer shows it without copying it first): swapped with `mesh`. A later run that takes the stage's
+  // result up again (moved vertices, the same topology) calls `copy_back` for a copy of it, positions and
+  // all; one that makes the stage anew, or leaves it out, does not call it. Without `copy_back` that run
+  // makes the result again. Otherwise returns false and changes nothing.
+  bool lend_result(Mesh& mesh, std::function<Mesh()> copy_back);
   // The last run's topology report: from its last stage's input where that stage decides it (an offset,
   // a subdivision that outputs every face; subdivided_topology_report, offset_topology_report), else
   // counted on the result. Call it before lending the result.
