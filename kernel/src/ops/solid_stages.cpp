@@ -123,7 +123,7 @@ bool SolidStages::takes_back(Mesh& result) {
 }
 
 std::optional<TopologyReport> SolidStages::derived_report() const {
-  if (!result_ || lent_) return std::nullopt;
+  if (!result_) return std::nullopt;
   if (result_ == &offset_.result) return offset_topology_report(*offset_.input);
   const bool is_after = result_ == &after_.result;
   const Mesh& in = is_after ? offset_.result : *input_;

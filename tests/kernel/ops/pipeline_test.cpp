@@ -334,6 +334,8 @@ TEST_CASE("a later stage's result is lent out, copied back when taken up again, 
       REQUIRE(live.lend_result(lent, copy_back));
       CHECK(lent.positions() == made);
       CHECK(validate(lent).empty());
+      // The report comes from the stages' inputs, which stay the pipeline's.
+      test::check_same_report(live.result_report(), topology_report(lent));
       // Moved vertices flow into the copy; without one the stage makes its result again.
       const Mesh& again = live.run(band_moved, s);
       CHECK(again.positions() == expected_moved.positions());

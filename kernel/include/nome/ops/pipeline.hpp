@@ -132,7 +132,7 @@ class Pipeline {
   bool lend_result(Mesh& mesh, std::function<Mesh()> copy_back);
   // The last run's topology report: from its last stage's input where that stage decides it (an offset,
   // a subdivision that outputs every face; subdivided_topology_report, offset_topology_report), else
-  // counted on the result. Call it before lending the result.
+  // counted on the result (then before lending it).
   TopologyReport result_report() const;
 
   // What each stage did in the last run.
