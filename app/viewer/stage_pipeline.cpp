@@ -150,10 +150,16 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
   result.borders = std::make_shared<const BorderLookup>(source);
   result.display.positions = display_positions(source, *result.display.topology, settings.threads);
   result.display.face_colors = render::display_face_colors(source);
-  if (is_lent && settings.threads > 1) {
+  // One copy in flight at a time, and no run waits for one it does not need: while the last is still
+  // being made (new topologies in quick succession), the pipeline copies this result itself if it asks.
+  if (is_lent && settings.threads > 1 && (!copy_thread_.joinable() || copy_done_->load())) {
     std::packaged_task<Mesh()> copy([shown] { return Mesh(*shown); });
     *copy_back = copy.get_future();
-    copy_thread_ = std::jthread(std::move(copy));  // joins the last copy first
+    copy_done_ = std::make_shared<std::atomic<bool>>(false);
+    copy_thread_ = std::jthread([copy = std::move(copy), done = copy_done_]() mutable {
+      copy();
+      done->store(true);
+    });
   } else if (!is_lent) {
     copied.get();
   }

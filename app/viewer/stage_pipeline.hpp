@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <future>
 #include <memory>
 #include <mutex>
@@ -75,7 +76,9 @@ class StagePipeline {
                                                                     int threads);
 
   std::mutex mutex_;
-  std::jthread copy_thread_;  // copies the result lent to the last new topology's StageResult
+  // Copies the result lent to the last new topology's StageResult; done once the flag is set.
+  std::jthread copy_thread_;
+  std::shared_ptr<std::atomic<bool>> copy_done_;
   std::optional<PipelineSettings> last_settings_;
   // What results of the last one's topology share.
   struct Shared {

@@ -231,4 +231,15 @@ TEST_CASE("a new solid is read by a frame while the pipeline copies it and the n
   frame.join();
   CHECK(first->mesh->positions() == first_positions);
   CHECK(std::isfinite(sum));
+  // New topologies in quick succession (a copy may still be in flight, so the next is made on demand),
+  // then moved vertices: the positions of a fresh run every time.
+  for (const double n : {7.0, 8.0, 9.0}) {
+    session.set_parameter("fp_n", n);
+    REQUIRE(run(pipeline));
+    session.set_parameter("fp_h", 0.3 + 0.01 * n);
+    const auto moved = run(pipeline);
+    REQUIRE(moved);
+    StagePipeline fresh;
+    CHECK(moved->mesh->positions() == run(fresh)->mesh->positions());
+  }
 }
