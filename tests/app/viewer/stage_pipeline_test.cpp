@@ -41,6 +41,13 @@ Mesh shown(StagePipeline& pipeline, const PipelineInput& soup, const PipelineSet
   return *result->mesh;
 }
 
+// The viewer's first settings, showing the offset stage.
+PipelineSettings offset_settings() {
+  PipelineSettings settings = viewer::initial_settings();
+  settings.stage = Stage::offset;
+  return settings;
+}
+
 }  // namespace
 
 TEST_CASE("the later stages start from the merged mesh, or from the scene's pieces on their own", "[app]") {
@@ -111,8 +118,7 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
           "[app]") {
   viewer::Session session = viewer::Session::open(NOME_SOURCE_DIR "/assets/funnel_cube_consolidated.nome");
   StagePipeline pipeline;
-  PipelineSettings settings = viewer::initial_settings();
-  settings.stage = Stage::offset;
+  const PipelineSettings settings = offset_settings();
   auto run = [&] { return pipeline.run(session.pipeline_input(), settings, std::stop_token{}); };
   const auto first = run();
   REQUIRE(first);
@@ -206,8 +212,7 @@ TEST_CASE("a new solid is read by a frame while the pipeline copies it and the n
           "[app][threads]") {
   viewer::Session session = viewer::Session::open(NOME_SOURCE_DIR "/assets/funnel_cube_consolidated.nome");
   StagePipeline pipeline;
-  PipelineSettings settings = viewer::initial_settings();
-  settings.stage = Stage::offset;
+  PipelineSettings settings = offset_settings();
   settings.threads = 2;  // the pipeline's copy on a thread of its own
   auto run = [&](StagePipeline& p) { return p.run(session.pipeline_input(), settings, std::stop_token{}); };
   const auto first = run(pipeline);
