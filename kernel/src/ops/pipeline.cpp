@@ -6,6 +6,7 @@
 
 #include "nome/error.hpp"
 #include "nome/ops/offset.hpp"
+#include "nome/ops/subdivided_report.hpp"
 #include "ops/merge_stage.hpp"
 #include "ops/scene_stage.hpp"
 #include "ops/solid_stages.hpp"
@@ -144,10 +145,8 @@ LastSubdivision Pipeline::run_to_last_subdivision(const PipelineSettings& s, boo
   PipelineSettings before = s;
   (is_after_offset ? before.subdivision_after : before.subdivision_levels) = 0;
   const Mesh& input = run(before, s, true);
-  // Holes and BoundaryMode::none drop faces and renumber vertices: only the Mesh has that.
-  const bool drops_faces =
-      input.has_holes() || (s.boundary == BoundaryMode::none && input.num_boundary_loops() > 0);
-  if (drops_faces || (needs_creases && has_sharp_edge(input))) return {&run(s), 0};
+  if (!subdivision_outputs_every_face(input, s.boundary) || (needs_creases && has_sharp_edge(input)))
+    return {&run(s), 0};
   return {&input, levels};
 }
 

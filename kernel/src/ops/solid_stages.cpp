@@ -128,9 +128,7 @@ std::optional<TopologyReport> SolidStages::derived_report() const {
   const bool is_after = result_ == &after_.result;
   const Mesh& in = is_after ? offset_.result : *input_;
   const SubdivisionStage& stage = is_after ? after_ : before_;
-  // Holes and BoundaryMode::none drop faces: only the result has what is left.
-  if (in.has_holes() || (stage.boundary == BoundaryMode::none && in.num_boundary_loops() > 0))
-    return std::nullopt;
+  if (!subdivision_outputs_every_face(in, stage.boundary)) return std::nullopt;
   return subdivided_topology_report(in, stage.levels);
 }
 

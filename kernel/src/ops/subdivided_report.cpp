@@ -4,6 +4,10 @@
 
 namespace nome {
 
+bool subdivision_outputs_every_face(const Mesh& mesh, BoundaryMode boundary) {
+  return !mesh.has_holes() && !(boundary == BoundaryMode::none && mesh.num_boundary_loops() > 0);
+}
+
 TopologyReport subdivided_topology_report(const Mesh& mesh, int levels) {
   TopologyReport report = topology_report(mesh);
   std::vector<Index> corners(report.components.size(), 0);
