@@ -36,12 +36,14 @@ std::vector<Vec2> project(const Mesh& mesh, std::span<const Index> vertices, con
 // Every corner turns the same way around the normal: the sign of the turn in the plane of the normal
 // (what the projection would give), found without projecting (most faces are convex: no allocation).
 bool is_convex(const Mesh& mesh, std::span<const Index> vertices, const Vec3& normal) {
-  const size_t n = vertices.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Vec3& a = mesh.position(vertices[(i + n - 1) % n]);
-    const Vec3& b = mesh.position(vertices[i]);
-    const Vec3& c = mesh.position(vertices[(i + 1) % n]);
-    if (glm::dot(glm::cross(b - a, c - b), normal) < 0.0) return false;
+  // The turn at each corner b, between its neighbours a and c, walking the face once.
+  const Vec3* a = &mesh.position(vertices[vertices.size() - 2]);
+  const Vec3* b = &mesh.position(vertices.back());
+  for (Index v : vertices) {
+    const Vec3* c = &mesh.position(v);
+    if (glm::dot(glm::cross(*b - *a, *c - *b), normal) < 0.0) return false;
+    a = b;
+    b = c;
   }
   return true;
 }
@@ -75,39 +77,24 @@ void clip_ears(const std::vector<Vec2>& points, std::vector<std::array<Index, 3>
   for (size_t i = 1; i + 1 < left.size(); ++i) out.push_back({left[0], left[i], left[i + 1]});
 }
 
-// A quad's two triangles from its first corner, when it is convex in the plane of its normal (or
-// degenerate); the same test as for any face, without the general case's modular indexing.
-bool fan_quad(const Mesh& mesh, Index f, Index first, DisplayTriangles& out) {
-  const std::span<const Index> vertices = mesh.face_vertices(f);
-  const Vec3 normal = polygon_area_normal(vertices, mesh.positions());
-  const Vec3* p[4];
-  for (int i = 0; i < 4; ++i) p[i] = &mesh.position(vertices[i]);
-  if (glm::length(normal) > 0.0)
-    for (int i = 0; i < 4; ++i)
-      if (glm::dot(glm::cross(*p[i] - *p[(i + 3) & 3], *p[(i + 1) & 3] - *p[i]), normal) < 0.0) return false;
-  const Index t = first - 2 * f;
-  out.corners[t] = {first, first + 1, first + 2};
-  out.corners[t + 1] = {first, first + 2, first + 3};
-  out.faces[t] = out.faces[t + 1] = f;
-  return true;
-}
-
 // Face f's triangles into out from out.corners[first - 2f] on (a face of n corners has n - 2), with
-// `local` as scratch.
+// `local` as scratch for a concave face.
 void triangulate_face(const Mesh& mesh, Index f, DisplayTriangles& out,
                       std::vector<std::array<Index, 3>>& local) {
   const Index first = mesh.face_first_corner(f);
   const Index degree = mesh.face_degree(f);
-  if (degree == 4 && fan_quad(mesh, f, first, out)) return;
-  local.clear();
+  Index t = first - 2 * f;
   const Vec3 normal = face_area_normal(mesh, f);
   const double length = glm::length(normal);
   if (degree == 3 || !(length > 0.0) || is_convex(mesh, mesh.face_vertices(f), normal)) {
-    for (Index i = 1; i + 1 < degree; ++i) local.push_back({0, i, i + 1});
-  } else {
-    clip_ears(project(mesh, mesh.face_vertices(f), normal / length), local);
+    for (Index i = 1; i + 1 < degree; ++i, ++t) {
+      out.corners[t] = {first, first + i, first + i + 1};
+      out.faces[t] = f;
+    }
+    return;
   }
-  Index t = first - 2 * f;
+  local.clear();
+  clip_ears(project(mesh, mesh.face_vertices(f), normal / length), local);
   for (const auto& corners : local) {
     out.corners[t] = {first + corners[0], first + corners[1], first + corners[2]};
     out.faces[t++] = f;
