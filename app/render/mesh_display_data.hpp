@@ -47,7 +47,7 @@ inline constexpr std::uint32_t corner_sign_bit = 0x80000000u;
 // first face of its fan; zero at a pinch, where the shader takes the face's normal), per face its unit
 // normal; positions in single precision, normals packed in 32 bits (PackedNormal: a third of the bytes to
 // write and upload); and the same for the topology's extra GL vertices (gathered here, off the thread that
-// uploads them). Buffer blocks: arrays of a million faces get huge pages, not fresh 4 KB pages one by one.
+// uploads them). Buffer blocks: a new topology's arrays take freed blocks the program kept, not fresh pages.
 struct DisplayPositions {
   Buffer<glm::vec3> vertices;
   Buffer<PackedNormal> vertex_normals;

@@ -7,9 +7,8 @@
 
 namespace nome {
 
-// Blocks for big arrays; of 2 MB or more they are aligned to 2 MB and marked for transparent huge pages,
-// which cuts the page faults of fresh memory (a quarter to a half of a refinement's time on these
-// machines) about 500-fold.
+// Blocks for big arrays; of 2 MB or more they come from mmap, aligned to 2 MB, for the cache of freed
+// blocks below (not on huge pages: buffer.cpp says why).
 void* allocate_buffer(std::size_t bytes);
 void free_buffer(void* block, std::size_t bytes) noexcept;
 // Keeps freed blocks of 2 MB or more, up to `limit` bytes in all, for later allocations of any size: a
