@@ -12,28 +12,30 @@
 namespace nome {
 namespace {
 
-constexpr std::size_t huge_page = std::size_t(2) << 20;
+// Big blocks are whole units of 2 MB, aligned to one: kept ranges split and join in pieces any block can
+// use, and where the system puts all memory on huge pages (THP "always") a block holds whole ones.
+constexpr std::size_t block_unit = std::size_t(2) << 20;
 
 std::size_t rounded_size(std::size_t bytes) {
-  return (bytes + huge_page - 1) / huge_page * huge_page;
+  return (bytes + block_unit - 1) / block_unit * block_unit;
 }
 
-// Big blocks come straight from mmap, 2 MB aligned, so that kept memory can be cut, joined and moved to
+// Big blocks come straight from mmap, so that kept memory can be cut, joined and moved to
 // where a new block needs it (munmap and mremap work on pages, not on what malloc handed out).
 // They are not marked for transparent huge pages: on these VMs a command's fresh memory is memory the
 // guest has handed back to the host (free page reporting, which gives back free blocks of 2 MB and more),
 // and huge pages are cut from exactly those blocks. Measured in new processes after a pause: 800 MB
 // touched took 2.1-2.6 s on huge pages and 0.45-0.5 s on 4 KB pages, 3 GB 9.5-10.2 s against 6.2-6.6 s;
-// the offset of the level-5 torus as a Mesh 2.6 s against 0.76 s, the viewer's first offset solid
-// 3.7-4.1 s against 2.2 s. Huge pages win only for memory used again (the level-6 torus refined into
+// the offset of the level-5 torus as a Mesh 2.4-2.6 s against 0.75-1.5 s, the viewer's first offset
+// solid 3.7-4.1 s against 2.2 s. Huge pages win only for memory used again (the level-6 torus refined into
 // kept blocks: 55-72 ms against 83 ms; no difference for a slider tick at a million faces).
 char* map_block(std::size_t rounded) {
-  const std::size_t mapped = rounded + huge_page;
+  const std::size_t mapped = rounded + block_unit;
   void* raw = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (raw == MAP_FAILED) throw std::bad_alloc();
   char* start = static_cast<char*>(raw);
-  char* block = reinterpret_cast<char*>((reinterpret_cast<std::uintptr_t>(start) + huge_page - 1) &
-                                        ~std::uintptr_t(huge_page - 1));
+  char* block = reinterpret_cast<char*>((reinterpret_cast<std::uintptr_t>(start) + block_unit - 1) &
+                                        ~std::uintptr_t(block_unit - 1));
   if (block > start) munmap(start, std::size_t(block - start));
   const std::size_t tail = mapped - std::size_t(block - start) - rounded;
   if (tail > 0) munmap(block + rounded, tail);
@@ -169,7 +171,7 @@ void keep_freed_buffers(std::size_t limit) {
 }
 
 void* allocate_buffer(std::size_t bytes) {
-  if (bytes < huge_page) return ::operator new(bytes);
+  if (bytes < block_unit) return ::operator new(bytes);
   const std::size_t rounded = rounded_size(bytes);
   if (char* kept = block_cache().take(rounded)) return kept;
   return map_block(rounded);
@@ -177,7 +179,7 @@ void* allocate_buffer(std::size_t bytes) {
 
 // Unsized deletes: clang-14 (the fuzz build) has no sized deallocation by default.
 void free_buffer(void* block, std::size_t bytes) noexcept {
-  if (bytes < huge_page) {
+  if (bytes < block_unit) {
     ::operator delete(block);
     return;
   }
