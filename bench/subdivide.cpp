@@ -1,11 +1,9 @@
 // Catmull-Clark, position-only re-evaluation and offset, timed on this machine (issue 3's cases), with
 // OpenMesh's CatmullClarkT on the same input in the same run when it is installed.
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
-#include <filesystem>
 #include <functional>
 #include <string>
 #include <utility>
@@ -16,6 +14,7 @@
 #include "nome/ops/pipeline.hpp"
 #include "nome/ops/subdivide.hpp"
 #include "support/memory_counter.hpp"
+#include "support/new_process.hpp"
 #include "support/shapes.hpp"
 
 #ifdef NOME_HAVE_OPENMESH
@@ -344,20 +343,12 @@ int print_first_offset(bool as_export) {
   return 0;
 }
 
-// The same in a new process (this executable again), started after a pause of 10 s: these VMs hand
-// freed memory back to the host after some seconds (virtio-balloon free page reporting; 3 s were not
-// always enough after the last child), after which touching it costs a host fault per page, as memory
-// never touched does; a command started by a user finds its memory so, not as the work before it left it.
+// The same in a new process (output_of_new_process).
 FirstOffset first_offset_in_new_process(bool as_export) {
-  std::fflush(nullptr);
-  sleep(10);
   FirstOffset times;
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  const std::string command = "'" + self + "' --first-offset" + (as_export ? " export" : "");
-  FILE* child = popen(command.c_str(), "r");
-  if (!child) return times;
-  if (std::fscanf(child, "%lf %lf", &times.first_ms, &times.warm_ms) != 2) times = {};
-  pclose(child);
+  const std::string output =
+      bench::output_of_new_process(std::string("--first-offset") + (as_export ? " export" : ""));
+  if (std::sscanf(output.c_str(), "%lf %lf", &times.first_ms, &times.warm_ms) != 2) times = {};
   return times;
 }
 

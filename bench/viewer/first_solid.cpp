@@ -1,12 +1,11 @@
 // The viewer's first solid (issue 18, goal 2, as the viewer meets it): the offset of the level-5 torus
 // (4,194,304 faces) with everything a frame needs of it (StagePipeline: the kernel's stages, the display
 // arrays, borders, report), the first time in a new process and warm.
-#include <unistd.h>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 
 #include "slider_frames.hpp"
+#include "support/new_process.hpp"
 #include "viewer/session.hpp"
 #include "viewer/stage_pipeline.hpp"
 
@@ -58,17 +57,13 @@ int print_first_solid() {
   return 0;
 }
 
-// In a new process (this executable again), after a pause of 10 s, as nome_bench_subdivide's first offset:
-// these VMs take freed memory back after some seconds, and a user's new viewer finds its memory so.
+// In a new process (output_of_new_process), as nome_bench_subdivide's first offset: a user's new viewer
+// finds its memory so.
 void first_solid_figures() {
-  std::fflush(nullptr);
-  sleep(10);
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  FILE* child = popen(("'" + self + "' --first-solid-child").c_str(), "r");
-  if (!child) return;
   FirstSolid times;
-  if (std::fscanf(child, "%lf %lf %u", &times.first_ms, &times.warm_ms, &times.faces) != 3) times = {};
-  pclose(child);
+  const std::string output = output_of_new_process("--first-solid-child");
+  if (std::sscanf(output.c_str(), "%lf %lf %u", &times.first_ms, &times.warm_ms, &times.faces) != 3)
+    times = {};
   std::printf(
       "  the viewer's first solid (goal 2 as the viewer meets it): the offset of the level-5 torus, %u "
       "faces, "
