@@ -1,105 +1,167 @@
 #!/usr/bin/env python3
-"""Mutation check: applies each mutation below to the source, one at a time, rebuilds the test program
-that should notice it, runs the tests named, and reports whether they failed (the mutant is caught).
+"""Mutation check: applies each mutation of tests/mutants/*.toml to the source, one at a time, rebuilds the
+test program that should notice it, runs the tests named, and reports whether they failed (the mutant is
+caught). The source is restored after each mutation, also when the run is interrupted.
 
-A mutation whose text is not found, or that does not build, is an error of this script, not a catch.
-The source is restored after each mutation, also when the run is interrupted.
+Every mutation is checked before anything is built: its original text must occur exactly once in its file
+and its tests must name test files that exist. A stale mutation is named and the run stops, so a refactor
+that moves a line has to move its mutation too (`--check` does only this; `make test` runs it).
 
-Usage: tests/mutants/mutants.py [BUILD_DIR] [NAME...]   (default build/mutants; all mutations)
+Usage: tests/mutants/mutants.py [--check] [--whole] [--build DIR] [--list FILE.toml]... [NAME...]
+  --check       only check that every mutation applies (no build)
+  --whole       run the whole kernel test program (then the app test program if the kernel's passed)
+                instead of the tests each mutation names: how a bug nobody wrote a mutation for is judged
+  --build DIR   the build folder (default build/mutants: a Release build with the tests)
+  --list FILE   mutations from FILE instead of tests/mutants/*.toml (may be given more than once)
+  NAME          only the mutations with these names
 """
+import argparse
 import pathlib
 import subprocess
 import sys
 import time
+import tomllib
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
+LISTS = ROOT / "tests" / "mutants"
+PROGRAMS = ("nome_kernel_tests", "nome_app_tests")
+TIMEOUT = 900
 
-# name, file, original text, mutated text, test program, Catch test spec (files by their [#name] tags)
-MUTATIONS = [
-    ("OBJ reader accepts a face of fewer than 3 vertices", "kernel/src/io/obj.cpp",
-     "if (fl.token_columns.size() < 3)", "if (fl.token_columns.size() < 1)",
-     "nome_app_tests", "[#bad_input_catalogue_test]"),
-    ("binary STL reader accepts a non-finite coordinate", "kernel/src/io/stl_read.cpp",
-     "        if (!std::isfinite(p[i]))", "        if (false && !std::isfinite(p[i]))",
-     "nome_app_tests", "[#bad_input_catalogue_test]"),
-    ("topology errors point at the next face line of an OBJ", "kernel/src/io/face_location.cpp",
-     "if (count-- == 0)", "if (count-- == 1)",
-     "nome_app_tests", "[#bad_input_catalogue_test]"),
-    ("offset sheets swapped at a Möbius seam", "kernel/src/ops/offset.cpp",
-     "m_.corner_sign(c) > 0 ? 0 : 1", "m_.corner_sign(c) > 0 ? 0 : 0",
-     "nome_kernel_tests", "[#offset_geometry_test]"),
-    ("vertex normals ignore the Möbius sign", "kernel/src/mesh/normals.cpp",
-     "      if (signs[c] > 0)\n        sum += n;", "      if (signs[c] != 0)\n        sum += n;",
-     "nome_kernel_tests", "[#normals_test],[#offset_geometry_test]"),
-    ("Catmull-Clark edge point weight changed", "kernel/src/ops/refine_positions.cpp",
-     "out[nf + e] = (sum + out[fa] + out[fb]) * 0.25;", "out[nf + e] = (sum + out[fa] + out[fb]) * 0.26;",
-     "nome_kernel_tests", "[#subdivide_positions_test],[#subdivide_opensubdiv_test]"),
-    ("Catmull-Clark face point of a child level off", "kernel/src/ops/refine_child_positions.cpp",
-     "        out[c] = sum * 0.25;", "        out[c] = sum * 0.24;",
-     "nome_kernel_tests", "[#subdivide_positions_test],[#subdivide_opensubdiv_test]"),
-    ("zipper skips a rung", "kernel/src/ops/zipper.cpp",
-     "    steps.push_back(s);\n", "    if (i != m / 2 || j == 0) steps.push_back(s);\n",
-     "nome_kernel_tests", "[#zipper_test]"),
-    ("build_mesh lets an edge take a third face", "kernel/src/mesh/build_mesh.cpp",
-     "if (edge.faces[1] != no_index) {", "if (edge.faces[1] == no_index - 1) {",
-     "nome_kernel_tests", "[#build_mesh_test]"),
-    ("orientability read from the given orientation", "kernel/src/mesh/topology_report.cpp",
-     "parts[k].orientable = orientation.component_orientable[k];", "parts[k].orientable = true;",
-     "nome_kernel_tests", "[#topology_report_test]"),
-    ("genus of a non-orientable part halved", "kernel/src/mesh/topology_report.cpp",
-     "part.genus = part.orientable ? handles / 2 : handles;", "part.genus = handles / 2;",
-     "nome_kernel_tests", "[#topology_report_test]"),
-    ("expression '*' divides", "kernel/src/scene/expression_parser.cpp",
-     'const ExprOp op = t.text == "*" ? ExprOp::multiply', 'const ExprOp op = t.text == "*" ? ExprOp::divide',
-     "nome_kernel_tests", "[#expression_test]"),
-    ("merge misses points exactly at the tolerance", "kernel/src/ops/merge.cpp",
-     "d2 <= tolerance2_", "d2 < tolerance2_ * 0.5",
-     "nome_kernel_tests", "[#merge_test]"),
-    ("atomic save leaves the temporary file unrenamed", "kernel/src/atomic_file.cpp",
-     "std::filesystem::rename(tmp, path, ec);", "std::filesystem::copy_file(tmp, path, ec);",
-     "nome_kernel_tests", "[#atomic_file_kill_test],[#save_nome_test]"),
-]
+
+def load(files):
+    mutations = []
+    for file in files:
+        with open(file, "rb") as f:
+            for m in tomllib.load(f).get("mutation", []):
+                m["list"] = pathlib.Path(file).name
+                mutations.append(m)
+    return mutations
+
+
+def test_files():
+    return {p.stem for p in (ROOT / "tests").rglob("*.cpp")}
+
+
+def problems_of(m, known_tests):
+    """What keeps a mutation from applying, or an empty list."""
+    missing = [k for k in ("name", "file", "original", "mutated", "program", "tests") if k not in m]
+    if missing:
+        return [f"lacks {', '.join(missing)}"]
+    found = []
+    path = ROOT / m["file"]
+    if not path.is_file():
+        return [f"{m['file']} does not exist"]
+    count = path.read_text().count(m["original"])
+    if count != 1:
+        found.append(f"its original text occurs {count} times in {m['file']}")
+    if m["original"] == m["mutated"]:
+        found.append("its mutated text is its original text")
+    if m["program"] not in PROGRAMS:
+        found.append(f"program {m['program']} is none of {', '.join(PROGRAMS)}")
+    for tag in m["tests"].split(","):
+        name = tag.strip().removeprefix("[#").removesuffix("]")
+        if name not in known_tests:
+            found.append(f"no test file {name}.cpp for {tag.strip()}")
+    return found
+
+
+def check(mutations):
+    known = test_files()
+    names = [m.get("name") for m in mutations]
+    stale = 0
+    for m in mutations:
+        found = problems_of(m, known)
+        if names.count(m.get("name")) > 1:
+            found.append("its name is used twice")
+        for problem in found:
+            print(f"mutants: STALE {m['list']}: '{m.get('name')}': {problem}", file=sys.stderr)
+        stale += bool(found)
+    return stale
 
 
 def run(cmd, **kw):
     return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, **kw)
 
 
+def build(build_dir, target):
+    return run(["cmake", "--build", str(build_dir), "-j2", "--target", target])
+
+
+def run_tests(program, spec):
+    """(failed, what): failed when the program reports a failure, crashes or times out."""
+    try:
+        # `-#` tags each case with its file name; `~[.]` keeps the hidden long runs out of every alternative.
+        visible = ["~[.]"] if spec is None else ["-#", ",".join(t.strip() + "~[.]" for t in spec.split(","))]
+        tested = run([str(program)] + visible, timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        return True, "timed out"
+    return tested.returncode != 0, f"exit {tested.returncode}"
+
+
 def main():
-    args = sys.argv[1:]
-    build = pathlib.Path(args.pop(0)) if args and not args[0][0].isupper() else ROOT / "build/mutants"
-    chosen = [m for m in MUTATIONS if not args or m[0] in args]
-    configure = run(["cmake", "-S", ".", "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"])
+    parser = argparse.ArgumentParser(add_help=True)
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--whole", action="store_true")
+    parser.add_argument("--build", default=str(ROOT / "build" / "mutants"))
+    parser.add_argument("--list", action="append")
+    parser.add_argument("names", nargs="*")
+    args = parser.parse_args()
+
+    files = args.list or sorted(LISTS.glob("*.toml"))
+    mutations = load(files)
+    chosen = [m for m in mutations if not args.names or m.get("name") in args.names]
+    unknown = set(args.names) - {m.get("name") for m in mutations}
+    if unknown:
+        sys.exit(f"mutants: no mutation named {', '.join(sorted(unknown))}")
+    stale = check(chosen)
+    if stale:
+        sys.exit(f"mutants: {stale} of {len(chosen)} mutations no longer apply (named above); nothing was run")
+    if args.check:
+        print(f"mutants: all {len(chosen)} mutations apply ({len(files)} lists)")
+        return
+
+    build_dir = pathlib.Path(args.build)
+    configure = run(["cmake", "-S", ".", "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release"])
     if configure.returncode != 0:
         sys.exit("mutants: cmake failed:\n" + configure.stderr)
-    for target in sorted({m[4] for m in chosen}):
-        built = run(["cmake", "--build", str(build), "-j2", "--target", target])
+    targets = PROGRAMS if args.whole else sorted({m["program"] for m in chosen})
+    for target in targets:
+        built = build(build_dir, target)
         if built.returncode != 0:
             sys.exit(f"mutants: the unmutated {target} does not build:\n{built.stdout[-3000:]}")
+
     results = []
-    for name, file, original, mutated, target, spec in chosen:
-        path = ROOT / file
+    for m in chosen:
+        path = ROOT / m["file"]
         source = path.read_text()
-        if source.count(original) != 1:
-            sys.exit(f"mutants: '{name}': the text to mutate occurs {source.count(original)} times in {file}")
         start = time.time()
         try:
-            path.write_text(source.replace(original, mutated))
-            built = run(["cmake", "--build", str(build), "-j2", "--target", target])
-            if built.returncode != 0:
-                sys.exit(f"mutants: '{name}' does not build:\n{built.stdout[-3000:]}")
-            program = build / "tests" / target
-            tested = run([str(program), "-#", spec], timeout=900)
-            caught = tested.returncode != 0
+            path.write_text(source.replace(m["original"], m["mutated"]))
+            outcome, what = None, ""
+            for target in targets if args.whole else [m["program"]]:
+                built = build(build_dir, target)
+                if built.returncode != 0:
+                    outcome, what = "ERROR", "does not build: " + built.stdout[-1500:]
+                    break
+                caught, what = run_tests(build_dir / "tests" / target, None if args.whole else m["tests"])
+                if caught:
+                    outcome, what = "caught", f"{target} {what}"
+                    break
+            outcome = outcome or "MISSED"
         finally:
             path.write_text(source)
-        results.append((name, caught, time.time() - start))
-        print(f"{'caught' if caught else 'MISSED'}  {time.time() - start:6.1f} s  {name}", flush=True)
-    for target in sorted({m[4] for m in chosen}):  # leave the build matching the source again
-        run(["cmake", "--build", str(build), "-j2", "--target", target])
-    missed = [r for r in results if not r[1]]
-    print(f"mutants: {len(results) - len(missed)} of {len(results)} caught")
-    sys.exit(1 if missed else 0)
+        seconds = time.time() - start
+        results.append((m, outcome, seconds))
+        by = "whole programs" if args.whole else m["tests"]
+        print(f"{outcome:6}  {seconds:6.1f} s  {m['name']}  ({by}; {what})", flush=True)
+
+    for target in targets:  # leave the build matching the source again
+        build(build_dir, target)
+    bad = [r for r in results if r[1] != "caught"]
+    print(f"mutants: {len(results) - len(bad)} of {len(results)} caught")
+    for m, outcome, _ in bad:
+        print(f"mutants: {outcome}: {m['name']} ({m['list']})")
+    sys.exit(1 if bad else 0)
 
 
 if __name__ == "__main__":
