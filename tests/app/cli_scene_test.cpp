@@ -41,12 +41,12 @@ TEST_CASE("nome info --set overrides a slider", "[app]") {
 }
 
 TEST_CASE("nome reports scene errors as FILE:LINE:COL", "[app]") {
-  NOME_NEEDS_SHARED_EXAMPLES("original");
   const std::string dir = nome::test::scratch_dir("scene_errors");
   std::ofstream(dir + "/bad.nome") << "funnel f (8 1 0) endfunnel\ninstance i g endinstance\n";
   const auto r = run_nome("info " + dir + "/bad.nome");
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("bad.nome:1:10: funnel 'f' takes 4 arguments (n ro ratio h), found 3"));
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   const auto hild = run_nome("info " + originals + "hild.nom");
   CHECK(hild.status == 0);
   CHECK_THAT(hild.err,
@@ -80,11 +80,11 @@ TEST_CASE("nome export -o OUT.nome saves the scene with the sliders as set", "[a
 }
 
 TEST_CASE("nome info reads .sif (optionally as quads), .slf and .anom on top of a scene", "[app]") {
-  NOME_NEEDS_SHARED_EXAMPLES("original");
   CHECK_THAT(run_nome("info " + assets + "mobius_band.sif --json").out,
              Catch::Contains("\"faces\": 48, \"chi\": 0, \"orientable\": false, \"borders\": 1"));
   CHECK_THAT(run_nome("info " + assets + "mobius_band.sif --quads --json").out,
              Catch::Contains("\"faces\": 24"));
+  NOME_NEEDS_SHARED_EXAMPLES("original");
   const auto anom = run_nome("info " + originals + "kleinbottle.nom " + originals + "kleinbottle_s1.anom");
   CHECK(anom.status == 0);
   CHECK_THAT(anom.out, Catch::Contains("instance consolidatemesh: 16 vertices, 8 faces"));

@@ -8,7 +8,6 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
-#include "nome/query/pick.hpp"
 #include "support/shared_examples.hpp"
 
 using namespace nome;
@@ -42,7 +41,7 @@ TEST_CASE("border modes select a whole loop from one click and a segment from th
   // Clickable border vertices, in loop order.
   std::vector<std::pair<Index, glm::dvec2>> clickable;
   for (Index v : mesh.loop_vertices(0))
-    if (const auto p = nome::test::click_position(mesh, projection, v)) clickable.emplace_back(v, *p);
+    if (const auto p = nome::test::vertex_click(mesh, projection, v)) clickable.emplace_back(v, *p);
   REQUIRE(clickable.size() >= 8);
   const auto [a, pa] = clickable[0];
   const auto [b, pb] = clickable[clickable.size() / 2];
@@ -84,17 +83,13 @@ TEST_CASE("a session deletes a face, undoes and redoes it, then fills the hole a
   const std::string dir = nome::test::private_scratch_dir("viewer_edit");
   const Mesh cube = build_mesh(read_polygons(assets + "cube.obj"));
   const auto projection = nome::test::viewer_projection(cube, 30.0, 25.0);
-  const TriangleBvh bvh(cube);
   // A face in full view, clicked at its centre.
   Index face = no_index;
   glm::dvec2 face_click(0.0);
   for (Index f = 0; f < cube.num_faces() && face == no_index; ++f) {
-    Vec3 centre(0.0);
-    for (Index v : cube.face_vertices(f)) centre += cube.position(v) / double(cube.face_degree(f));
-    const auto pixel = project_to_pixel(projection, centre);
-    if (pixel && pick_face(bvh, projection, glm::dvec2(*pixel)) == f) {
+    if (const auto pixel = nome::test::face_click(cube, projection, f)) {
       face = f;
-      face_click = glm::round(glm::dvec2(*pixel));
+      face_click = *pixel;
     }
   }
   REQUIRE(face != no_index);
@@ -111,7 +106,7 @@ TEST_CASE("a session deletes a face, undoes and redoes it, then fills the hole a
   int corners = 0;
   for (Index v : cube.face_vertices(face)) {
     if (corners == 3) break;
-    if (const auto p = nome::test::click_position(open_cube, projection, v)) {
+    if (const auto p = nome::test::vertex_click(open_cube, projection, v)) {
       corner_clicks += click_line(*p);
       ++corners;
     }

@@ -8,7 +8,6 @@
 #include <glm/geometric.hpp>
 
 #include "nome/io/read_scene.hpp"
-#include "nome/query/pick.hpp"
 #include "render/camera.hpp"
 #include "viewer/window.hpp"
 
@@ -159,26 +158,6 @@ ScreenProjection viewer_projection(std::span<const Vec3> points, double azimuth,
   camera.set_view(azimuth, elevation);
   camera.fit(points, viewport.size.x / viewport.size.y);
   return camera.screen_projection(viewport.size, viewport.origin);
-}
-
-std::optional<glm::dvec2> click_position(const Mesh& mesh, const ScreenProjection& projection, Index v) {
-  const TriangleBvh bvh(mesh);
-  const auto pixel = project_to_pixel(projection, mesh.position(v));
-  if (!pixel) return std::nullopt;
-  // A little towards the middle of a face at v, so that the ray lands on the surface.
-  for (Index c : mesh.vertex_corners(v)) {
-    Vec3 centre(0.0);
-    const Index f = mesh.corner_face(c);
-    for (Index u : mesh.face_vertices(f)) centre += mesh.position(u);
-    centre /= double(mesh.face_degree(f));
-    const auto inside = project_to_pixel(projection, centre);
-    if (!inside) continue;
-    const glm::dvec2 towards = glm::dvec2(*inside) - glm::dvec2(*pixel);
-    if (glm::length(towards) < 1e-9) continue;
-    const glm::dvec2 click = glm::round(glm::dvec2(*pixel) + 3.0 * glm::normalize(towards));
-    if (pick_vertex(mesh, bvh, projection, click, 8.0) == v) return click;
-  }
-  return std::nullopt;
 }
 
 std::string obj_vertex(Index v) {

@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/cli_support.hpp"
+#include "app/screen_oracle.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/query/screen_projection.hpp"
 #include "render/framebuffer.hpp"
@@ -115,10 +116,6 @@ CommandResult run_window(const std::string& arguments,
 ScreenProjection viewer_projection(const Mesh& mesh, double azimuth, double elevation);
 // The same framed to any points (a scene with rim lines frames them with its mesh).
 ScreenProjection viewer_projection(std::span<const Vec3> points, double azimuth, double elevation);
-
-// A window pixel where clicking in vertex mode picks vertex v (checked with the kernel's own pick),
-// if v is visible there.
-std::optional<glm::dvec2> click_position(const Mesh& mesh, const ScreenProjection& projection, Index v);
 
 // One `state: ...` line of a scripted session's log (the script command `state`): what the viewer shows.
 struct ViewerState {

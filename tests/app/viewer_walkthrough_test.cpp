@@ -64,7 +64,7 @@ TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated pol
   std::vector<std::pair<Index, glm::dvec2>> rim;
   for (Index v = 0; v < mesh.num_vertices(); ++v)
     if (mesh.vertex_names()[v].find("_hc") != std::string::npos)
-      if (const auto p = nome::test::click_position(mesh, projection, v)) rim.emplace_back(v, *p);
+      if (const auto p = nome::test::vertex_click(mesh, projection, v)) rim.emplace_back(v, *p);
   REQUIRE(rim.size() >= 3);
   double best = std::numeric_limits<double>::infinity();
   std::array<std::size_t, 3> triple{};
@@ -126,7 +126,7 @@ TEST_CASE("Klein bottle walkthrough: two neighbouring tunnel rims are zipped, un
     Vec3 centre(0.0);
     for (Index v : mesh.loop_vertices(l)) centre += mesh.position(v) / double(mesh.loop_vertices(l).size());
     for (Index v : mesh.loop_vertices(l))
-      if (const auto p = nome::test::click_position(mesh, projection, v)) {
+      if (const auto p = nome::test::vertex_click(mesh, projection, v)) {
         rims.push_back({l, centre, *p, instance_of(mesh.vertex_names()[v])});
         break;
       }
@@ -265,7 +265,7 @@ TEST_CASE(
       const Index v = Index(std::find(names.begin(), names.end(), name) - names.begin());
       if (v == names.size() || !now.borders->is_on_border(v)) return std::nullopt;
       for (Index u : now.borders->loop_vertices(now.borders->loop_of(v)))
-        if (const auto p = nome::test::click_position(*now.mesh, projection, u)) return std::pair{u, *p};
+        if (const auto p = nome::test::vertex_click(*now.mesh, projection, u)) return std::pair{u, *p};
       return std::nullopt;
     };
     bool is_zipped = false;
@@ -338,7 +338,7 @@ TEST_CASE(
         const std::string full = session.scene()->resolve_vertex_name(corner);
         std::optional<glm::dvec2> at;
         for (Index v = 0; v < names.size() && !at; ++v)
-          if (names[v] == full && (at = nome::test::click_position(*now->mesh, projection, v)))
+          if (names[v] == full && (at = nome::test::vertex_click(*now->mesh, projection, v)))
             corners.push_back(v);
         if (!at) break;
         clicks += click_line(*at);

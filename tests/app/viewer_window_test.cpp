@@ -39,7 +39,7 @@ TEST_CASE("a scripted session picks a vertex and a face, exports and takes a scr
   std::optional<glm::dvec2> vertex_click;
   Index picked = no_index;
   for (Index v = 0; v < mesh.num_vertices() && !vertex_click; ++v)
-    if ((vertex_click = nome::test::click_position(mesh, projection, v))) picked = v;
+    if ((vertex_click = nome::test::vertex_click(mesh, projection, v))) picked = v;
   REQUIRE(vertex_click);
   const std::string script = write_script(dir,
                                           "view 30 25\n"

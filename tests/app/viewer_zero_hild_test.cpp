@@ -29,7 +29,7 @@ std::string click_vertex(const Mesh& mesh, const std::string& name) {
   for (const double elevation : {25.0, -25.0, 60.0, -60.0, 0.0, 89.0, -89.0})
     for (double azimuth = 0; azimuth < 360; azimuth += 30) {
       const auto projection = nome::test::viewer_projection(mesh, azimuth, elevation);
-      if (const auto at = nome::test::click_position(mesh, projection, v))
+      if (const auto at = nome::test::vertex_click(mesh, projection, v))
         return "view " + std::to_string(int(azimuth)) + " " + std::to_string(int(elevation)) + "\n" +
                click_line(*at);
     }
@@ -259,21 +259,15 @@ namespace {
 
 // Script lines that click, from the first view that shows one, a face whose name starts with `prefix`.
 std::string click_face_of(const Mesh& mesh, const std::string& prefix) {
-  const TriangleBvh bvh(mesh);
   for (const double elevation : {25.0, -25.0, 60.0, 0.0})
     for (double azimuth = 0; azimuth < 360; azimuth += 30) {
       const auto projection = nome::test::viewer_projection(mesh, azimuth, elevation);
       for (Index f = 0; f < mesh.num_faces(); ++f) {
         if (!mesh.face_names()[f].starts_with(prefix)) continue;
-        Vec3 centre(0.0);
-        for (Index v : mesh.face_vertices(f)) centre += mesh.position(v) / double(mesh.face_degree(f));
-        const auto pixel = project_to_pixel(projection, centre);
-        if (!pixel) continue;
-        const glm::dvec2 at = glm::floor(glm::dvec2(*pixel));
-        const auto hit = bvh.cast_nearest(ray_through_pixel(projection, at + 0.5));
-        if (hit && hit->face == f && at.x >= 0)
+        const auto at = nome::test::face_click(mesh, projection, f);
+        if (at && at->x >= 0)
           return "view " + std::to_string(int(azimuth)) + " " + std::to_string(int(elevation)) + "\n" +
-                 click_line(at);
+                 click_line(*at);
       }
     }
   return {};

@@ -10,7 +10,6 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
-#include "nome/query/rim_pick.hpp"
 #include "nome/scene/scene_rim_lines.hpp"
 
 using namespace nome;
@@ -44,15 +43,12 @@ TEST_CASE("rim vertices are clicked on their cubes, become polygon corners, and 
   std::vector<Vec3> points(mesh.positions().begin(), mesh.positions().end());
   points.insert(points.end(), rims.positions.begin(), rims.positions.end());
   const auto projection = nome::test::viewer_projection(points, 30.0, 25.0);
-  // The rim vertices whose cubes a click reaches (not hidden by the funnel), by the kernel's own pick.
-  const TriangleBvh bvh(mesh);
-  const auto half = rim_cube_half_sizes(rims);
+  // The rim vertices whose cubes a click reaches: in front of the funnel, and clicked at their centres.
   std::vector<std::pair<Index, glm::dvec2>> visible;
   for (Index k = 0; k < rims.num_vertices(); ++k) {
-    const auto pixel = project_to_pixel(projection, rims.positions[k]);
-    if (!pixel) continue;
-    const glm::dvec2 click = glm::floor(glm::dvec2(*pixel));
-    if (pick_rim_vertex(rims, half, bvh, projection, click) == k) visible.emplace_back(k, click);
+    const auto pixel = nome::test::pixel_of(projection, rims.positions[k]);
+    if (pixel && nome::test::is_in_sight(mesh, projection, rims.positions[k], -0.05))
+      visible.emplace_back(k, glm::round(*pixel));
   }
   REQUIRE(visible.size() >= 2);
   // The funnel vertex on its high circle beside a clickable rim vertex (the zipper matches the two
@@ -67,7 +63,7 @@ TEST_CASE("rim vertices are clicked on their cubes, become polygon corners, and 
            glm::length(mesh.position(v) - rims.positions[visible[ring].first]) <
                glm::length(mesh.position(nearest) - rims.positions[visible[ring].first])))
         nearest = v;
-    high = nome::test::click_position(mesh, projection, nearest);
+    high = nome::test::vertex_click(mesh, projection, nearest);
   }
   REQUIRE(high);
   const glm::dvec2 ring_click = visible[ring - 1].second;

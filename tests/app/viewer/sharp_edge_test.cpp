@@ -7,7 +7,6 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/ops/pipeline.hpp"
-#include "nome/query/pick_edge.hpp"
 #include "viewer/window.hpp"
 
 using nome::test::click_line;
@@ -28,15 +27,10 @@ const char* const edge_mode_cube_text =
 // A window pixel where a click in edge mode picks an edge, and that edge's vertex names.
 std::pair<glm::dvec2, std::pair<std::string, std::string>> clickable_edge(const Mesh& mesh) {
   const ScreenProjection projection = nome::test::viewer_projection(mesh, 30.0, 25.0);
-  const TriangleBvh bvh(mesh);
   for (Index e = 0; e < mesh.num_edges(); ++e) {
     const auto [u, w] = mesh.edge(e).vertices;
-    const auto a = project_to_pixel(projection, mesh.position(u));
-    const auto b = project_to_pixel(projection, mesh.position(w));
-    if (!a || !b) continue;
-    const glm::dvec2 middle = glm::round(0.5 * (glm::dvec2(*a) + glm::dvec2(*b)));
-    if (pick_edge(mesh, bvh, projection, middle, 8.0) == e)
-      return {middle, {mesh.vertex_names()[u], mesh.vertex_names()[w]}};
+    if (const auto at = nome::test::edge_click(mesh, projection, e))
+      return {*at, {mesh.vertex_names()[u], mesh.vertex_names()[w]}};
   }
   FAIL("no edge of the cube can be clicked");
   return {};

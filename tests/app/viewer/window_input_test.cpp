@@ -58,7 +58,7 @@ TEST_CASE("the window takes clicks, drags, the wheel and keys as input frames", 
   const auto projection = nome::test::viewer_projection(cube, 30.0, 25.0);
   std::optional<glm::dvec2> pixel;
   Index v = 0;
-  for (; v < cube.num_vertices() && !pixel; ++v) pixel = nome::test::click_position(cube, projection, v);
+  for (; v < cube.num_vertices() && !pixel; ++v) pixel = nome::test::vertex_click(cube, projection, v);
   REQUIRE(pixel);
   click(viewer, *pixel);
   REQUIRE(window.selection().vertices().size() == 1);
