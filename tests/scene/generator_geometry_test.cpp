@@ -164,6 +164,10 @@ TEST_CASE("circle (n r) is a loop of n vertices on the circle of radius r, in or
   REQUIRE(p.rims[0].vertices.size() == 7);
   for (Index k = 0; k < 7; ++k)
     CHECK(p.soup.vertex_names[p.rims[0].vertices[k]] == "i_c" + std::to_string(k));
+  // In the report's dialect the count comes first even when the radius is a whole number too.
+  GeomExpected whole_radius;
+  geom_add_ring(whole_radius, "c", 8, 3, 0);
+  geom_check_vertices(geom_instance("circle g (8 3) endcircle"), whole_radius, "i_");
 }
 
 TEST_CASE("cylinder: circles of its radius at 0 and its height, caps facing out", "[scene]") {
@@ -449,7 +453,10 @@ TEST_CASE("hyperboloid of one sheet, paraboloid and two sheets by their formulas
       bowl.push_back({"v" + std::to_string(i) + "_" + std::to_string(j),
                       {1.5 * u * std::cos(v), 1.5 * u * std::sin(v), 0.5 * u * u}});
     }
-  geom_check_vertices(hyperboloid(p), bowl);
+  const Piece paraboloid = hyperboloid(p);
+  geom_check_vertices(paraboloid, bowl);
+  // A bowl's faces point away from its inside: down.
+  for (Index f = 0; f < paraboloid.soup.num_faces(); ++f) CHECK(geom_normal(paraboloid.soup, f).z < 0);
 
   p.sheet = HyperboloidSheet::two;
   GeomExpected two{{"top_apex", {0, 0, 0.5}}, {"bottom_apex", {0, 0, -0.5}}};
@@ -468,6 +475,7 @@ TEST_CASE("hyperboloid of one sheet, paraboloid and two sheets by their formulas
   const Index half = sheets.soup.num_faces() / 2;
   for (Index f = 0; f < half; ++f) {
     const Vec3 top = geom_normal(sheets.soup, f), bottom = geom_normal(sheets.soup, f + half);
+    CHECK(top.z < 0);  // away from the inside of the upper bowl
     CHECK(glm::length(Vec3(top.x, top.y, -top.z) - bottom) < 1e-9);
   }
 }
