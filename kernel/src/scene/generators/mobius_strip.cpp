@@ -44,12 +44,13 @@ Piece mobius_strip(const MobiusStripParams& p) {
 namespace {
 
 // The 2016 meaning needs a cut (its cuts count the quads across); JIPCAD's files write 0 cuts for the
-// uncut band. Until the file's dialect decides, 0 cuts reads the arguments in JIPCAD's meaning.
+// uncut band. A JIPCAD file reads every strip in JIPCAD's meaning; elsewhere 0 cuts does too.
 Piece evaluate_mobius_strip(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   const MobiusStripParams p{c.positive(a[0], "radius"), c.whole(a[1], 0, "twists"), c.whole(a[2], 0, "cuts"),
                             c.whole(a[3], 3, "segs")};
-  return p.cuts == 0 ? cut_mobius_strip(p) : mobius_strip(p);
+  const bool is_jipcad = c.ast().dialect.dialect == Dialect::jipcad;
+  return is_jipcad || p.cuts == 0 ? cut_mobius_strip(p) : mobius_strip(p);
 }
 
 }  // namespace
