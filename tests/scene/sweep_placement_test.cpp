@@ -306,6 +306,14 @@ TEST_CASE("out of a plane, Frenet normals follow each bend, rotation-minimising 
     o.frames = frames;
     const PolygonSoup soup = sweep(path, {&axes, 1}, o).piece.soup;
     const std::vector<Vec3>& expected = frames == FrameKind::frenet ? frenet : minimal;
+    // The same path in a sweep statement, `mintorsion` or not.
+    const Scene scene = Scene::from_text(
+        "point a (0 0 0) endpoint\npoint b (0 0 1) endpoint\npoint c (1 0 1) endpoint\npoint d (1 1 1) "
+        "endpoint\npoint e1 (1 0 0) endpoint\npoint e2 (0 1 0) endpoint\npolyline ax (e1 e2) endpolyline\n"
+        "polyline pth (a b c d) endpolyline\nsweep s crosssection ax endcrosssection path pth " +
+            std::string(frames == FrameKind::frenet ? "" : "mintorsion") +
+            " endpath endsweep\ninstance i s endinstance\n",
+        "t.nome");
     for (std::size_t i = 0; i < points.size(); ++i) {
       INFO("sample " << i);
       CHECK(glm::length(f[i].tangent - tangents[i]) < 1e-12);
@@ -316,9 +324,11 @@ TEST_CASE("out of a plane, Frenet normals follow each bend, rotation-minimising 
       // The section's axes: N and B, stretched by sqrt(2) across a quarter-turn bend.
       const double stretch = glm::length(bends[i]) > 0 ? std::sqrt(2.0) : 1;
       for (int j = 0; j < 2; ++j) {
-        const Vec3 q = j == 0 ? f[i].normal : f[i].binormal;
-        check_sweep_point(soup.positions[Index(2 * i + j)],
-                          points[i] + q + (stretch - 1) * glm::dot(q, bends[i]) * bends[i]);
+        const Vec3 q = j == 0 ? expected[i] : glm::cross(tangents[i], expected[i]);
+        const Vec3 placed = points[i] + q + (stretch - 1) * glm::dot(q, bends[i]) * bends[i];
+        check_sweep_point(soup.positions[Index(2 * i + j)], placed);
+        check_sweep_point(test::vertex_position(scene, "i_v" + std::to_string(i) + "_" + std::to_string(j)),
+                          placed);
       }
     }
   }
