@@ -64,6 +64,33 @@ CreaseLevel crease_subdivided(const PolygonSoup& soup, CreaseMethod method) {
   return level;
 }
 
+// The smooth Catmull-Clark points of a level, for the level after it: face centroids, edge points (ends
+// and face points a quarter each), vertex points (face average + neighbour average + (n - 2) v) / n.
+Vec3 crease_centroid(const Mesh& m, Index f) {
+  Vec3 sum(0.0);
+  for (Index v : m.face_vertices(f)) sum += m.position(v);
+  return sum / double(m.face_degree(f));
+}
+Vec3 crease_smooth_edge(const Mesh& m, Index e) {
+  const Edge& edge = m.edge(e);
+  return (m.position(edge.vertices[0]) + m.position(edge.vertices[1]) + crease_centroid(m, edge.faces[0]) +
+          crease_centroid(m, edge.faces[1])) /
+         4.0;
+}
+Vec3 crease_smooth_vertex(const Mesh& m, Index v) {
+  Vec3 faces(0.0), neighbours(0.0);
+  for (Index c : m.vertex_corners(v)) faces += crease_centroid(m, m.corner_face(c));
+  for (Index e : m.vertex_edges(v)) neighbours += m.position(m.edge(e).other_vertex(v));
+  const double n = double(m.vertex_edges(v).size());
+  return (faces / double(m.vertex_corners(v).size()) + neighbours / n + (n - 2) * m.position(v)) / n;
+}
+Index crease_edge_between(const Mesh& m, Index a, Index b) {
+  for (Index e : m.vertex_edges(a))
+    if (m.edge(e).other_vertex(a) == b) return e;
+  FAIL("no edge");
+  return no_index;
+}
+
 void check_crease_point(const Vec3& got, const Vec3& expected) {
   INFO("got " << got.x << " " << got.y << " " << got.z << ", expected " << expected.x << " " << expected.y
               << " " << expected.z);
@@ -148,5 +175,34 @@ TEST_CASE("corner weights: below 1 the vertex blends with its smooth point, from
     check_crease_point(m.vertex_point(id(1, 3)), g.smooth_vertex(1, 3));
     // A corner weighs on its vertex only: the edges around it stay smooth.
     check_crease_point(m.edge_point(id(1, 1), id(2, 1)), g.smooth_along_row(1, 1));
+  }
+}
+
+TEST_CASE("a weight of 1.5 is a crease for one level and half a crease the next", "[kernel]") {
+  CreaseGrid g;
+  const auto id = CreaseGrid::id;
+  g.soup.sharp_edges = {{id(1, 2), id(2, 2)}, {id(2, 2), id(3, 2)}};
+  g.soup.sharp_edge_weights = {1.5f, 1.5f};
+  for (const CreaseMethod method : {CreaseMethod::uniform, CreaseMethod::chaikin}) {
+    INFO(to_string(method));
+    const Mesh base = build_mesh(g.soup);
+    SubdivisionOptions options;
+    options.creases.method = method;
+    const Mesh one = subdivide(base, options);
+    options.levels = 2;
+    const Mesh two = subdivide(base, options);
+    const Index nf = base.num_faces(), ne = base.num_edges();
+    // Level 1: the crease rules whole.
+    const Index e = crease_edge_between(base, id(2, 2), id(3, 2));
+    check_crease_point(one.position(nf + e), g.midpoint_along_row(2, 2));
+    check_crease_point(one.position(nf + ne + id(2, 2)), g.crease_vertex(2, 2));
+    // Level 2: the halves at (2,2) weigh 0.5.
+    const Index v1 = nf + ne + id(2, 2), left = nf + crease_edge_between(base, id(1, 2), id(2, 2));
+    const Index half = crease_edge_between(one, nf + e, v1);
+    const Vec3 mid = (one.position(nf + e) + one.position(v1)) / 2.0;
+    check_crease_point(two.position(one.num_faces() + half), 0.5 * mid + 0.5 * crease_smooth_edge(one, half));
+    const Vec3 crease = (6.0 * one.position(v1) + one.position(left) + one.position(nf + e)) / 8.0;
+    check_crease_point(two.position(one.num_faces() + one.num_edges() + v1),
+                       0.5 * crease + 0.5 * crease_smooth_vertex(one, v1));
   }
 }
