@@ -420,3 +420,25 @@ TEST_CASE("sweepmorph blends the sections between the control points that give t
       if (i == 2) check_sweep_point(test::vertex_position(s, "j_c" + std::to_string(j)), Vec3(p.x, p.y, 0));
     }
 }
+
+TEST_CASE("sweepmorph along a Bézier path blends its end control points' sections by sample", "[scene]") {
+  const std::string text =
+      std::string(sweep_triangle_text) +
+      "point u0 (2 0 0) endpoint\npoint u1 (0 1 0) endpoint\npoint u2 (-3 1 0) endpoint\n"
+      "polyline other (u0 u1 u2) isloop endpolyline\n"
+      "point a (0 0 0) endpoint\npoint b (0 0 1) endpoint\npoint c (0 0 2) endpoint\n"
+      "controlpoint ka point a crosssection tri endcontrolpoint\n"
+      "controlpoint kc point c crosssection other endcontrolpoint\n"
+      "beziercurve p (ka b kc) segs 4 endbeziercurve\n"
+      "sweepmorph m path p endpath endsweepmorph\ninstance i m endinstance\n";
+  const Scene s = Scene::from_text(text, "t.nome");
+  const std::vector<glm::dvec2> other = {{2, 0}, {0, 1}, {-3, 1}};
+  for (int k = 0; k <= 4; ++k)
+    for (int j = 0; j < 3; ++j) {
+      INFO("sample " << k << ", point " << j);
+      const double w = k / 4.0;
+      const glm::dvec2 p = (1 - w) * sweep_triangle.points[std::size_t(j)] + w * other[std::size_t(j)];
+      check_sweep_point(test::vertex_position(s, "i_v" + std::to_string(k) + "_" + std::to_string(j)),
+                        sweep_on_z(2 * w, p, 0));
+    }
+}
