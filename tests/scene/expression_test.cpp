@@ -23,6 +23,17 @@ double eval(const std::string& expr) {
 
 }  // namespace
 
+TEST_CASE("comparisons are exact at equality, on both sides", "[scene]") {
+  CHECK(eval("1 <= 1") == 1);
+  CHECK(eval("1 >= 1") == 1);
+  CHECK(eval("1 < 1") == 0);
+  CHECK(eval("1 > 1") == 0);
+  CHECK(eval("2 <= 1") == 0);
+  CHECK(eval("1 >= 2") == 0);
+  CHECK(eval("1 == 1") == 1);
+  CHECK(eval("1 != 1") == 0);
+}
+
 TEST_CASE("expressions follow the usual precedence and associativity", "[scene]") {
   CHECK(eval("1 + 2 * 3") == 7);
   CHECK(eval("(1 + 2) * 3") == 9);
