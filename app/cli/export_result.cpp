@@ -58,7 +58,13 @@ ExportCounts write_result(LoadedInput& loaded, const std::filesystem::path& path
               progress);
   else
     write_stl(path, mesh, format.stl, progress);
-  return {mesh.num_vertices(), mesh.num_faces(), triangle_count(mesh)};
+  // An OBJ holds a vertex that holes split into one per fan once (Mesh::vertex_origins).
+  std::uint64_t vertices = mesh.num_vertices();
+  if (ext == ".obj" && !mesh.vertex_origins().empty()) {
+    vertices = 0;
+    for (Index v = 0; v < mesh.num_vertices(); ++v) vertices += mesh.vertex_origins()[v] == v ? 1 : 0;
+  }
+  return {vertices, mesh.num_faces(), triangle_count(mesh)};
 }
 
 }  // namespace nome::cli

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "io/obj_tag_lines.hpp"
+#include "io/surface_views.hpp"
 #include "nome/error.hpp"
 
 namespace nome {
@@ -151,17 +152,20 @@ void write_obj_tags(std::ostream& out, const Mesh& mesh, const ObjSubdivisionTag
   if (tags.smooth_triangles)
     out << "t smoothtriangles 0/0/1 " << (*tags.smooth_triangles ? "smooth" : "catmark") << "\n";
   char buf[64];
+  // The vertices as the writer numbers them (a split vertex once).
+  const std::vector<Index> numbers = written_vertex_numbers(mesh);
+  auto number = [&](Index v) { return numbers.empty() ? v : numbers[v]; };
   for (Index e = 0; e < mesh.num_edges(); ++e) {
     const float w = mesh.edge_sharpness(e);
     if (w <= 0.0f) continue;
     std::snprintf(buf, sizeof buf, "%.9g", double(w));
-    out << "t crease 2/1/0 " << mesh.edge(e).vertices[0] << ' ' << mesh.edge(e).vertices[1] << ' ' << buf
-        << '\n';
+    out << "t crease 2/1/0 " << number(mesh.edge(e).vertices[0]) << ' ' << number(mesh.edge(e).vertices[1])
+        << ' ' << buf << '\n';
   }
   for (Index v = 0; v < Index(mesh.vertex_sharpness_weights().size()); ++v) {
-    if (mesh.vertex_sharpness(v) <= 0.0f) continue;
+    if (mesh.vertex_sharpness(v) <= 0.0f || (!numbers.empty() && mesh.vertex_origins()[v] != v)) continue;
     std::snprintf(buf, sizeof buf, "%.9g", double(mesh.vertex_sharpness(v)));
-    out << "t corner 1/1/0 " << v << ' ' << buf << '\n';
+    out << "t corner 1/1/0 " << number(v) << ' ' << buf << '\n';
   }
   for (Index f = 0; f < mesh.num_faces(); ++f)
     if (mesh.is_hole(f)) out << "t hole 1/0/0 " << f << '\n';

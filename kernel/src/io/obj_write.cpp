@@ -55,7 +55,10 @@ void write_obj_surface(FileBlocks& file, const Surface& surface) {
 
 void write_obj(const std::filesystem::path& path, const Mesh& mesh, const ObjSubdivisionTags& tags) {
   write_file_in_blocks(path, [&](FileBlocks& file) {
-    write_obj_surface(file, MeshSurface(mesh));
+    if (mesh.vertex_origins().empty())
+      write_obj_surface(file, MeshSurface(mesh));
+    else
+      write_obj_surface(file, JoinedMeshSurface(mesh));
     std::ostream out(&file);
     write_obj_tags(out, mesh, tags);
   });

@@ -306,8 +306,14 @@ Mesh Refinement::mesh(const Mesh& base, Buffer<Vec3> positions, int threads) con
     // Holes may leave faces that touch at a vertex only (a hole at a border): one vertex per fan there.
     GluedFaces glued = glue_faces(soup);
     output_vertices_.resize(glued.vertex_sources.size());
-    for (size_t i = 0; i < glued.vertex_sources.size(); ++i)
-      output_vertices_[i] = kept_vertices_[glued.vertex_sources[i]];
+    std::vector<Index> first_copy(soup.num_vertices(), no_index), origins(glued.vertex_sources.size());
+    for (size_t i = 0; i < glued.vertex_sources.size(); ++i) {
+      const Index source = glued.vertex_sources[i];
+      output_vertices_[i] = kept_vertices_[source];
+      if (first_copy[source] == no_index) first_copy[source] = Index(i);
+      origins[i] = first_copy[source];
+    }
+    glued.mesh.set_vertex_origins(std::move(origins));
     return std::move(glued.mesh);
   }
 }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -141,6 +142,11 @@ class Mesh {
   void set_hole(Index f, bool hole);
   bool has_holes() const;
   const std::vector<bool>& face_holes() const { return arrays_.face_holes; }  // empty, or one per face
+  // Where one vertex of a surface became one per fan (faces touching at it only, as holes leave them): per
+  // vertex, the lowest-numbered copy of the vertex it was split from (itself when none was), so that a
+  // writer writes such a vertex once. Empty when no vertex was split. Copies share their position.
+  const std::vector<Index>& vertex_origins() const { return vertex_origins_; }
+  void set_vertex_origins(std::vector<Index> origins) { vertex_origins_ = std::move(origins); }
 
   // Vertex fans: corners (one per incident face) and edges in fan order, as documented above.
   std::span<const Index> vertex_corners(Index v) const {
@@ -204,6 +210,7 @@ class Mesh {
   std::vector<Index> loop_vertices_;
   Names vertex_names_;
   Names face_names_;
+  std::vector<Index> vertex_origins_;
 };
 
 // Assembles a mesh from arrays in O(corners), without build_mesh's search and checks: the caller
