@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -13,8 +14,10 @@
 
 #include "nome/io/obj.hpp"
 #include "nome/io/obj_tags.hpp"
+#include "nome/io/read_polygons.hpp"
 #include "nome/io/stl.hpp"
 #include "nome/mesh/glue_faces.hpp"
+#include "nome/mesh/topology_report.hpp"
 #include "nome/ops/subdivide.hpp"
 #include "support/scratch_files.hpp"
 #include "support/shared_examples.hpp"
@@ -100,6 +103,11 @@ TEST_CASE("a vertex where a hole leaves two fans meeting is written once, its fa
   CHECK(back.mesh.num_vertices() == refined.num_vertices());
   CHECK(back.mesh.num_faces() == refined.num_faces());
   CHECK(back.problems.empty());
+  // nome reads its own file back as the surface it wrote: the tag splits the vertex into its fans again.
+  const Mesh reread = build_mesh(read_polygons(path.string()));
+  CHECK(reread.num_vertices() == refined.num_vertices());
+  CHECK(topology_report(reread).chi == topology_report(refined).chi);
+  CHECK(topology_report(reread).borders == topology_report(refined).borders);
   // The other writers are indexed per triangle or per side: STL keeps every triangle.
   const fs::path stl = test::scratch_path("nome_hole_export", "hole4.stl");
   write_stl(stl, refined, StlFormat::binary);
@@ -218,3 +226,27 @@ TEST_CASE("subdivided OpenSubdiv hole shapes are written with OpenSubdiv's verti
     }
 }
 #endif
+
+TEST_CASE("t splitvertex gives each fan at a vertex its own copy, sharp marks following their faces",
+          "[io]") {
+  // Two triangles touching at v1 (a bowtie), the crease on one of them and a corner weight at v1.
+  const fs::path path = test::scratch_path("nome_hole_export", "bowtie.obj");
+  std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 2 0 0\nv 2 -1 0\n"
+                         "f 1 2 3\nf 2 4 5\n"
+                         "t crease 2/1/0 1 3 2\nt corner 1/1/0 1 3\nt splitvertex 1/0/0 1\n";
+  const PolygonSoup soup = read_polygons(path.string());
+  REQUIRE(soup.num_vertices() == 6);
+  CHECK(soup.positions[5] == Vec3(1, 0, 0));
+  // The first face keeps v1; the second names the copy.
+  CHECK(std::vector<Index>(soup.face_vertices.begin(), soup.face_vertices.end()) ==
+        std::vector<Index>{0, 1, 2, 5, 3, 4});
+  REQUIRE(soup.sharp_edges.size() == 1);
+  CHECK(soup.sharp_edges[0] == std::pair<Index, Index>(5, 3));
+  CHECK(soup.sharp_vertices.size() == 2);
+  const Mesh mesh = build_mesh(soup);
+  CHECK(mesh.num_components() == 2);
+  // Without the tag the same faces are refused, as any flat file whose faces touch at a vertex.
+  const fs::path plain = test::scratch_path("nome_hole_export", "bowtie_plain.obj");
+  std::ofstream(plain) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 2 0 0\nv 2 -1 0\nf 1 2 3\nf 2 4 5\n";
+  CHECK_THROWS(build_mesh(read_polygons(plain.string())));
+}

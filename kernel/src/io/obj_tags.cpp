@@ -1,5 +1,6 @@
 #include "nome/io/obj_tags.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
@@ -30,6 +31,65 @@ TagTokens split_tag_line(const std::string& text) {
     t.columns.push_back(int(i) + 1);
     i = end;
   }
+}
+
+// Gives each fan of faces around v (faces joined through edges at v) but the first its own copy of v;
+// sharp edges and corner weights at v follow to the copies whose faces hold them.
+void split_vertex_into_fans(PolygonSoup& soup, Index v) {
+  std::vector<Index> faces;  // the faces at v, and where v is in each
+  std::vector<Index> at;
+  for (Index f = 0; f < soup.num_faces(); ++f)
+    for (Index c = soup.face_offsets[f]; c < soup.face_offsets[f + 1]; ++c)
+      if (soup.face_vertices[c] == v) {
+        faces.push_back(f);
+        at.push_back(c);
+        break;
+      }
+  auto neighbours = [&](size_t i) {  // the vertices before and after v in face i
+    const Index first = soup.face_offsets[faces[i]], n = soup.face_offsets[faces[i] + 1] - first;
+    const Index k = at[i] - first;
+    return std::pair{soup.face_vertices[first + (k + n - 1) % n], soup.face_vertices[first + (k + 1) % n]};
+  };
+  std::vector<size_t> fan(faces.size());
+  for (size_t i = 0; i < fan.size(); ++i) fan[i] = i;
+  auto root = [&](size_t i) {
+    while (fan[i] != i) i = fan[i] = fan[fan[i]];
+    return i;
+  };
+  for (size_t i = 0; i < faces.size(); ++i)
+    for (size_t j = i + 1; j < faces.size(); ++j) {
+      const auto [pi, ni] = neighbours(i);
+      const auto [pj, nj] = neighbours(j);
+      if (pi == pj || pi == nj || ni == pj || ni == nj) fan[root(j)] = root(i);
+    }
+  std::vector<std::pair<size_t, Index>> copy_of_fan;  // fan root -> its vertex
+  std::vector<Index> copy(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const size_t r = root(i);
+    auto it =
+        std::find_if(copy_of_fan.begin(), copy_of_fan.end(), [&](const auto& p) { return p.first == r; });
+    if (it == copy_of_fan.end()) {
+      const Vec3 here = soup.positions[v];  // add_vertex may move the buffer
+      const Index made = copy_of_fan.empty() ? v : soup.add_vertex(here);
+      if (made != v && !soup.vertex_names.empty()) soup.vertex_names.push_back(soup.vertex_names[v]);
+      copy_of_fan.emplace_back(r, made);
+      it = copy_of_fan.end() - 1;
+    }
+    copy[i] = it->second;
+    soup.face_vertices[at[i]] = copy[i];
+  }
+  for (auto& [a, b] : soup.sharp_edges)
+    for (Index* end : {&a, &b}) {
+      if (*end != v) continue;
+      const Index other = end == &a ? b : a;
+      for (size_t i = 0; i < faces.size(); ++i)
+        if (neighbours(i).first == other || neighbours(i).second == other) *end = copy[i];
+    }
+  const size_t corners = soup.sharp_vertices.size();
+  for (size_t k = 0; k < corners; ++k)
+    if (soup.sharp_vertices[k].first == v)
+      for (size_t c = 1; c < copy_of_fan.size(); ++c)
+        soup.sharp_vertices.emplace_back(copy_of_fan[c].second, soup.sharp_vertices[k].second);
 }
 
 [[noreturn]] void fail_tag(const std::string& file, int line, int column, const std::string& what) {
@@ -104,6 +164,9 @@ void apply_obj_tags(const std::string& file, const std::vector<ObjTag>& tags, Po
       for (long long f : tag.ints) soup.hole_faces.push_back(index(tag, f, soup.num_faces(), "face"));
     }
   }
+  for (const ObjTag& tag : tags)
+    if (tag.name == "splitvertex")
+      for (long long v : tag.ints) split_vertex_into_fans(soup, index(tag, v, soup.num_vertices(), "vertex"));
 }
 
 ObjSubdivisionTags read_obj_subdivision_tags(const std::filesystem::path& path) {
@@ -130,7 +193,7 @@ ObjSubdivisionTags read_obj_subdivision_tags(const std::filesystem::path& path) 
     } else if (tag.name == "smoothtriangles" && !word.empty()) {
       out.smooth_triangles = word == "smooth";
     } else if (tag.name != "crease" && tag.name != "corner" && tag.name != "hole" &&
-               noted.insert(tag.name).second) {
+               tag.name != "splitvertex" && noted.insert(tag.name).second) {
       out.notes.push_back(file + ":" + std::to_string(line) + ": 't " + tag.name +
                           "' ignored (hierarchical edits and face-varying options are not applied, as "
                           "OpenSubdiv's refiner does not apply them)");
@@ -169,6 +232,12 @@ void write_obj_tags(std::ostream& out, const Mesh& mesh, const ObjSubdivisionTag
   }
   for (Index f = 0; f < mesh.num_faces(); ++f)
     if (mesh.is_hole(f)) out << "t hole 1/0/0 " << f << '\n';
+  // A vertex written once for several fans, so that reading the file gives the same surface again.
+  std::vector<bool> is_split(mesh.vertex_origins().size(), false);
+  for (Index v = 0; v < is_split.size(); ++v)
+    if (mesh.vertex_origins()[v] != v) is_split[mesh.vertex_origins()[v]] = true;
+  for (Index v = 0; v < is_split.size(); ++v)
+    if (is_split[v]) out << "t splitvertex 1/0/0 " << number(v) << '\n';
 }
 
 }  // namespace nome

@@ -14,7 +14,9 @@ namespace nome {
 
 // The subdivision options of an OBJ file's OpenSubdiv tag lines (`t NAME I/F/S ints floats strings`, the
 // convention of OpenSubdiv's regression shapes). read_obj applies the tags on elements itself: `t crease
-// 2/1/0 a b w` (edge a-b weighs w; vertices count from 0), `t corner 1/1/0 v w`, `t hole 1/0/0 f`.
+// 2/1/0 a b w` (edge a-b weighs w; vertices count from 0), `t corner 1/1/0 v w`, `t hole 1/0/0 f`, and
+// Nome's own `t splitvertex 1/0/0 v`: faces touch at vertex v without sharing an edge there (where holes
+// leave two fans meeting at a point), so v is one vertex of the file but one per fan of the surface.
 struct ObjSubdivisionTags {
   std::optional<BoundaryMode>
       boundary;  // t interpolateboundary 1/0/0 N: 0 none, 1 edge-and-corner, 2 edge-only
