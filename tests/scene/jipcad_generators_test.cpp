@@ -294,20 +294,25 @@ TEST_CASE("helix and spiral are open rim lines", "[scene]") {
   CHECK(test::vertex_position(s, "i_v8").x == Approx(2));  // two turns, radius 1 more per turn
 }
 
-TEST_CASE("hyperboloids: one sheet an annulus, a paraboloid a disk, two sheets two disks", "[scene]") {
-  const TopologyReport one = topology(one_generator("hyperboloid", "(1 1 1 6 12 0)"));
+TEST_CASE("hyperboloids: one sheet an annulus, two sheets two disks, the 2016 paraboloid a disk", "[scene]") {
+  // The successor's (segs a b c sheet theta): 12 around, rows at z = -3..3, a whole turn.
+  const TopologyReport one = topology(one_generator("hyperboloid", "(12 1 1 3 0 2)"));
   CHECK(one.chi == 0);
   CHECK(one.borders == 2);
   CHECK(one.orientable);
-  const TopologyReport bowl = topology(one_generator("hyperboloid", "(1 1 1 6 12 1)"));
-  CHECK(bowl.chi == 1);
-  CHECK(bowl.borders == 1);
-  const Scene two = one_generator("hyperboloid", "(1 2 1 6 12 2)");
+  const Scene two = one_generator("hyperboloid", "(12 1 2 3 1 2)");
   const TopologyReport r = topology(two);
   CHECK(r.components.size() == 2);
   CHECK(r.chi == 2);
   CHECK(r.borders == 2);
-  CHECK(test::vertex_position(two, "i_bottom_apex").z == Approx(-2));
+  CHECK(test::vertex_position(two, "i_bottom_apex") == Vec3(0, 0, -1));
+  // NOME3's order, which only the 2016 dialect reads, has the paraboloid.
+  const Scene bowl_scene =
+      Scene::from_text("hyperboloid g (1 1 1 6 12 1) endhyperboloid\ninstance i g endinstance\n", "t.nome",
+                       {.dialect = Dialect::report2016});
+  const TopologyReport bowl = topology(bowl_scene);
+  CHECK(bowl.chi == 1);
+  CHECK(bowl.borders == 1);
 }
 
 TEST_CASE("a whole Dupin cyclide is closed with chi 0, a quarter is a disk", "[scene]") {
