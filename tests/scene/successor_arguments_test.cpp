@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "nome/scene/parser.hpp"
 #include "nome/scene/scene.hpp"
@@ -177,6 +178,42 @@ TEST_CASE("succ: a hyperboloid only NOME3's older order can mean is refused with
       test::scene_errors("hyperboloid h (1 1 1 6 2 0) endhyperboloid\ninstance i h endinstance\n");
   REQUIRE(neither.size() == 1);
   CHECK(neither[0] == "t.nome:1:16: segs must be a whole number in [3, 100000], found 1");
+}
+
+TEST_CASE("succ: a face that names its first vertex again at its end is the closed polygon, noted once",
+          "[scene]") {
+  // As the bell tutorial writes its faces, 32 times: two such faces here, in a mesh and at the top level.
+  const std::string points =
+      "point sq1 (0 0 0) endpoint point sq2 (1 0 0) endpoint point sq3 (1 1 0) endpoint point sq4 (0 1 0) "
+      "endpoint point top (0.5 0.5 1) endpoint\n";
+  const std::string text =
+      points +
+      "mesh m face f (sq1 sq2 sq3 sq4 sq1) endface face g (sq1 top sq2 sq1) endface endmesh\n"
+      "face h (sq2 top sq3 sq2) endface\ninstance i m endinstance\ninstance j h endinstance\n";
+  const Scene s = Scene::from_text(text, "t.nom", {.dialect = Dialect::jipcad});
+  const PolygonSoup soup = s.combined_soup();
+  REQUIRE(soup.num_faces() == 3);
+  auto corners = [&](Index face) {
+    std::vector<Vec3> out;
+    for (Index c = soup.face_offsets[face]; c < soup.face_offsets[face + 1]; ++c)
+      out.push_back(soup.positions[soup.face_vertices[c]]);
+    return out;
+  };
+  CHECK(corners(0) == std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+  CHECK(corners(1) == std::vector<Vec3>{{0, 0, 0}, {0.5, 0.5, 1}, {1, 0, 0}});
+  CHECK(corners(2) == std::vector<Vec3>{{1, 0, 0}, {0.5, 0.5, 1}, {1, 1, 0}});
+  int notes = 0;
+  for (const Diagnostic& d : s.warnings()) {
+    INFO(d.message);
+    CHECK_THAT(d.message, !Catch::Contains("coinciding"));
+    if (d.message.find("names its first vertex again") != std::string::npos) ++notes;
+  }
+  CHECK(notes == 1);
+  // The 2016 dialect reads the face as written, its five corners.
+  const Scene report =
+      Scene::from_text(points + "face f (sq1 sq2 sq3 sq4 sq1) endface\ninstance i f endinstance\n", "t.nome",
+                       {.dialect = Dialect::report2016});
+  CHECK(report.combined_soup().face_offsets[1] == 5);
 }
 
 TEST_CASE("JIPCAD's mobiusstrip with cuts: equal bands and gaps across its width", "[scene]") {
