@@ -96,8 +96,8 @@ Piece sphere_any_latitudes(const SphereParams& p) {
 }  // namespace
 
 Piece sphere(const SphereParams& p) {
-  if (p.latitude_min < -90 || p.latitude_max > 90) return sphere_any_latitudes(p);
   require(p.longitude_segs >= 1 && p.latitude_segs >= 1, "sphere: needs at least one segment each way");
+  if (p.latitude_min < -90 || p.latitude_max > 90) return sphere_any_latitudes(p);
   Piece piece;
   SurfaceGrid grid;
   grid.across = p.longitude_segs;
