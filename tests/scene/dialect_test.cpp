@@ -11,6 +11,7 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/scene/parser.hpp"
 #include "nome/scene/save_nome.hpp"
+#include "scene/scene_support.hpp"
 #include "support/missing_point_scene.hpp"
 #include "support/shared_examples.hpp"
 
@@ -114,6 +115,28 @@ TEST_CASE("include reads files relative to the including one, nested, banks incl
   CHECK(s.ast().included_files.size() == 2);
   s.set_parameter(*s.find_parameter("s_n"), 7);
   CHECK(s.combined_soup().num_faces() == 7);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("include without brackets reads the file its identifier names, as JIPCAD's tutorial writes it",
+          "[scene]") {
+  const auto dir = scratch("bare_include");
+  write(dir / "z_inclSurfaces.nom",
+        "point a (0 0 0) endpoint point b (2 0 0) endpoint point c (0 3 0) endpoint\n");
+  write(dir / "bell.nom",
+        "include z_inclSurfaces.nom endinclude\nface f (a b c) endface\ninstance i f endinstance\n");
+  const Scene s = read_scene(dir / "bell.nom");
+  REQUIRE(s.ast().included_files.size() == 1);
+  CHECK(std::filesystem::path(s.ast().included_files[0]).filename() == "z_inclSurfaces.nom");
+  CHECK(test::vertex_position(s, "i_b") == Vec3(2, 0, 0));
+  CHECK(test::vertex_position(s, "i_c") == Vec3(0, 3, 0));
+  // The bracketed form keeps working, and neither form is a bare number.
+  write(dir / "bracketed.nom",
+        "include [z_inclSurfaces.nom] endinclude\nface f (a b c) endface\ninstance i f endinstance\n");
+  CHECK(test::vertex_position(read_scene(dir / "bracketed.nom"), "i_c") == Vec3(0, 3, 0));
+  write(dir / "number.nom", "include 12 endinclude\n");
+  CHECK_THROWS_WITH(read_scene(dir / "number.nom"),
+                    Catch::Contains("number.nom:1:9: expected '[' or a file name"));
   std::filesystem::remove_all(dir);
 }
 

@@ -2,6 +2,9 @@
 // JIPCAD's example files where they parse.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <random>
 #include <string>
 
 #include "nome/mesh/mesh.hpp"
@@ -41,6 +44,43 @@ TEST_CASE("a whole sphere is one closed surface of chi 2 with single poles", "[s
   CHECK(test::vertex_position(s, "i_north").z == Approx(2));
   CHECK(test::vertex_position(s, "i_v3_2").x ==
         Approx(2 * std::cos(0.5235987755982988) * std::cos(1.5707963267948966)).margin(1e-12));
+}
+
+TEST_CASE("the snowman tutorial's sphere (1 180 0 360 10 10) is a whole unit sphere", "[scene]") {
+  // The meridian circle phi 0..360 turned half a turn, as JIPCAD's Sphere.cpp sweeps it.
+  const Scene s = one_generator("sphere", "(1 180 0 360 10 10)");
+  REQUIRE(s.dialect().dialect == Dialect::jipcad);
+  const PolygonSoup soup = s.combined_soup();
+  // Rings at latitudes 0, +-36, +-72 of 20 vertices each, and the two poles the arc passes.
+  CHECK(soup.num_vertices() == 5 * 20 + 2);
+  for (const Vec3& p : soup.positions) CHECK(glm::length(p) == Approx(1).margin(1e-12));
+  CHECK(test::vertex_position(s, "i_north") == Vec3(0, 0, 1));
+  CHECK(test::vertex_position(s, "i_south") == Vec3(0, 0, -1));
+  // Covering: every direction is within 25 degrees of a vertex (half a sphere's vertices leave directions
+  // 90 degrees away).
+  std::mt19937 random{42};
+  std::normal_distribution<double> normal;
+  double farthest = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 d = glm::normalize(Vec3(normal(random), normal(random), normal(random)));
+    double nearest = 4;
+    for (const Vec3& p : soup.positions)
+      nearest = std::min(nearest, std::acos(std::clamp(glm::dot(d, p), -1.0, 1.0)));
+    farthest = std::max(farthest, nearest);
+  }
+  CHECK(farthest < 25 * 3.141592653589793 / 180);
+  CHECK(is_closed_surface(topology(s), 2));
+  // The step-by-step text's (1 360 0 180 10 10) covers the upper hemisphere twice: it is made once.
+  const Scene twice = one_generator("sphere", "(1 360 0 180 10 10)");
+  for (const Vec3& p : twice.combined_soup().positions) CHECK(p.z >= 0);
+  const TopologyReport hemisphere = topology(twice);
+  CHECK(hemisphere.chi == 1);
+  CHECK(hemisphere.borders == 1);
+  CHECK(hemisphere.orientable);
+  // The 2016 dialect keeps its latitudes in [-90, 90].
+  CHECK_THROWS_WITH(Scene::from_text("sphere s (1 180 0 360 10 10) endsphere\ninstance i s endinstance\n",
+                                     "t.nome", {.dialect = Dialect::report2016}),
+                    Catch::Contains("t.nome:1:19: phi_max must be in [-90, 90], found 360"));
 }
 
 TEST_CASE("a sphere cut at the tropics and sliced is a disk-like patch", "[scene]") {
@@ -294,20 +334,25 @@ TEST_CASE("helix and spiral are open rim lines", "[scene]") {
   CHECK(test::vertex_position(s, "i_v8").x == Approx(2));  // two turns, radius 1 more per turn
 }
 
-TEST_CASE("hyperboloids: one sheet an annulus, a paraboloid a disk, two sheets two disks", "[scene]") {
-  const TopologyReport one = topology(one_generator("hyperboloid", "(1 1 1 6 12 0)"));
+TEST_CASE("hyperboloids: one sheet an annulus, two sheets two disks, the 2016 paraboloid a disk", "[scene]") {
+  // The successor's (segs a b c sheet theta): 12 around, rows at z = -3..3, a whole turn.
+  const TopologyReport one = topology(one_generator("hyperboloid", "(12 1 1 3 0 2)"));
   CHECK(one.chi == 0);
   CHECK(one.borders == 2);
   CHECK(one.orientable);
-  const TopologyReport bowl = topology(one_generator("hyperboloid", "(1 1 1 6 12 1)"));
-  CHECK(bowl.chi == 1);
-  CHECK(bowl.borders == 1);
-  const Scene two = one_generator("hyperboloid", "(1 2 1 6 12 2)");
+  const Scene two = one_generator("hyperboloid", "(12 1 2 3 1 2)");
   const TopologyReport r = topology(two);
   CHECK(r.components.size() == 2);
   CHECK(r.chi == 2);
   CHECK(r.borders == 2);
-  CHECK(test::vertex_position(two, "i_bottom_apex").z == Approx(-2));
+  CHECK(test::vertex_position(two, "i_bottom_apex") == Vec3(0, 0, -1));
+  // NOME3's order, which only the 2016 dialect reads, has the paraboloid.
+  const Scene bowl_scene =
+      Scene::from_text("hyperboloid g (1 1 1 6 12 1) endhyperboloid\ninstance i g endinstance\n", "t.nome",
+                       {.dialect = Dialect::report2016});
+  const TopologyReport bowl = topology(bowl_scene);
+  CHECK(bowl.chi == 1);
+  CHECK(bowl.borders == 1);
 }
 
 TEST_CASE("a whole Dupin cyclide is closed with chi 0, a quarter is a disk", "[scene]") {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "nome/scene/parser.hpp"
 #include "nome/scene/scene.hpp"
@@ -91,6 +92,128 @@ TEST_CASE("JIPCAD's circle reads (radius segs)", "[scene]") {
   REQUIRE(s.combined_soup().num_vertices() == 7);
   for (int k = 0; k < 7; ++k)
     CHECK(succ_gap(s, "i_c" + std::to_string(k), succ_ring_point(k, 7, 2.5, 0)) < 1e-12);
+}
+
+TEST_CASE("succ: in JIPCAD's dialect (3 20) is radius 3 in 20 segments, whatever the values", "[scene]") {
+  // Both numbers could count segments: the dialect decides, as intro_files__Generators.nom means it.
+  const std::string text = "circle c (3 20) endcircle\ninstance i c endinstance\n";
+  const Scene jip = Scene::from_text(text, "t.nom", {.dialect = Dialect::jipcad});
+  REQUIRE(jip.combined_soup().num_vertices() == 20);
+  for (int k = 0; k < 20; ++k) {
+    INFO("k = " << k);
+    CHECK(succ_gap(jip, "i_c" + std::to_string(k), succ_ring_point(k, 20, 3, 0)) < 1e-12);
+  }
+  CHECK(jip.warnings().empty());
+  // The 2016 dialect keeps NOME 2.x's (n r): 3 segments of radius 20.
+  const Scene report = Scene::from_text(text, "t.nome");
+  REQUIRE(report.dialect().dialect == Dialect::report2016);
+  REQUIRE(report.combined_soup().num_vertices() == 3);
+  for (int k = 0; k < 3; ++k)
+    CHECK(succ_gap(report, "i_c" + std::to_string(k), succ_ring_point(k, 3, 20, 0)) < 1e-12);
+  // One segment is no circle: a statement only NOME 2.x's order can mean is read so, and the warning says so.
+  const Scene old = Scene::from_text("circle c (20 1) endcircle\ninstance i c endinstance\n", "t.nom",
+                                     {.dialect = Dialect::jipcad});
+  REQUIRE(old.combined_soup().num_vertices() == 20);
+  CHECK(succ_gap(old, "i_c5", succ_ring_point(5, 20, 1, 0)) < 1e-12);
+  REQUIRE(old.warnings().size() == 1);
+  CHECK(old.warnings()[0].location.column == 11);
+  CHECK_THAT(old.warnings()[0].message,
+             Catch::Contains("reads (radius segs)") && Catch::Contains("20 segments of radius 1"));
+}
+
+// (segs a b c sheet theta) as JIPCAD's Hyperboloid.cpp reads them: column i of segs at t = i theta pi / segs,
+// rows at the whole heights z, radius factor sqrt(z^2 + 1) (one sheet) or sqrt(z^2 - 1) (two sheets).
+Vec3 succ_hyperboloid_point(double a, double b, double theta, int segs, int i, int z, double sign) {
+  const double t = i * theta * succ_pi / segs, s = std::sqrt(double(z) * z + sign);
+  return {a * s * std::cos(t), b * s * std::sin(t), double(z)};
+}
+
+TEST_CASE("succ: JIPCAD's hyperboloid reads (segs a b c sheet theta), by its closed form", "[scene]") {
+  // One sheet, a whole turn: 7 around, x scale 1.5, y scale 0.5, rows z = -2..2.
+  const Scene one =
+      Scene::from_text("hyperboloid h (7 1.5 0.5 2 0 2) endhyperboloid\ninstance i h endinstance\n", "t.nom",
+                       {.dialect = Dialect::jipcad});
+  REQUIRE(one.combined_soup().num_vertices() == 7 * 5);
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i < 7; ++i) {
+      INFO("v" << i << "_" << j);
+      CHECK(succ_gap(one, "i_v" + std::to_string(i) + "_" + std::to_string(j),
+                     succ_hyperboloid_point(1.5, 0.5, 2, 7, i, j - 2, 1)) < 1e-12);
+    }
+  CHECK(one.combined_soup().num_faces() == 7 * 4);
+  // The issue's two sheets, half a turn: 40 columns at 0, 1/40 pi, ..., 39/40 pi (JIPCAD's sampling stops
+  // a step short of theta pi); each sheet from its apex at z = +-1 to +-3.
+  const Scene two =
+      Scene::from_text("hyperboloid h (40 1 1 3 1 1) endhyperboloid\ninstance i h endinstance\n", "t.nom",
+                       {.dialect = Dialect::jipcad});
+  REQUIRE(two.combined_soup().num_vertices() == 2 * (1 + 2 * 40));
+  CHECK(succ_gap(two, "i_top_apex", {0, 0, 1}) < 1e-12);
+  CHECK(succ_gap(two, "i_bottom_apex", {0, 0, -1}) < 1e-12);
+  for (int i = 0; i < 40; ++i) {
+    INFO("column " << i);
+    CHECK(succ_gap(two, "i_top_v" + std::to_string(i) + "_2", succ_hyperboloid_point(1, 1, 1, 40, i, 3, -1)) <
+          1e-12);
+    CHECK(succ_gap(two, "i_bottom_v" + std::to_string(i) + "_0",
+                   succ_hyperboloid_point(1, 1, 1, 40, i, -3, -1)) < 1e-12);
+    CHECK(succ_gap(two, "i_bottom_v" + std::to_string(i) + "_1",
+                   succ_hyperboloid_point(1, 1, 1, 40, i, -2, -1)) < 1e-12);
+  }
+  // The issue's `(40 1 1 3 0 2)`, refused before, is a whole one-sheeted turn.
+  const Scene issue =
+      Scene::from_text("hyperboloid h (40 1 1 3 0 2) endhyperboloid\ninstance i h endinstance\n", "t.nom",
+                       {.dialect = Dialect::jipcad});
+  CHECK(succ_gap(issue, "i_v10_6", succ_hyperboloid_point(1, 1, 2, 40, 10, 3, 1)) < 1e-12);
+}
+
+TEST_CASE("succ: a hyperboloid only NOME3's older order can mean is refused with a message that says so",
+          "[scene]") {
+  const std::vector<std::string> older =
+      test::scene_errors("hyperboloid h (1 1 1 6 12 0) endhyperboloid\ninstance i h endinstance\n");
+  REQUIRE(older.size() == 1);
+  CHECK_THAT(older[0],
+             Catch::StartsWith("t.nome:1:16: segs must be a whole number in [3, 100000], found 1") &&
+                 Catch::Contains("NOME3's older (a c u_max u_segs v_segs sheet)"));
+  // Arguments neither order can read: only what is wrong.
+  const std::vector<std::string> neither =
+      test::scene_errors("hyperboloid h (1 1 1 6 2 0) endhyperboloid\ninstance i h endinstance\n");
+  REQUIRE(neither.size() == 1);
+  CHECK(neither[0] == "t.nome:1:16: segs must be a whole number in [3, 100000], found 1");
+}
+
+TEST_CASE("succ: a face that names its first vertex again at its end is the closed polygon, noted once",
+          "[scene]") {
+  // As the bell tutorial writes its faces, 32 times: two such faces here, in a mesh and at the top level.
+  const std::string points =
+      "point sq1 (0 0 0) endpoint point sq2 (1 0 0) endpoint point sq3 (1 1 0) endpoint point sq4 (0 1 0) "
+      "endpoint point top (0.5 0.5 1) endpoint\n";
+  const std::string text =
+      points +
+      "mesh m face f (sq1 sq2 sq3 sq4 sq1) endface face g (sq1 top sq2 sq1) endface endmesh\n"
+      "face h (sq2 top sq3 sq2) endface\ninstance i m endinstance\ninstance j h endinstance\n";
+  const Scene s = Scene::from_text(text, "t.nom", {.dialect = Dialect::jipcad});
+  const PolygonSoup soup = s.combined_soup();
+  REQUIRE(soup.num_faces() == 3);
+  auto corners = [&](Index face) {
+    std::vector<Vec3> out;
+    for (Index c = soup.face_offsets[face]; c < soup.face_offsets[face + 1]; ++c)
+      out.push_back(soup.positions[soup.face_vertices[c]]);
+    return out;
+  };
+  CHECK(corners(0) == std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+  CHECK(corners(1) == std::vector<Vec3>{{0, 0, 0}, {0.5, 0.5, 1}, {1, 0, 0}});
+  CHECK(corners(2) == std::vector<Vec3>{{1, 0, 0}, {0.5, 0.5, 1}, {1, 1, 0}});
+  int notes = 0;
+  for (const Diagnostic& d : s.warnings()) {
+    INFO(d.message);
+    CHECK_THAT(d.message, !Catch::Contains("coinciding"));
+    if (d.message.find("names its first vertex again") != std::string::npos) ++notes;
+  }
+  CHECK(notes == 1);
+  // The 2016 dialect reads the face as written, its five corners.
+  const Scene report =
+      Scene::from_text(points + "face f (sq1 sq2 sq3 sq4 sq1) endface\ninstance i f endinstance\n", "t.nome",
+                       {.dialect = Dialect::report2016});
+  CHECK(report.combined_soup().face_offsets[1] == 5);
 }
 
 TEST_CASE("JIPCAD's mobiusstrip with cuts: equal bands and gaps across its width", "[scene]") {

@@ -65,7 +65,7 @@ TEST_CASE("a capped sweep of a closed cross-section along an open path is closed
 
 TEST_CASE("a segment swept around a closed path with 180 degrees of twist is a Möbius band", "[scene]") {
   const std::string text =
-      "circle ring (24 5) endcircle\npoint a (-1 0 0) endpoint\npoint b (1 0 0) endpoint\n"
+      "circle ring (5 24) endcircle\npoint a (-1 0 0) endpoint\npoint b (1 0 0) endpoint\n"
       "polyline seg (a b) endpolyline\n"
       "sweep band crosssection seg endcrosssection path ring mintorsion twist (180) endpath endsweep\n"
       "instance i band endinstance\n";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 namespace nome::scene {
 namespace {
@@ -108,6 +109,18 @@ void DefinitionContext::add_face(const std::vector<Name>& names, const std::stri
       errors_.resize(errors_before);
     }
     return;
+  }
+  if (scene_.dialect().dialect == Dialect::jipcad && corners.size() >= 4 &&
+      corners.front() == corners.back()) {
+    // JIPCAD's files close a polygon by naming its first vertex again (`(sq1 sq2 sq3 sq4 sq1)`), as its
+    // tutorials do on face after face: the polygon is meant, and one note per file says so.
+    corners.pop_back();
+    constexpr std::string_view note =
+        "a face that names its first vertex again at its end is read as the "
+        "closed polygon without the repeat";
+    const auto is_note = [&](const Diagnostic& d) { return d.message.starts_with(note); };
+    if (std::none_of(scene_.warnings().begin(), scene_.warnings().end(), is_note))
+      warning(at, std::string(note) + " (face '" + face_name + "' here, and every such face in this file)");
   }
   piece_.soup.note_origin(scene_.where(at));
   piece_.add_face(corners, face_name);

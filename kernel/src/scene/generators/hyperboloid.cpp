@@ -1,6 +1,6 @@
-// `hyperboloid NAME (a c u_max u_segs v_segs sheet) endhyperboloid` (JIPCAD's grammar; its reference does
-// not describe it: the arguments are those of NOME3's last hyperboloid, with its increments read as
-// segment counts; sheet 0 one sheet, 1 paraboloid, 2 two sheets).
+// `hyperboloid NAME (a c u_max u_segs v_segs sheet) endhyperboloid` in the 2016 dialect (NOME3's last
+// hyperboloid, its increments read as segment counts; sheet 0 one sheet, 1 paraboloid, 2 two sheets), and
+// `(segs a b c sheet theta)` in the successor's, as JIPCAD's Hyperboloid.cpp reads them.
 #include "nome/scene/generators/hyperboloid.hpp"
 
 #include <cmath>
@@ -48,10 +48,77 @@ Piece hyperboloid(const HyperboloidParams& p) {
   return piece;
 }
 
+Piece successor_hyperboloid(const SuccessorHyperboloidParams& p) {
+  require(p.segs >= 3 && p.rows >= 1 && p.theta > 0, "successor_hyperboloid: needs segs >= 3 and c >= 1");
+  const bool is_closed = std::abs(p.theta - 2) < 1e-9;
+  Piece piece;
+  SurfaceGrid grid;
+  grid.across = is_closed ? p.segs : p.segs - 1;
+  grid.is_across_closed = is_closed;
+  auto point = [&](int i, int z) {
+    const double t = i * p.theta * std::numbers::pi / p.segs;
+    const double s = std::sqrt(double(z) * z + (p.is_two_sheets ? -1 : 1));
+    return Vec3(p.a * s * std::cos(t), p.b * s * std::sin(t), z);
+  };
+  if (!p.is_two_sheets) {
+    grid.along = 2 * p.rows;
+    add_surface_grid(piece, grid, [&](int i, int j) { return point(i, j - p.rows); });
+    return piece;
+  }
+  // Between z = -1 and 1 there is no surface: each sheet runs from its apex at +-1 to +-c.
+  if (p.rows < 2) return piece;
+  grid.along = p.rows - 1;
+  grid.prefix = "top_";
+  grid.has_first_pole = true;
+  grid.first_pole_name = "apex";
+  add_surface_grid(piece, grid, [&](int i, int j) { return point(i, j + 1); });
+  grid.prefix = "bottom_";
+  grid.has_first_pole = false;
+  grid.has_last_pole = true;
+  grid.last_pole_name = "apex";
+  add_surface_grid(piece, grid, [&](int i, int j) { return point(i, j - p.rows); });
+  return piece;
+}
+
 namespace {
+
+// NOME3's order, the 2016 dialect's: (a c u_max u_segs v_segs sheet).
+bool is_older_order(DefinitionContext& c, const std::vector<Value>& a) {
+  auto is_whole = [&](const Value& v, double lo, double hi) {
+    const double x = c.number(v);
+    return std::abs(x - std::round(x)) < 1e-9 && x >= lo && x <= hi;
+  };
+  const double u_max = c.number(a[2]);
+  return c.number(a[0]) > 0 && c.number(a[1]) > 0 && u_max > 0 && u_max <= 20 && is_whole(a[3], 1, 1e5) &&
+         is_whole(a[4], 3, 1e5) && is_whole(a[5], 0, 2);
+}
+
+Piece evaluate_successor_hyperboloid(DefinitionContext& c, const std::vector<Value>& a) {
+  try {
+    SuccessorHyperboloidParams p;
+    p.segs = c.whole(a[0], 3, "segs");
+    p.a = c.positive(a[1], "a");
+    p.b = c.positive(a[2], "b");
+    // JIPCAD takes the whole part of c: the rows are at whole heights.
+    p.rows = int(std::floor(number_in(c, a[3], 1, 100000, "c")));
+    p.is_two_sheets = c.whole(a[4], 0, "sheet") != 0;
+    p.theta = number_in(c, a[5], 0, 2, "theta (a sweep in units of pi)");
+    if (p.theta == 0) throw EvaluationError(a[5].location, "theta (a sweep in units of pi) must be above 0");
+    if (p.is_two_sheets && p.rows < 2)
+      throw EvaluationError(a[3].location, "c must be at least 2 for two sheets (they start at z = +-1)");
+    return successor_hyperboloid(p);
+  } catch (const EvaluationError& e) {
+    if (!is_older_order(c, a)) throw;
+    throw EvaluationError(e.where(), std::string(e.what()) +
+                                         ": the successor's dialect reads hyperboloid as (segs a b c sheet "
+                                         "theta); these arguments are NOME3's older (a c u_max u_segs v_segs "
+                                         "sheet), which the 2016 dialect reads (--dialect 2016)");
+  }
+}
 
 Piece evaluate_hyperboloid(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
+  if (c.ast().dialect.dialect == Dialect::jipcad) return evaluate_successor_hyperboloid(c, a);
   HyperboloidParams p;
   p.a = c.positive(a[0], "a");
   p.c = c.positive(a[1], "c");
@@ -70,10 +137,10 @@ Piece evaluate_hyperboloid(DefinitionContext& c, Index decl) {
 StatementKind hyperboloid_statement() {
   return with_generator_syntax({.keyword = "hyperboloid",
                                 .end_keyword = "endhyperboloid",
-                                .signature = "(a c u_max u_segs v_segs sheet)",
+                                .signature = "(segs a b c sheet theta)",
                                 .argument_count = 6,
                                 .evaluate = evaluate_hyperboloid,
-                                .example = "(1 1 1 4 8 0)"});
+                                .example = "(8 1 1 2 0 2)"});
 }
 
 }  // namespace nome::scene

@@ -1,17 +1,103 @@
 // `sphere NAME (radius theta_max phi_min phi_max theta_segs phi_segs) endsphere` and `ellipsoid` (JIPCAD).
 #include "nome/scene/generators/sphere.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "scene/generators/generator_support.hpp"
 #include "scene/generators/surface_grid.hpp"
 
 namespace nome::scene {
 
+namespace {
+
+// A place on the globe written with any latitude: beyond a pole the meridian comes down the other side,
+// half a turn of longitude away. Both in degrees; the canonical form has latitude in [-90, 90] and
+// longitude in [0, 360), 0 at a pole.
+struct GlobePlace {
+  double latitude, longitude;
+};
+
+GlobePlace canonical_place(double latitude, double longitude) {
+  double lat = std::remainder(latitude, 360.0);  // (-180, 180]
+  if (lat > 90) {
+    lat = 180 - lat;
+    longitude += 180;
+  } else if (lat < -90) {
+    lat = -180 - lat;
+    longitude += 180;
+  }
+  double lon = std::fmod(longitude, 360.0);
+  if (lon < 0) lon += 360;
+  if (std::abs(std::abs(lat) - 90) < 1e-9 || std::abs(lon - 360) < 1e-9) lon = 0;
+  return {lat, lon};
+}
+
+// JIPCAD's Sphere.cpp sweeps the meridian arc from phi_min to phi_max whatever the range: past a pole it
+// comes down the other side, so `(1 180 0 360 10 10)` (a whole meridian circle turned half a turn) is a
+// whole sphere. The arc is cut at every pole it passes (a row of its own, one vertex), places the arc
+// reaches twice are one vertex, and a face the sweep makes twice (`(1 360 0 180 ...)` covers a hemisphere
+// twice) is made once; faces beyond a pole are turned over, so that all point outwards.
+Piece sphere_any_latitudes(const SphereParams& p) {
+  std::vector<double> rows;
+  for (int j = 0; j <= p.latitude_segs; ++j) {
+    const double lat = p.latitude_min + (p.latitude_max - p.latitude_min) * j / p.latitude_segs;
+    if (!rows.empty())
+      for (double pole = 90 * (2 * std::floor((rows.back() - 90) / 180) + 3); pole < lat - 1e-9; pole += 180)
+        if (pole > rows.back() + 1e-9) rows.push_back(pole);
+    rows.push_back(lat);
+  }
+  Piece piece;
+  std::map<std::pair<long long, long long>, Index> placed;
+  const int columns = p.longitude_segs;
+  std::vector<Index> ids(rows.size() * size_t(columns + 1));
+  for (size_t j = 0; j < rows.size(); ++j)
+    for (int i = 0; i <= columns; ++i) {
+      const GlobePlace at = canonical_place(rows[j], p.longitude_max * i / columns);
+      const std::pair<long long, long long> key{std::llround(at.latitude * 1e6),
+                                                std::llround(at.longitude * 1e6) % 360000000};
+      auto [it, is_new] = placed.emplace(key, 0);
+      if (is_new) {
+        const double lat = at.latitude * std::numbers::pi / 180, lon = at.longitude * std::numbers::pi / 180;
+        const bool is_pole = std::abs(std::abs(at.latitude) - 90) < 1e-9;
+        const double ring = is_pole ? 0 : p.radius * std::cos(lat);
+        const std::string name = is_pole ? (at.latitude > 0 ? "north" : "south")
+                                         : "v" + std::to_string(i) + "_" + std::to_string(j);
+        it->second = piece.add_vertex(
+            Vec3(ring * std::cos(lon), ring * std::sin(lon),
+                 is_pole ? (at.latitude > 0 ? p.radius_z : -p.radius_z) : p.radius_z * std::sin(lat)),
+            name);
+      }
+      ids[j * size_t(columns + 1) + size_t(i)] = it->second;
+    }
+  std::set<std::vector<Index>> made;
+  for (size_t j = 0; j + 1 < rows.size(); ++j)
+    for (int i = 0; i < columns; ++i) {
+      auto id = [&](int di, size_t dj) { return ids[(j + dj) * size_t(columns + 1) + size_t(i + di)]; };
+      std::vector<Index> face{id(0, 0), id(1, 0), id(1, 1), id(0, 1)};
+      face.erase(std::unique(face.begin(), face.end()), face.end());
+      if (face.size() > 1 && face.front() == face.back()) face.pop_back();
+      if (face.size() < 3) continue;
+      std::vector<Index> key = face;
+      std::sort(key.begin(), key.end());
+      if (!made.insert(key).second) continue;
+      if (std::abs(std::remainder((rows[j] + rows[j + 1]) / 2, 360.0)) > 90)
+        std::reverse(face.begin(), face.end());
+      piece.add_face(face, "f" + std::to_string(i) + "_" + std::to_string(j));
+    }
+  return piece;
+}
+
+}  // namespace
+
 Piece sphere(const SphereParams& p) {
   require(p.longitude_segs >= 1 && p.latitude_segs >= 1, "sphere: needs at least one segment each way");
+  if (p.latitude_min < -90 || p.latitude_max > 90) return sphere_any_latitudes(p);
   Piece piece;
   SurfaceGrid grid;
   grid.across = p.longitude_segs;
@@ -43,11 +129,16 @@ struct AngleNames {
 Piece evaluate_globe(DefinitionContext& c, const std::vector<Value>& a, size_t first, SphereParams p,
                      const AngleNames& n) {
   p.longitude_max = sweep_degrees(c, a[first], n.longitude_max);
-  p.latitude_min = number_in(c, a[first + 1], -90, 90, n.latitude_min);
-  p.latitude_max = number_in(c, a[first + 2], -90, 90, n.latitude_max);
+  // The successor's latitudes may run past a pole (JIPCAD's Sphere.cpp sweeps any arc of the meridian).
+  const double limit = c.ast().dialect.dialect == Dialect::jipcad ? 1e6 : 90;
+  p.latitude_min = number_in(c, a[first + 1], -limit, limit, n.latitude_min);
+  p.latitude_max = number_in(c, a[first + 2], -limit, limit, n.latitude_max);
   if (!(p.latitude_min < p.latitude_max))
     throw EvaluationError(a[first + 2].location,
                           std::string(n.latitude_max) + " must be above " + n.latitude_min);
+  if (p.latitude_max - p.latitude_min > 360)
+    throw EvaluationError(a[first + 2].location, std::string(n.latitude_max) + " must be at most 360 above " +
+                                                     n.latitude_min + " (a whole meridian circle)");
   p.longitude_segs = c.whole(a[first + 3], is_whole_turn(p.longitude_max) ? 3 : 1, n.longitude_segs);
   p.latitude_segs = c.whole(a[first + 4], 2, n.latitude_segs);
   return sphere(p);

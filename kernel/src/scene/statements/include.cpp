@@ -1,5 +1,6 @@
-// `include [file.nom] endinclude` (the successor's): the file's statements as if written here. The path is
-// relative to the including file; included files may include others, and a cycle is refused with its chain.
+// `include [file.nom] endinclude` or `include file.nom endinclude` (the successor's): the file's statements
+// as if written here. The path is relative to the including file; included files may include others, and a
+// cycle is refused with its chain.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -65,7 +66,15 @@ void parse_include(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   parser.set_statement_end(end);
   const Token opener = parser.take();
-  const std::string written = bracketed_path(parser);
+  // JIPCAD's grammar also takes the name as one identifier (`include z_inclSurfaces.nom endinclude`: '.'
+  // is an identifier character), as its tutorials write it.
+  std::string written;
+  if (parser.peek().kind == TokenKind::word && !parser.peek().is_word(end)) {
+    written = parser.take().text;
+  } else {
+    if (!parser.peek().is_symbol("[")) parser.fail(parser.peek(), "'[' or a file name");
+    written = bracketed_path(parser);
+  }
   parser.expect_word(end);
   read_included(parser, opener, written);
 }

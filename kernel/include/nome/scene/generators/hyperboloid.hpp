@@ -20,4 +20,19 @@ struct HyperboloidParams {
 };
 Piece hyperboloid(const HyperboloidParams& p);
 
+// The successor's (JIPCAD's) hyperboloid, `(segs a b c sheet theta)` as its Hyperboloid.cpp reads them:
+// rows at the whole heights z = -c..c; one sheet (sheet 0) at (a s cos t, b s sin t, z) with
+// s = sqrt(z^2 + 1), two sheets (any other sheet) with s = sqrt(z^2 - 1), the rows |z| >= 1 only (the
+// rows at z = +-1 are the apexes `top_apex`, `bottom_apex`). Column i at t = i theta pi / segs, i < segs:
+// theta 2 closes the ring, any other sweep stops a step short of theta pi, as JIPCAD's does. Faces turn
+// from column i to i+1, then up: normals away from the axis.
+struct SuccessorHyperboloidParams {
+  int segs = 6;
+  double a = 1, b = 1;
+  int rows = 1;  // c, whole rows above z = 0
+  bool is_two_sheets = false;
+  double theta = 2;  // in units of pi
+};
+Piece successor_hyperboloid(const SuccessorHyperboloidParams& p);
+
 }  // namespace nome::scene
