@@ -1,6 +1,7 @@
 #include "cli/pipeline_arguments.hpp"
 
 #include <algorithm>
+#include <iostream>
 #include <thread>
 
 #include "nome/error.hpp"
@@ -102,6 +103,11 @@ void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments
     if (stages.offset_distance && !args.has("--offset"))
       settings.offset_distance = std::max(settings.offset_distance, *stages.offset_distance);
   }
+  // After the levels are known: the successor's files weld before they subdivide.
+  bool is_welding = false;
+  for (const scene::Scene& s : scenes)
+    is_welding = scene::weld_before_subdividing(s.stage_settings(), settings) || is_welding;
+  if (is_welding && !args.has("--merge")) std::cerr << "nome: note: " << scene::welding_note << "\n";
 }
 
 }  // namespace nome::cli

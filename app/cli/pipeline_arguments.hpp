@@ -17,6 +17,7 @@ PipelineSettings pipeline_settings(const Arguments& args, Stage stage);
 
 // The scenes' stage blocks (`subdivision ... sd_level N`, `offset ... height H`) where the command line
 // gives no --subdiv or --offset of its own: the highest level and the largest distance of all scenes.
+// A scene in the successor's dialect that is subdivided is merged first, with a note unless --merge asks.
 // An OBJ file's OpenSubdiv options (`t interpolateboundary` unless --boundary is given, `t creasemethod`,
 // `t smoothtriangles`).
 void apply_obj_tags(const ObjSubdivisionTags& tags, const Arguments& args, PipelineSettings& settings);

@@ -198,6 +198,7 @@ void Window::apply_file_defaults() {
     settings.offset_distance = *stages.offset_distance;
     if (settings.stage < Stage::offset) settings.stage = Stage::offset;
   }
+  if (scene::weld_before_subdividing(stages, settings)) log_.info(scene::welding_note);
 }
 
 void Window::request_quit() {

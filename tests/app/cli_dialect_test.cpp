@@ -24,6 +24,24 @@ TEST_CASE("hello_cube: --merge makes one closed sphere, its subdivision block tw
   CHECK_THAT(slider.out, Catch::Contains("\"faces\": 24, \"chi\": 2"));
 }
 
+TEST_CASE("hello_cube: without --merge its subdivision welds first, as JIPCAD's, and says so", "[app]") {
+  NOME_NEEDS_SHARED_EXAMPLES("jipcad");
+  const std::string cube = nome::test::shared_examples_dir("jipcad") + "intro_files__hello_cube.nom";
+  const auto r = run_nome("info " + cube + " --json");
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("\"faces\": 96, \"chi\": 2, \"orientable\": true, \"borders\": 0"));
+  CHECK_THAT(r.out, Catch::Contains("\"components\": 1"));
+  CHECK_THAT(r.err,
+             Catch::Contains("nome: note: subdividing the merged mesh: the successor's dialect welds"));
+  // Unrefined, the six faces stay apart; the 2016 reading of the same file does not weld either.
+  const auto coarse = run_nome("info " + cube + " --subdiv 0 --json");
+  CHECK_THAT(coarse.out, Catch::Contains("\"vertices\": 24, \"edges\": 24, \"faces\": 6"));
+  CHECK_THAT(coarse.err, !Catch::Contains("welds"));
+  const auto report = run_nome("info " + cube + " --dialect 2016 --json");
+  CHECK_THAT(report.out, Catch::Contains("\"faces\": 96, \"chi\": 6"));
+  CHECK_THAT(report.err, !Catch::Contains("welds"));
+}
+
 TEST_CASE("the --dialect option overrides what the statements say, for every command that reads files",
           "[app]") {
   const std::string dir = nome::test::scratch_dir("dialect");

@@ -228,7 +228,8 @@ TEST_CASE("the viewer opens a file at the stage its subdivision block asks for",
                             "intro_files__hello_cube.nom --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
-  // JIPCAD's hello cube: six faces merged into a cube, its block's level 2.
+  // JIPCAD's hello cube: six faces merged into a cube, its block's level 2; the log says why it is merged.
+  CHECK_THAT(r.err, Catch::Contains("subdividing the merged mesh: the successor's dialect welds"));
   const TopologyReport shown = topology_report(build_mesh(read_polygons(dir + "/shown.obj")));
   CHECK(shown.faces == 96);
   CHECK(shown.borders == 0);

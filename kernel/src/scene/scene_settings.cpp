@@ -31,7 +31,14 @@ StageSettings Scene::stage_settings() const {
     if (stage.boundary) s.boundary = parse_boundary_mode(stage.boundary->text);
   }
   for (const Name& mode : ast_.boundary_modes) s.boundary = parse_boundary_mode(mode.text);
+  s.welds_before_subdividing = ast_.dialect.dialect == Dialect::jipcad;
   return s;
+}
+
+bool weld_before_subdividing(const StageSettings& stages, PipelineSettings& settings) {
+  if (!stages.welds_before_subdividing || settings.levels_before() == 0) return false;
+  settings.should_merge = true;
+  return true;
 }
 
 RenderDefaults Scene::render_defaults() const {

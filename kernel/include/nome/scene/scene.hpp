@@ -12,6 +12,7 @@
 
 #include "nome/mesh/named_sharp_edge.hpp"
 #include "nome/ops/boundary_mode.hpp"
+#include "nome/ops/pipeline_settings.hpp"
 #include "nome/scene/ast.hpp"
 #include "nome/scene/piece.hpp"
 
@@ -43,7 +44,16 @@ struct StageSettings {
   std::optional<double> offset_distance;
   std::optional<BoundaryMode>
       boundary;  // `sd_boundary MODE` in a subdivision block, or `boundary MODE endboundary`
+  // The successor's dialect: coincident vertices are welded before subdividing, as JIPCAD's merger does on
+  // every subdivision (the 2016 dialect merges only when asked).
+  bool welds_before_subdividing = false;
 };
+
+// Turns the merge on where the scene welds before subdividing and the settings subdivide; true when the
+// scene's rule applied (the CLI and the viewer then say so with welding_note).
+bool weld_before_subdividing(const StageSettings& stages, PipelineSettings& settings);
+inline constexpr const char* welding_note =
+    "subdividing the merged mesh: the successor's dialect welds coincident vertices first, as JIPCAD does";
 
 // The file's render statements as picture defaults, evaluated with the current slider values; `nome
 // render` and the viewer use them unless their own options say otherwise.

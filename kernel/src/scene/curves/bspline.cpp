@@ -61,15 +61,32 @@ SampledCurve sample_bspline(DefinitionContext& context, Index decl) {
     curve.points.push_back(p);
   }
   // A control point's own cross-section and reversal land where it weighs most: its basis peaks at i + K/2.
+  const auto peak = [&](int i) { return std::lround((i + order / 2.0 - (order - 1)) / span * segs); };
   for (int i = 0; i < count; ++i) {
     const CurvePoint& cp = cps[std::size_t(i)];
     if (!cp.section && !cp.is_reversing) continue;
-    const long s = std::lround((i + order / 2.0 - (order - 1)) / span * segs);
+    const long s = peak(i);
     if (s < 0 || s > segs) continue;
     if (cp.section) curve.points[std::size_t(s)].section = cp.section;
     curve.points[std::size_t(s)].is_reversing = curve.points[std::size_t(s)].is_reversing != cp.is_reversing;
   }
   close_if_repeated(curve);
+  // An open curve's end points peak before its first sample or after its last: as in JIPCAD, their
+  // cross-sections go to the end samples (a sweepmorph runs from the first section to the last), the
+  // point nearest the curve winning and one that peaks on the end sample itself winning over both. A
+  // closed curve's repeated points bring theirs in already.
+  if (!c.is_closed && !curve.is_closed) {
+    const auto nearest = [&](int from, int step, auto is_outside) {
+      const Name* section = nullptr;
+      for (int i = from; i >= 0 && i < count && is_outside(peak(i)); i += step)
+        if (cps[std::size_t(i)].section) section = cps[std::size_t(i)].section;
+      return section;
+    };
+    const Name* first = nearest(0, 1, [](long s) { return s < 0; });
+    const Name* last = nearest(count - 1, -1, [&](long s) { return s > segs; });
+    if (first && !curve.points.front().section) curve.points.front().section = first;
+    if (last && !curve.points.back().section) curve.points.back().section = last;
+  }
   return curve;
 }
 
