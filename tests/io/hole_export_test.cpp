@@ -19,6 +19,7 @@
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/subdivide.hpp"
+#include "support/opensubdiv_refiner.hpp"
 #include "support/scratch_files.hpp"
 #include "support/shared_examples.hpp"
 
@@ -129,42 +130,7 @@ struct HolePoint {
 // faces as vertex sets.
 std::pair<std::vector<Vec3>, std::multiset<std::set<Index>>> hole_osd_refine(const PolygonSoup& soup,
                                                                              BoundaryMode mode, int levels) {
-  std::vector<int> sizes, vertices(soup.face_vertices.begin(), soup.face_vertices.end());
-  for (Index f = 0; f < soup.num_faces(); ++f)
-    sizes.push_back(int(soup.face_offsets[f + 1] - soup.face_offsets[f]));
-  std::vector<int> holes(soup.hole_faces.begin(), soup.hole_faces.end());
-  HoleFar::TopologyDescriptor d;
-  d.numVertices = int(soup.num_vertices());
-  d.numFaces = int(soup.num_faces());
-  d.numVertsPerFace = sizes.data();
-  d.vertIndicesPerFace = vertices.data();
-  d.numHoles = int(holes.size());
-  d.holeIndices = holes.data();
-  std::vector<int> crease_pairs, corners;
-  std::vector<float> crease_weights, corner_weights;
-  for (std::size_t i = 0; i < soup.sharp_edges.size(); ++i) {
-    crease_pairs.push_back(int(soup.sharp_edges[i].first));
-    crease_pairs.push_back(int(soup.sharp_edges[i].second));
-    crease_weights.push_back(soup.sharp_edge_weights.empty() ? infinite_sharpness
-                                                             : soup.sharp_edge_weights[i]);
-  }
-  for (const auto& [v, w] : soup.sharp_vertices) corners.push_back(int(v)), corner_weights.push_back(w);
-  d.numCreases = int(crease_weights.size());
-  d.creaseVertexIndexPairs = crease_pairs.data();
-  d.creaseWeights = crease_weights.data();
-  d.numCorners = int(corners.size());
-  d.cornerVertexIndices = corners.data();
-  d.cornerWeights = corner_weights.data();
-  using Sdc = OpenSubdiv::Sdc::Options;
-  Sdc options;
-  options.SetVtxBoundaryInterpolation(mode == BoundaryMode::edge_and_corner
-                                          ? Sdc::VTX_BOUNDARY_EDGE_AND_CORNER
-                                      : mode == BoundaryMode::edge_only ? Sdc::VTX_BOUNDARY_EDGE_ONLY
-                                                                        : Sdc::VTX_BOUNDARY_NONE);
-  using Factory = HoleFar::TopologyRefinerFactory<HoleFar::TopologyDescriptor>;
-  std::unique_ptr<HoleFar::TopologyRefiner> refiner(
-      Factory::Create(d, Factory::Options(OpenSubdiv::Sdc::SCHEME_CATMARK, options)));
-  refiner->RefineUniform(HoleFar::TopologyRefiner::UniformOptions(levels));
+  const auto refiner = test::opensubdiv_refiner(soup, mode, CreaseOptions{}, levels, false);
   std::vector<HolePoint> in;
   for (const Vec3& p : soup.positions) in.push_back({p});
   const HoleFar::PrimvarRefinerReal<double> primvars(*refiner);

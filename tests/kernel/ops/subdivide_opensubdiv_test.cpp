@@ -17,6 +17,7 @@
 #include "nome/io/obj.hpp"
 #include "nome/io/obj_tags.hpp"
 #include "nome/ops/subdivide.hpp"
+#include "support/opensubdiv_refiner.hpp"
 #include "support/shared_examples.hpp"
 #include "support/skip.hpp"
 
@@ -50,56 +51,8 @@ struct OsdLevels {
   std::vector<Index> kept_faces;          // per level: faces that are not holes
 };
 
-Sdc::Options::VtxBoundaryInterpolation osd_mode(BoundaryMode mode) {
-  switch (mode) {
-    case BoundaryMode::none:
-      return Sdc::Options::VTX_BOUNDARY_NONE;
-    case BoundaryMode::edge_only:
-      return Sdc::Options::VTX_BOUNDARY_EDGE_ONLY;
-    case BoundaryMode::edge_and_corner:
-      return Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER;
-  }
-  return Sdc::Options::VTX_BOUNDARY_EDGE_ONLY;
-}
-
 OsdLevels osd_refine(const PolygonSoup& soup, BoundaryMode mode, const CreaseOptions& creases = {}) {
-  std::vector<int> sizes, vertices(soup.face_vertices.begin(), soup.face_vertices.end());
-  for (Index f = 0; f < soup.num_faces(); ++f)
-    sizes.push_back(int(soup.face_offsets[f + 1] - soup.face_offsets[f]));
-  Far::TopologyDescriptor d;
-  d.numVertices = int(soup.num_vertices());
-  d.numFaces = int(soup.num_faces());
-  d.numVertsPerFace = sizes.data();
-  d.vertIndicesPerFace = vertices.data();
-  std::vector<int> crease_pairs, corners, holes(soup.hole_faces.begin(), soup.hole_faces.end());
-  std::vector<float> crease_weights, corner_weights;
-  for (size_t i = 0; i < soup.sharp_edges.size(); ++i) {
-    crease_pairs.push_back(int(soup.sharp_edges[i].first));
-    crease_pairs.push_back(int(soup.sharp_edges[i].second));
-    crease_weights.push_back(soup.sharp_edge_weights.empty() ? infinite_sharpness
-                                                             : soup.sharp_edge_weights[i]);
-  }
-  for (const auto& [v, w] : soup.sharp_vertices) corners.push_back(int(v)), corner_weights.push_back(w);
-  d.numCreases = int(crease_weights.size());
-  d.creaseVertexIndexPairs = crease_pairs.data();
-  d.creaseWeights = crease_weights.data();
-  d.numCorners = int(corners.size());
-  d.cornerVertexIndices = corners.data();
-  d.cornerWeights = corner_weights.data();
-  d.numHoles = int(holes.size());
-  d.holeIndices = holes.data();
-  Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(osd_mode(mode));
-  options.SetCreasingMethod(creases.method == CreaseMethod::chaikin ? Sdc::Options::CREASE_CHAIKIN
-                                                                    : Sdc::Options::CREASE_UNIFORM);
-  options.SetTriangleSubdivision(creases.smooth_triangles ? Sdc::Options::TRI_SUB_SMOOTH
-                                                          : Sdc::Options::TRI_SUB_CATMARK);
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  std::unique_ptr<Far::TopologyRefiner> refiner(
-      Factory::Create(d, Factory::Options(Sdc::SCHEME_CATMARK, options)));
-  Far::TopologyRefiner::UniformOptions uniform(max_level);
-  uniform.orderVerticesFromFacesFirst = true;
-  refiner->RefineUniform(uniform);
+  const auto refiner = test::opensubdiv_refiner(soup, mode, creases, max_level, true);
   OsdLevels out;
   out.positions.resize(max_level + 1);
   for (const Vec3& p : soup.positions) out.positions[0].push_back({p});
