@@ -3,6 +3,9 @@
 layout(lines) in;
 layout(triangle_strip, max_vertices = 4) out;
 
+in vec4 segment_color[];
+flat out vec4 line_color;
+
 uniform vec2 viewport_size;
 uniform float width;
 
@@ -18,13 +21,15 @@ void main() {
   vec2 across = vec2(-along.y, along.x);
   vec2 offset_side = 0.5 * width * across / half_viewport;
   vec2 offset_cap = 0.5 * width * along / half_viewport;
-  gl_Position = vec4(a.xy + (-offset_cap + offset_side) * a.w, a.zw);
-  EmitVertex();
-  gl_Position = vec4(a.xy + (-offset_cap - offset_side) * a.w, a.zw);
-  EmitVertex();
-  gl_Position = vec4(b.xy + (offset_cap + offset_side) * b.w, b.zw);
-  EmitVertex();
-  gl_Position = vec4(b.xy + (offset_cap - offset_side) * b.w, b.zw);
-  EmitVertex();
+  // Outputs are undefined after each EmitVertex: the colour is written with every corner.
+  vec4 corners[4] = vec4[4](vec4(a.xy + (-offset_cap + offset_side) * a.w, a.zw),
+                            vec4(a.xy + (-offset_cap - offset_side) * a.w, a.zw),
+                            vec4(b.xy + (offset_cap + offset_side) * b.w, b.zw),
+                            vec4(b.xy + (offset_cap - offset_side) * b.w, b.zw));
+  for (int i = 0; i < 4; ++i) {
+    gl_Position = corners[i];
+    line_color = segment_color[0];
+    EmitVertex();
+  }
   EndPrimitive();
 }

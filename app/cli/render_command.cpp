@@ -12,6 +12,7 @@
 #include "nome/error.hpp"
 #include "nome/scene/scene_rim_lines.hpp"
 #include "render/offscreen_context.hpp"
+#include "render/scene_camera.hpp"
 #include "render/section_plane.hpp"
 #include "render/snapshot.hpp"
 
@@ -41,6 +42,7 @@ void apply_render_defaults(const std::vector<scene::Scene>& scenes, const Argume
       display.back_faces = render::BackFacePolicy::different;
       display.back_color = *d.back_color;
     }
+    if (!d.lights.empty() && !args.has("--viewer-lights")) display.lights = render::scene_lights(d.lights);
   }
 }
 
@@ -79,7 +81,16 @@ render::SnapshotOptions snapshot_options(const Arguments& args) {
   options.views = render::views_around(view, args.int_value("--views", 1, 1, 16));
   render::DisplaySettings& display = options.display;
   display.draws_wireframe = args.has("--wire");
-  display.shading = args.has("--flat") ? render::Shading::flat : render::Shading::smooth;
+  if (args.has("--flat") && args.has("--smooth")) throw UsageError("--flat and --smooth exclude each other");
+  display.shading = args.has("--flat")     ? render::Shading::flat
+                    : args.has("--smooth") ? render::Shading::smooth
+                                           : render::Shading::automatic;
+  if (const auto palette = args.value("--palette")) {
+    if (*palette == "jipcad")
+      render::use_jipcad_palette(display);
+    else if (*palette != "nome")
+      throw UsageError("--palette expects nome or jipcad, found '" + *palette + "'");
+  }
   display.draws_mobius_edges = args.has("--mobius-edges");
   display.draws_borders = args.has("--borders");
   if (const auto back = args.value("--backface-color")) {
@@ -109,12 +120,16 @@ std::vector<OptionSpec> render_options() {
       {"--stage", "", "STAGE",
        "show the pipeline up to scene|merged|subdivided|offset|subdivided-offset (default: all of it)"},
       {"--wire", "", "", "draw the real polygon edges over the faces"},
-      {"--flat", "", "", "flat shading (one normal per face)"},
+      {"--flat", "", "", "flat shading (one normal per face); by default only unsubdivided results are flat"},
+      {"--smooth", "", "", "smooth shading (vertex normals) also where nothing was subdivided"},
       {"--mobius-edges", "", "", "highlight the Möbius edges (where the faces' orientations disagree)"},
       {"--borders", "", "", "highlight the border edges"},
       {"--print-check", "", "",
        "draw the surface before the offset marked by the print check: crossings red, fold-overs magenta, "
        "thin places orange"},
+      {"--palette", "", "NAME",
+       "default colours: nome (gold and blue) or jipcad (JIPCAD's orange and dark grey)"},
+      {"--viewer-lights", "", "", "light with the viewer's own lights even where the file places lights"},
       {"--color", "", "COLOR", "front face colour (#rrggbb, R,G,B in 0..1, or a name)"},
       {"--backface-color", "", "COLOR", "back face colour; 'same' as the front, 'cull' to hide back faces"},
       {"--background", "", "COLOR", "background colour (default white)"},
@@ -215,6 +230,9 @@ int render_command(const std::vector<std::string>& args) {
                         : loaded.pipeline.take_result();
   bar.finish();
   apply_render_defaults(loaded.scenes, parsed, options.display);
+  for (auto it = loaded.scenes.rbegin(); it != loaded.scenes.rend(); ++it)
+    options.lens = render::scene_lens(it->render_defaults(), options.lens);
+  options.display.shading = render::shown_shading(options.display.shading, loaded.settings.is_smoothing());
   for (const scene::Scene& scene : loaded.scenes)
     render::add_rim_segments(scene::scene_rim_lines(scene), options.rims);
   apply_section_argument(parsed, mesh, loaded.settings, options.display);

@@ -42,12 +42,14 @@ void Camera::fit(std::span<const glm::dvec3> points, double aspect, double margi
   BoundingBox across;
   for (const glm::dvec3& p : points) across.add(glm::transpose(axes) * (p - box.center()));
   target = box.center() + axes * glm::dvec3(across.center().x, across.center().y, 0.0);
-  const double tan_y = std::tan(radians(fov_y_degrees) / 2.0) * (1.0 - margin);
+  const double tan_y = std::tan(radians(lens.fov_y_degrees) / 2.0) * (1.0 - margin);
   const double tan_x = tan_y * aspect;
   double needed = 0.0;
   for (const glm::dvec3& point : points) {
     const glm::dvec3 p = glm::transpose(axes) * (point - target);
-    needed = std::max(needed, p.z + std::max(std::abs(p.x) / tan_x, std::abs(p.y) / tan_y));
+    // Orthographic, depth does not shrink a point: only its distance across the view counts.
+    needed = std::max(
+        needed, (lens.is_orthographic ? 0.0 : p.z) + std::max(std::abs(p.x) / tan_x, std::abs(p.y) / tan_y));
   }
   const double size = glm::length(box.max - box.min);
   distance = std::max(needed, 1e-6 * std::max(size, 1.0));
@@ -64,7 +66,7 @@ void Camera::arcball(const glm::dvec2& from, const glm::dvec2& to, double aspect
 }
 
 void Camera::pan(const glm::dvec2& from, const glm::dvec2& to, double aspect) {
-  const double half_height = distance * std::tan(radians(fov_y_degrees) / 2.0);
+  const double half_height = distance * std::tan(radians(lens.fov_y_degrees) / 2.0);
   const glm::dvec2 delta = to - from;
   target -= orientation * glm::dvec3(delta.x * half_height * aspect, delta.y * half_height, 0.0);
 }
@@ -81,6 +83,8 @@ void Camera::depth_range(double& near_plane, double& far_plane) const {
   const double depth = glm::length(eye() - (scene_.is_empty() ? target : scene_.center()));
   near_plane = std::max(depth - 1.05 * radius, 1e-3 * distance);
   far_plane = std::max(depth + 1.05 * radius, near_plane * 2.0);
+  // Orthographic, the eye may sit inside the scene: the near plane may lie behind it.
+  if (lens.is_orthographic) near_plane = depth - 1.05 * radius;
 }
 
 glm::mat4 Camera::view_matrix() const {
@@ -91,7 +95,12 @@ glm::mat4 Camera::view_matrix() const {
 glm::mat4 Camera::projection_matrix(double aspect) const {
   double near_plane = 0.0, far_plane = 0.0;
   depth_range(near_plane, far_plane);
-  return glm::mat4(glm::perspective(radians(fov_y_degrees), aspect, near_plane, far_plane));
+  if (lens.is_orthographic) {
+    const double half_height = distance * std::tan(radians(lens.fov_y_degrees) / 2.0);
+    return glm::mat4(glm::ortho(-half_height * aspect, half_height * aspect, -half_height, half_height,
+                                near_plane, far_plane));
+  }
+  return glm::mat4(glm::perspective(radians(lens.fov_y_degrees), aspect, near_plane, far_plane));
 }
 
 ScreenProjection Camera::screen_projection(const glm::dvec2& viewport, const glm::dvec2& origin) const {

@@ -12,6 +12,13 @@
 
 namespace nome::render {
 
+// How a camera projects: in perspective with a vertical field of view, or orthographically (the field of
+// view then only sets how much the distance shows: a half height of distance * tan(fov / 2)).
+struct Lens {
+  double fov_y_degrees = 30.0;
+  bool is_orthographic = false;
+};
+
 // An orbit camera shared by `nome render` and the viewer: the eye looks at `target` from `distance`
 // away along the camera's +z axis; `orientation` turns camera axes into world axes. The world is
 // Y-up, as the report's viewer. Screen positions are normalized device coordinates in [-1, 1]^2.
@@ -20,7 +27,7 @@ class Camera {
   glm::dvec3 target{0.0};
   double distance = 4.0;
   glm::dquat orientation{1.0, 0.0, 0.0, 0.0};
-  double fov_y_degrees = 30.0;
+  Lens lens;
 
   // Looks from azimuth AZ (degrees about +Y, 0 = from +Z, 90 = from +X) and elevation EL (degrees
   // above the XZ plane), with no roll.

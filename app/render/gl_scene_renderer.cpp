@@ -27,12 +27,12 @@ class GlSceneRenderer final : public SceneRenderer {
     if (buffers_) buffers_->set_selected_faces(faces);
   }
   void set_markers(std::span<const CubeMarker> markers) override { cubes_.set(markers); }
-  void set_lines(Overlay overlay, std::span<const glm::vec3> points,
-                 std::span<const std::uint32_t> segments) override {
+  void set_lines(Overlay overlay, std::span<const glm::vec3> points, std::span<const std::uint32_t> segments,
+                 std::span<const glm::vec4> colors) override {
     (overlay == Overlay::rim     ? rim_lines_
      : overlay == Overlay::sharp ? sharp_lines_
                                  : selection_lines_)
-        .set(points, segments);
+        .set(points, segments, colors);
   }
 
   void draw(const Camera& camera, glm::ivec2 framebuffer_size, const PixelRect& viewport,

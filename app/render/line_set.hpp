@@ -4,6 +4,7 @@
 #include <span>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "render/gl.hpp"
 
@@ -18,8 +19,11 @@ class LineSet {
   LineSet(const LineSet&) = delete;
   LineSet& operator=(const LineSet&) = delete;
 
-  // Replaces the content: `segments` holds two indices into `points` per segment.
-  void set(std::span<const glm::vec3> points, std::span<const std::uint32_t> segments);
+  // Replaces the content: `segments` holds two indices into `points` per segment. `colors`, empty or one
+  // per point, gives a segment the colour of its first point where its alpha is nonzero; the others take
+  // the colour they are drawn in.
+  void set(std::span<const glm::vec3> points, std::span<const std::uint32_t> segments,
+           std::span<const glm::vec4> colors = {});
   // Convenience: consecutive points joined, closing the loop when asked.
   void set_polyline(std::span<const glm::vec3> points, bool is_closed);
 
@@ -27,7 +31,7 @@ class LineSet {
   GLsizei index_count() const { return index_count_; }
 
  private:
-  GLuint vao_ = 0, points_ = 0, indices_ = 0;
+  GLuint vao_ = 0, points_ = 0, colors_ = 0, indices_ = 0;
   GLsizei index_count_ = 0;
 };
 

@@ -180,7 +180,8 @@ std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh) {
   if (colors.empty()) return out;
   out.assign(mesh.num_faces(), {0, 0, 0, 0});
   for (Index f = 0; f < std::min<Index>(Index(colors.size()), mesh.num_faces()); ++f)
-    out[f] = {to_byte(colors[f].r), to_byte(colors[f].g), to_byte(colors[f].b), 255};
+    if (colors[f] != no_face_color)
+      out[f] = {to_byte(colors[f].r), to_byte(colors[f].g), to_byte(colors[f].b), 255};
   return out;
 }
 

@@ -11,7 +11,8 @@ class NullSceneRenderer final : public SceneRenderer {
   void set_face_colors(std::span<const std::array<std::uint8_t, 4>>) override {}
   void set_selected_faces(std::span<const Index>) override {}
   void set_markers(std::span<const CubeMarker>) override {}
-  void set_lines(Overlay, std::span<const glm::vec3>, std::span<const std::uint32_t>) override {}
+  void set_lines(Overlay, std::span<const glm::vec3>, std::span<const std::uint32_t>,
+                 std::span<const glm::vec4>) override {}
   void draw(const Camera&, glm::ivec2, const PixelRect&, const DisplaySettings&) override {}
   Image read_pixels(glm::ivec2) const override {
     throw Error("screenshot: the null renderer draws no picture");

@@ -3,19 +3,25 @@
 #include <array>
 #include <string>
 
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
 #include "render/shader_program.hpp"
 
 namespace nome::render {
 namespace {
 
 // The features of mesh.frag, one bit each in a variant's number.
-constexpr std::array<const char*, 5> mesh_features = {"FLAT_NORMALS", "DIFFERENT_BACK_COLOR", "FACE_COLORS",
-                                                      "SELECTION", "FILLS_SECTION"};
+constexpr std::array<const char*, 6> mesh_features = {"FLAT_NORMALS", "DIFFERENT_BACK_COLOR", "FACE_COLORS",
+                                                      "SELECTION",    "FILLS_SECTION",        "SCENE_LIGHTS"};
 
 unsigned mesh_variant(const MeshBuffers& mesh, const DisplaySettings& settings) {
-  const bool flags[] = {settings.shading == Shading::flat, settings.back_faces == BackFacePolicy::different,
-                        settings.uses_face_colors && mesh.has_face_colors(), mesh.has_selection(),
-                        settings.fills_section && settings.section_plane != glm::vec4(0.0f)};
+  const bool flags[] = {settings.shading == Shading::flat,
+                        settings.back_faces == BackFacePolicy::different,
+                        settings.uses_face_colors && mesh.has_face_colors(),
+                        mesh.has_selection(),
+                        settings.fills_section && settings.section_plane != glm::vec4(0.0f),
+                        settings.lights.is_used};
   unsigned variant = 0;
   for (std::size_t i = 0; i < mesh_features.size(); ++i) variant |= flags[i] ? 1u << i : 0u;
   return variant;
@@ -104,6 +110,17 @@ void Renderer::draw_mesh(const MeshBuffers& mesh, const Frame& frame, const Disp
     p.set("opacity", 1.0f);
     p.set("section_plane", settings.section_plane);
     p.set("section_color", settings.section_color);
+    if (settings.lights.is_used) {
+      p.set("scene_ambient", settings.lights.ambient);
+      p.set("scene_light_count", settings.lights.count);
+      const glm::mat3 to_view(frame.view);
+      for (int i = 0; i < settings.lights.count; ++i) {
+        const std::string at = "[" + std::to_string(i) + "]";
+        p.set(("scene_light_directions" + at).c_str(),
+              glm::normalize(to_view * settings.lights.directions[std::size_t(i)]));
+        p.set(("scene_light_colors" + at).c_str(), settings.lights.colors[std::size_t(i)]);
+      }
+    }
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_BUFFER, mesh.face_color_texture());
     p.set("face_colors", 0);
@@ -162,6 +179,8 @@ void Renderer::draw_segments(GLuint vao, SegmentRange range, const Frame& frame,
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   }
   glBindVertexArray(vao);
+  // Sets without their own colours read this constant for the colour attribute: the uniform wins.
+  glVertexAttrib4f(1, 0.0f, 0.0f, 0.0f, 0.0f);
   glDrawElements(GL_LINES, GLsizei(range.count * 2), GL_UNSIGNED_INT,
                  reinterpret_cast<void*>(std::size_t(range.first) * 2 * sizeof(std::uint32_t)));
   glBindVertexArray(0);

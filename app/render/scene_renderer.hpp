@@ -41,9 +41,10 @@ class SceneRenderer {
   virtual void set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) = 0;
   virtual void set_selected_faces(std::span<const Index> faces) = 0;
   virtual void set_markers(std::span<const CubeMarker> markers) = 0;
-  // `segments` holds two indices into `points` per segment.
+  // `segments` holds two indices into `points` per segment; `colors`, empty or one per point, as
+  // LineSet::set takes them.
   virtual void set_lines(Overlay overlay, std::span<const glm::vec3> points,
-                         std::span<const std::uint32_t> segments) = 0;
+                         std::span<const std::uint32_t> segments, std::span<const glm::vec4> colors = {}) = 0;
 
   // Clears the framebuffer and draws the mesh, the markers and the overlays into the viewport.
   virtual void draw(const Camera& camera, glm::ivec2 framebuffer_size, const PixelRect& viewport,

@@ -27,7 +27,7 @@ Image render_snapshot(const Mesh& mesh, const SnapshotOptions& options) {
   const Renderer renderer;
   const MeshBuffers buffers(build_display_data(mesh));
   LineSet rims;
-  rims.set(options.rims.points, options.rims.segments);
+  rims.set(options.rims.points, options.rims.segments, options.rims.colors);
   const std::vector<Vec3> framed = framed_points(mesh, options);
   const Framebuffer framebuffer(options.width, options.height, options.samples);
   framebuffer.bind();
@@ -42,6 +42,7 @@ Image render_snapshot(const Mesh& mesh, const SnapshotOptions& options) {
   renderer.begin(Renderer::Frame{{0, 0}, {options.width, options.height}}, background);
   for (int i = 0; i < int(options.views.size()); ++i) {
     Camera camera;
+    camera.lens = options.lens;
     camera.set_view(options.views[i].azimuth, options.views[i].elevation);
     camera.fit(framed, double(tile.x) / double(tile.y));
     if (options.target) camera.target = *options.target;

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "nome/mesh/mesh.hpp"
+#include "render/camera.hpp"
 #include "render/display_settings.hpp"
 #include "render/image.hpp"
 #include "render/rim_segments.hpp"
@@ -29,6 +30,7 @@ struct SnapshotOptions {
   DisplaySettings display;
   bool is_transparent = false;  // background alpha 0 (the PNG keeps an alpha channel)
   int samples = 4;              // multisampling
+  Lens lens;                    // perspective (the default) or orthographic, as a scene's camera asks
   // The scene's polylines, drawn over the mesh in display.rim_color as the viewer draws them.
   LineSegments rims;
 };

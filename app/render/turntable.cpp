@@ -28,6 +28,7 @@ std::vector<Image> render_turntable(const Mesh& mesh, const SnapshotOptions& opt
   double distance = 0.0;
   for (const ViewAngle& view : views) {
     Camera camera;
+    camera.lens = options.lens;
     camera.set_view(view.azimuth, view.elevation);
     camera.fit(framed, aspect);
     distance = std::max(distance, camera.distance + glm::length(camera.target - centre));
@@ -37,13 +38,14 @@ std::vector<Image> render_turntable(const Mesh& mesh, const SnapshotOptions& opt
   const Renderer renderer;
   const MeshBuffers buffers(build_display_data(mesh));
   LineSet rims;
-  rims.set(options.rims.points, options.rims.segments);
+  rims.set(options.rims.points, options.rims.segments, options.rims.colors);
   const Framebuffer framebuffer(options.width, options.height, options.samples);
   framebuffer.bind();
   const glm::vec4 background = options.is_transparent ? glm::vec4(0.0f) : options.display.background;
   std::vector<Image> out;
   for (const ViewAngle& view : views) {
     Camera camera;
+    camera.lens = options.lens;
     camera.set_view(view.azimuth, view.elevation);
     camera.target = centre;
     camera.distance = distance;

@@ -30,7 +30,7 @@ const ActionInfo table[] = {
     {zoom_in, "zoom-in", GLFW_KEY_I, none, "zoom in"},
     {zoom_out, "zoom-out", GLFW_KEY_O, none, "zoom out"},
     {toggle_faces, "wireframe", GLFW_KEY_W, none, "wire mode / polygon mode"},
-    {toggle_shading, "shading", GLFW_KEY_S, none, "smooth / flat shading"},
+    {toggle_shading, "shading", GLFW_KEY_S, none, "shading: automatic / smooth / flat"},
     {toggle_culling, "culling", GLFW_KEY_X, none, "back-face culling on / off"},
     {frame_all, "frame", GLFW_KEY_F, none, "frame everything"},
     {reset_view, "reset-view", GLFW_KEY_H, control, "reset the view"},

@@ -37,9 +37,17 @@ void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& disp
       !display.draws_faces)
     display.draws_wireframe = true;
   if (ImGui::MenuItem("Wireframe overlay", nullptr, &is_wire)) display.draws_wireframe = is_wire;
-  bool is_flat = display.shading == render::Shading::flat;
-  if (ImGui::MenuItem("Flat shading", shortcut(Action::toggle_shading).c_str(), &is_flat))
-    display.shading = is_flat ? render::Shading::flat : render::Shading::smooth;
+  if (ImGui::BeginMenu("Shading")) {
+    if (ImGui::MenuItem("Automatic: flat until subdivided", nullptr,
+                        display.shading == render::Shading::automatic))
+      display.shading = render::Shading::automatic;
+    if (ImGui::MenuItem("Smooth", nullptr, display.shading == render::Shading::smooth))
+      display.shading = render::Shading::smooth;
+    if (ImGui::MenuItem("Flat", nullptr, display.shading == render::Shading::flat))
+      display.shading = render::Shading::flat;
+    ImGui::TextDisabled("%s cycles them", shortcut(Action::toggle_shading).c_str());
+    ImGui::EndMenu();
+  }
   bool is_culled = display.back_faces == render::BackFacePolicy::cull;
   if (ImGui::MenuItem("Back-face culling", shortcut(Action::toggle_culling).c_str(), &is_culled))
     display.back_faces = is_culled ? render::BackFacePolicy::cull : render::BackFacePolicy::different;
@@ -49,6 +57,17 @@ void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& disp
   ImGui::MenuItem("Möbius edges", nullptr, &display.draws_mobius_edges);
   ImGui::MenuItem("Borders", nullptr, &display.draws_borders);
   ImGui::MenuItem("Instance colours", nullptr, &display.uses_face_colors);
+  ImGui::MenuItem("The scene's lights", nullptr, &display.uses_scene_lights);
+  if (ImGui::BeginMenu("Palette")) {
+    const render::DisplaySettings plain;
+    if (ImGui::MenuItem("Nome: gold front, blue back")) {
+      display.front_color = plain.front_color;
+      display.back_color = plain.back_color;
+      display.back_faces = render::BackFacePolicy::different;
+    }
+    if (ImGui::MenuItem("JIPCAD: orange front, dark grey back")) render::use_jipcad_palette(display);
+    ImGui::EndMenu();
+  }
   ImGui::Separator();
   action_item(actions, "Frame all", Action::frame_all);
   action_item(actions, "Section plane", Action::toggle_section);

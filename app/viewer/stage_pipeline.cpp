@@ -43,6 +43,7 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
   const auto start = std::chrono::steady_clock::now();
   StageResult result;
   result.stage = settings.stage;
+  result.is_smoothed = settings.is_smoothing();
   pipeline_.set_input(input);
   const Mesh& mesh = pipeline_.run(settings);
   result.warnings = pipeline_.warnings();

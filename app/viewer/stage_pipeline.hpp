@@ -27,6 +27,7 @@ PipelineSettings initial_settings();
 // picking BVH to the first pick (a slider drag shows many meshes and picks on none).
 struct StageResult {
   Stage stage = Stage::scene;  // which stage the mesh is
+  bool is_smoothed = false;    // a subdivision surface (automatic shading draws it smooth)
   std::shared_ptr<const Mesh> mesh;
   render::MeshDisplayData display;
   std::shared_ptr<const BorderLookup> borders;

@@ -44,6 +44,8 @@ class ViewController {
   void zoom_at(double factor, glm::dvec2 pixel, const ScreenRect& viewport);
   // Looks from these angles (degrees); frame() then fits the picture.
   void set_angles(double azimuth, double elevation) { camera_.set_view(azimuth, elevation); }
+  // Perspective or orthographic, as the file's camera asks; frame() then fits the picture.
+  void set_lens(const render::Lens& lens) { camera_.lens = lens; }
   // Turns the view about the world's vertical axis through the target (the turntable).
   void turn(double radians) {
     camera_.orientation = glm::angleAxis(radians, glm::dvec3(0.0, 1.0, 0.0)) * camera_.orientation;

@@ -10,6 +10,7 @@
 #include "render/bounding_box.hpp"
 #include "render/image.hpp"
 #include "render/rim_segments.hpp"
+#include "render/scene_camera.hpp"
 
 namespace nome::viewer {
 
@@ -71,7 +72,11 @@ bool Window::frame(const InputFrame& input) {
   arrange_layout();
   apply_section(section_, view_.camera(), 0.5 * (shown_low_ + shown_high_),
                 stage_.shown() && stage_.shown()->stage >= Stage::offset, display_);
-  renderer_.draw(view_.camera(), platform_.framebuffer_size(), viewport_pixels(), display_);
+  render::DisplaySettings shown_display = display_;
+  shown_display.shading =
+      render::shown_shading(display_.shading, stage_.shown() && stage_.shown()->is_smoothed);
+  shown_display.lights = display_.uses_scene_lights ? scene_lights_ : render::SceneLights{};
+  renderer_.draw(view_.camera(), platform_.framebuffer_size(), viewport_pixels(), shown_display);
   draw_panels();
   draw_prompts();
   record_view_state();
@@ -177,9 +182,11 @@ void Window::apply_file_defaults() {
   display_.background = plain.background;
   display_.front_color = plain.front_color;
   display_.back_color = plain.back_color;
+  view_.set_lens({});
   const scene::Scene* scene = sessions_.scene();
   if (!scene) return;
   const scene::RenderDefaults colors = scene->render_defaults();
+  view_.set_lens(render::scene_lens(colors));
   if (colors.background) display_.background = glm::vec4(*colors.background, 1.0f);
   if (colors.front_color) display_.front_color = *colors.front_color;
   if (colors.back_color) {
@@ -241,8 +248,11 @@ void Window::answer_recovery(bool restore) {
 void Window::update_stage() {
   const Session* session = sessions_.session();
   if (!session) return;
-  if (stage_.request(*session))
+  if (stage_.request(*session)) {
     show_rim_lines(session->scene() ? scene::scene_rim_lines(*session->scene()) : RimLines{});
+    scene_lights_ = session->scene() ? render::scene_lights(session->scene()->render_defaults().lights)
+                                     : render::SceneLights{};
+  }
   try {
     if (auto result = stage_.take_for_frame()) show_result(std::move(*result));
   } catch (const std::exception& e) {
@@ -299,7 +309,7 @@ void Window::show_rim_lines(RimLines lines) {
   }
   render::LineSegments drawn;
   render::add_rim_segments(lines, drawn);
-  renderer_.set_lines(render::Overlay::rim, drawn.points, drawn.segments);
+  renderer_.set_lines(render::Overlay::rim, drawn.points, drawn.segments, drawn.colors);
   rim_lines_ = std::move(lines);
   if (const StageResult* shown = stage_.shown())
     rims_ = pickable_rims(rim_lines_, *shown->mesh, shown->borders);

@@ -194,6 +194,7 @@ class Window : private ScriptHost {
   ZipperOptions zipper_options_;
   float sharpness_ = infinite_sharpness;  // the weight K gives the selected edges (the Edit section's)
   RimLines rim_lines_;                    // the scene's, drawn over every stage and framed with the mesh
+  render::SceneLights scene_lights_;      // the lights the scene places, at the current slider values
   PickableRims rims_;                     // rim_lines_ numbered after the shown mesh's vertices
   glm::dvec3 shown_size_{0.0};            // the shown stage's bounding box
   PanelVisibility panels_;

@@ -70,8 +70,10 @@ void Window::bind_view_actions() {
                   display_.draws_wireframe = !display_.draws_faces || display_.draws_wireframe;
                 }));
   actions_.bind(Action::toggle_shading, always([this] {
-                  const bool is_smooth = display_.shading == render::Shading::smooth;
-                  display_.shading = is_smooth ? render::Shading::flat : render::Shading::smooth;
+                  display_.shading = display_.shading == render::Shading::automatic ? render::Shading::smooth
+                                     : display_.shading == render::Shading::smooth
+                                         ? render::Shading::flat
+                                         : render::Shading::automatic;
                 }));
   actions_.bind(Action::toggle_culling, always([this] {
                   const bool is_culled = display_.back_faces == render::BackFacePolicy::cull;

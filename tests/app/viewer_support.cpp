@@ -38,8 +38,8 @@ class FramebufferRenderer final : public render::SceneRenderer {
   void set_selected_faces(std::span<const Index> faces) override { gl_->set_selected_faces(faces); }
   void set_markers(std::span<const render::CubeMarker> markers) override { gl_->set_markers(markers); }
   void set_lines(render::Overlay overlay, std::span<const glm::vec3> points,
-                 std::span<const std::uint32_t> segments) override {
-    gl_->set_lines(overlay, points, segments);
+                 std::span<const std::uint32_t> segments, std::span<const glm::vec4> colors) override {
+    gl_->set_lines(overlay, points, segments, colors);
   }
   void draw(const render::Camera& camera, glm::ivec2 size, const render::PixelRect& viewport,
             const render::DisplaySettings& display) override {

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/camera.hpp"
+#include "render/scene_camera.hpp"
 #include "support/shapes.hpp"
 
 using namespace nome;
@@ -96,4 +97,45 @@ TEST_CASE("arcball drags cancel when reversed and pan keeps the grabbed point un
   const glm::dvec3 after = project(panning, grabbed, 1.0);
   CHECK(after.x == Approx(before.x + 0.2));
   CHECK(after.y == Approx(before.y - 0.1));
+}
+
+TEST_CASE("an orthographic lens: depth does not shrink, fit still frames every point", "[render]") {
+  Camera camera;
+  camera.lens.is_orthographic = true;
+  camera.set_view(0, 0);
+  const std::vector<glm::dvec3> points = {{-1, -1, -3}, {1, 1, -3}, {-1, -1, 3}, {1, 1, 3}};
+  camera.fit(points, 1.0);
+  // The near and far squares land on the same pixels: no perspective.
+  CHECK(near(glm::dvec3(glm::dvec2(project(camera, {1, 1, -3}, 1.0)), 0.0),
+             glm::dvec3(glm::dvec2(project(camera, {1, 1, 3}, 1.0)), 0.0)));
+  for (const glm::dvec3& p : points) {
+    const glm::dvec3 ndc = project(camera, p, 1.0);
+    CHECK(std::abs(ndc.x) <= 1.0);
+    CHECK(std::abs(ndc.y) <= 1.0);
+    CHECK(std::abs(ndc.z) <= 1.0);
+  }
+  CHECK(std::abs(project(camera, {1, 1, 0}, 1.0).x) > 0.9);  // and fills the picture to the margin
+  camera.lens.is_orthographic = false;
+  CHECK(project(camera, {1, 1, 3}, 1.0).x > project(camera, {1, 1, -3}, 1.0).x);
+}
+
+TEST_CASE("a scene's camera chooses the lens: projection and field of view", "[render]") {
+  scene::RenderDefaults d;
+  CHECK_FALSE(render::scene_lens(d).is_orthographic);
+  CHECK(render::scene_lens(d).fov_y_degrees == 30.0);
+  d.camera_projection = "NOME_ORTHOGONAL";
+  CHECK(render::scene_lens(d).is_orthographic);
+  d.camera_projection = "NOME_ORTHOGRAPHIC";
+  CHECK(render::scene_lens(d).is_orthographic);
+  d.camera_projection = "NOME_PERSPECTIVE";
+  d.camera_frustum = {45, 1.5, 0.1, 100};
+  CHECK_FALSE(render::scene_lens(d).is_orthographic);
+  CHECK(render::scene_lens(d).fov_y_degrees == 45.0);
+  d.camera_frustum = {0, 1.5, 0.1, 100};  // no usable angle: the default stays
+  CHECK(render::scene_lens(d).fov_y_degrees == 30.0);
+  d.camera_projection = "NOME_FRUSTUM";
+  d.camera_frustum = {-1, 1, -1, 1, 1, 10};  // bottom and top at 45 degrees each side of the near plane
+  CHECK(render::scene_lens(d).fov_y_degrees == Approx(90.0));
+  d.camera_frustum = {-10, 10, -10, 10, -1, 10};  // light_test's negative near plane: no angle
+  CHECK(render::scene_lens(d).fov_y_degrees == 30.0);
 }

@@ -83,6 +83,6 @@ delete face a_q1 endface enddelete
   for (Index f = 0; f < soup.num_faces(); ++f) {
     CAPTURE(soup.face_names[f]);
     CHECK(soup.face_names[f] != "a_q1");
-    CHECK(soup.face_colors[f] == (soup.face_names[f] == "a_q0" ? Color(1, 0, 0) : default_face_color));
+    CHECK(soup.face_colors[f] == (soup.face_names[f] == "a_q0" ? Color(1, 0, 0) : no_face_color));
   }
 }

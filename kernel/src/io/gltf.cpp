@@ -97,7 +97,7 @@ tinygltf::Model gltf_model(const Mesh& mesh) {
   std::map<ColorKey, GltfPrimitiveData> by_color;
   for (Index t = 0; t < triangles.size(); ++t) {
     const Index f = triangles.faces[t];
-    const Color c = mesh.face_colors().empty() ? default_face_color : mesh.face_colors()[f];
+    const Color c = written_face_color(mesh.face_colors().empty() ? no_face_color : mesh.face_colors()[f]);
     GltfPrimitiveData& p = by_color[{c.r, c.g, c.b}];
     for (Index corner : triangles.corners[t]) {
       const Index v = mesh.corner_vertex(corner);

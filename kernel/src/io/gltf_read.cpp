@@ -71,7 +71,7 @@ void read_gltf_primitive(const tinygltf::Model& model, const tinygltf::Primitive
   const tinygltf::Accessor* indices =
       is_indexed ? &model.accessors.at(std::size_t(primitive.indices)) : nullptr;
   const std::size_t corners = is_indexed ? indices->count : positions.count;
-  Color color = default_face_color;
+  Color color = no_face_color;
   if (primitive.material >= 0) {
     const auto& factor =
         model.materials.at(std::size_t(primitive.material)).pbrMetallicRoughness.baseColorFactor;

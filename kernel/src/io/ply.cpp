@@ -38,7 +38,7 @@ void write_ply(const std::filesystem::path& path, const Mesh& mesh) {
   std::vector<std::uint32_t> corners(mesh.num_corners());
   Index max_degree = 0;
   for (Index f = 0; f < mesh.num_faces(); ++f) {
-    const Color c = mesh.face_colors().empty() ? default_face_color : mesh.face_colors()[f];
+    const Color c = written_face_color(mesh.face_colors().empty() ? no_face_color : mesh.face_colors()[f]);
     const std::array<unsigned char, 3> rgb{ply_channel(c.r), ply_channel(c.g), ply_channel(c.b)};
     max_degree = std::max(max_degree, mesh.face_degree(f));
     for (Index corner = mesh.face_first_corner(f); corner < mesh.face_first_corner(f) + mesh.face_degree(f);

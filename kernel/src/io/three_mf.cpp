@@ -60,7 +60,7 @@ std::vector<ObjectArrays> split_components(const Mesh& mesh, double scale) {
     }
     object.triangles.push_back(triangle);
     if (has_colors) {
-      const Color c = mesh.face_colors()[f];
+      const Color c = written_face_color(mesh.face_colors()[f]);
       object.colors.push_back({color_byte(c.r), color_byte(c.g), color_byte(c.b), 255});
     }
   }

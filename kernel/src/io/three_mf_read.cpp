@@ -50,7 +50,7 @@ ThreeMfModel::Object read_object(PLib3MFModelMeshObject* mesh, const std::filesy
     eModelPropertyType type = MODELPROPERTYTYPE_NONE;
     check_lib3mf(lib3mf_propertyhandler_getpropertytype(handler, t, &type), handler, path, "colours");
     if (type != MODELPROPERTYTYPE_COLOR) continue;
-    if (object.colors.empty()) object.colors.assign(triangle_count, default_face_color);
+    if (object.colors.empty()) object.colors.assign(triangle_count, no_face_color);
     MODELMESH_TRIANGLECOLOR_SRGB color{};
     check_lib3mf(lib3mf_propertyhandler_getcolor(handler, t, &color), handler, path, "colours");
     const MODELMESHCOLOR_SRGB& c = color.m_Colors[0];
@@ -101,8 +101,7 @@ PolygonSoup three_mf_polygons(const ThreeMfModel& model) {
     for (Index t = 0; t < object.triangles.size(); ++t) {
       const auto& c = object.triangles[t];
       soup.add_face({first + c[0], first + c[1], first + c[2]});
-      if (has_colors)
-        soup.face_colors.push_back(object.colors.empty() ? default_face_color : object.colors[t]);
+      if (has_colors) soup.face_colors.push_back(object.colors.empty() ? no_face_color : object.colors[t]);
     }
   }
   return soup;

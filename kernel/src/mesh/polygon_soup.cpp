@@ -36,7 +36,7 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   const bool has_colors = !into.face_colors.empty() || !part.face_colors.empty();
   if (has_names) into.vertex_names.resize(into.positions.size());
   if (has_face_names) into.face_names.resize(into.num_faces());
-  if (has_colors) into.face_colors.resize(into.num_faces(), default_face_color);
+  if (has_colors) into.face_colors.resize(into.num_faces(), no_face_color);
 
   into.positions.insert(into.positions.end(), part.positions.begin(), part.positions.end());
   for (Index v : part.face_vertices) into.face_vertices.push_back(v + base);
@@ -52,7 +52,7 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   }
   if (has_colors) {
     into.face_colors.insert(into.face_colors.end(), part.face_colors.begin(), part.face_colors.end());
-    into.face_colors.resize(into.num_faces(), default_face_color);
+    into.face_colors.resize(into.num_faces(), no_face_color);
   }
   // Weights: where only one side has them, the other's sharp edges are infinitely sharp.
   if (!into.sharp_edge_weights.empty() || !part.sharp_edge_weights.empty()) {

@@ -9,8 +9,8 @@
 
 namespace nome {
 
-Index RimLines::add_line(std::span<const Vec3> points, std::span<const std::string> point_names,
-                         bool closed) {
+Index RimLines::add_line(std::span<const Vec3> points, std::span<const std::string> point_names, bool closed,
+                         std::optional<Color> color) {
   if (points.size() != point_names.size())
     throw InvalidInputError("RimLines::add_line: " + std::to_string(points.size()) + " points and " +
                             std::to_string(point_names.size()) + " names");
@@ -18,6 +18,7 @@ Index RimLines::add_line(std::span<const Vec3> points, std::span<const std::stri
   names.insert(names.end(), point_names.begin(), point_names.end());
   offsets.push_back(Index(positions.size()));
   is_closed.push_back(closed ? 1 : 0);
+  colors.push_back(color);
   return num_lines() - 1;
 }
 

@@ -27,7 +27,7 @@ bool append_whole_piece(Piece& out, const Piece& piece) {
     out.face_has_color.resize(out.soup.num_faces(), 0);
   }
   for (const RimLine& r : piece.rims) {
-    RimLine rim{r.name, r.vertices, r.is_loop};
+    RimLine rim{r.name, r.vertices, r.is_loop, r.color};
     for (Index& v : rim.vertices) v += base;
     out.rims.push_back(std::move(rim));
   }
@@ -76,7 +76,7 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
   for (auto [v, w] : s.sharp_vertices)
     if (new_id[v] != no_index) out.soup.sharp_vertices.emplace_back(new_id[v], w);
   for (const RimLine& r : piece.rims) {
-    RimLine rim{r.name, {}, r.is_loop};
+    RimLine rim{r.name, {}, r.is_loop, r.color};
     for (Index v : r.vertices) rim.vertices.push_back(new_id[v]);
     out.rims.push_back(std::move(rim));
   }
@@ -95,7 +95,7 @@ void Scene::assemble(Index top) {
     out.soup.face_colors.clear();
   } else {
     for (Index f = 0; f < out.soup.num_faces(); ++f)
-      if (!out.has_face_color(f)) out.soup.face_colors[f] = default_face_color;
+      if (!out.has_face_color(f)) out.soup.face_colors[f] = no_face_color;
   }
   SceneInstance& inst = instances_[top];
   if (!is_same_topology(inst.geometry.soup, out.soup) || inst.geometry_version == 0) ++inst.topology_version;

@@ -60,20 +60,21 @@ void place_points(Buffer<Vec3>& points, const glm::dmat4& m) {
 
 }  // namespace
 
+glm::dmat4 Scene::instance_matrix(const InstanceDecl& decl, std::vector<Index>& reads) const {
+  glm::dmat4 local(1.0);
+  for (const TransformDecl& t : decl.transforms) {
+    double a[4];
+    const int count = t.kind == TransformKind::translate || t.kind == TransformKind::scale ? 3 : 4;
+    for (int k = 0; k < count; ++k) a[k] = evaluate(ast_.expressions, t.args[k], values_, &reads);
+    local = transform_matrix(t, a) * local;
+  }
+  return local;
+}
+
 glm::dmat4 Scene::world_matrix(Index placement, std::vector<Index>& reads) const {
   glm::dmat4 m(1.0);
-  for (Index p = placement; p != no_index; p = placements_[p].parent) {
-    const InstanceDecl* decl = statement(placements_[p]);
-    if (!decl) continue;
-    glm::dmat4 local(1.0);
-    for (const TransformDecl& t : decl->transforms) {
-      double a[4];
-      const int count = t.kind == TransformKind::translate || t.kind == TransformKind::scale ? 3 : 4;
-      for (int k = 0; k < count; ++k) a[k] = evaluate(ast_.expressions, t.args[k], values_, &reads);
-      local = transform_matrix(t, a) * local;
-    }
-    m = local * m;
-  }
+  for (Index p = placement; p != no_index; p = placements_[p].parent)
+    if (const InstanceDecl* decl = statement(placements_[p])) m = instance_matrix(*decl, reads) * m;
   return m;
 }
 
@@ -144,9 +145,12 @@ Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std:
     piece.soup.vertex_names.add_prefix(prefix);
     piece.soup.face_names.add_prefix(prefix);
     for (RimLine& r : piece.rims) r.name = r.name.empty() ? p.path : p.path + "_" + r.name;
-    if (color)
+    if (color) {
       for (Index f = 0; f < piece.soup.num_faces(); ++f)
         if (!piece.has_face_color(f)) piece.set_face_color(f, *color);
+      for (RimLine& r : piece.rims)
+        if (!r.color) r.color = color;
+    }
     sort_unique(reads);
     return piece;
   } catch (const EvaluationError& e) {

@@ -16,7 +16,7 @@ RimLines scene_rim_lines(const Scene& scene) {
         names.push_back(v < soup.vertex_names.size() ? soup.vertex_names[v]
                                                      : rim.name + "_" + std::to_string(v));
       }
-      rims.add_line(points, names, rim.is_loop);
+      rims.add_line(points, names, rim.is_loop, rim.color);
     }
   }
   return rims;

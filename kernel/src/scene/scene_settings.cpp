@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
 #include "nome/scene/scene.hpp"
 
 namespace nome::scene {
@@ -68,6 +71,22 @@ RenderDefaults Scene::render_defaults() const {
         for (const Value& v : f->values) d.camera_frustum.push_back(current(v));
     }
   }
+  for (const InstanceDecl& placed : ast_.render_instances)
+    for (const RenderDecl& r : ast_.render)
+      if (r.keyword == "light" && r.name && r.name->text == placed.target.text) {
+        SceneLight light;
+        const RenderField* type = find_field(r, "type");
+        light.kind = type && type->word && type->word->text == "NOME_AMBIENT" ? SceneLight::Kind::ambient
+                                                                              : SceneLight::Kind::directional;
+        light.color = color(find_field(r, "color")).value_or(Color(1.0f));
+        if (const RenderField* d = find_field(r, "direction"); d && d->values.size() == 3)
+          light.direction = Vec3(current(d->values[0]), current(d->values[1]), current(d->values[2]));
+        std::vector<Index> reads;
+        light.direction = glm::dmat3(instance_matrix(placed, reads)) * light.direction;
+        const double length = glm::length(light.direction);
+        light.direction = length > 0.0 ? light.direction / length : Vec3(0.0, 1.0, 0.0);
+        d.lights.push_back(light);
+      }
   // A backface an instance names colours the back of the picture (the renderer has one back colour).
   for (const RenderDecl& r : ast_.render)
     if (r.keyword == "backface" && r.name && !backfaces_used.empty() && r.name->text == backfaces_used[0])

@@ -63,7 +63,7 @@ struct PolygonSoup {
 
 // Appends `part` to `into` as separate vertices and faces, keeping names, colours, origins and sharp marks:
 // where only one of them has names, the other's elements get empty ones; where only one has colours, the
-// other's faces get default_face_color. A grid layout is kept when `into` was empty.
+// other's faces get no_face_color. A grid layout is kept when `into` was empty.
 void append_soup(PolygonSoup& into, const PolygonSoup& part);
 
 }  // namespace nome

@@ -30,6 +30,8 @@ struct PipelineSettings {
   int levels_before() const { return stage >= Stage::subdivided ? subdivision_levels : 0; }
   double distance() const { return stage >= Stage::offset ? offset_distance : 0.0; }
   int levels_after() const { return stage == Stage::subdivided_offset ? subdivision_after : 0; }
+  // The result is a subdivision surface (some level of Catmull-Clark ran), not the faces as made.
+  bool is_smoothing() const { return levels_before() > 0 || levels_after() > 0; }
 };
 
 }  // namespace nome

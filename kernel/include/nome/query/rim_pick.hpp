@@ -19,11 +19,13 @@ struct RimLines {
   std::vector<std::string> names;
   std::vector<Index> offsets{0};  // line l holds vertices [offsets[l], offsets[l + 1])
   std::vector<unsigned char> is_closed;
+  std::vector<std::optional<Color>> colors;  // per line: its surface's colour, if it has one
 
   Index num_lines() const { return Index(offsets.size() - 1); }
   Index num_vertices() const { return Index(positions.size()); }
   // Appends a line; returns its index.
-  Index add_line(std::span<const Vec3> points, std::span<const std::string> point_names, bool closed);
+  Index add_line(std::span<const Vec3> points, std::span<const std::string> point_names, bool closed,
+                 std::optional<Color> color = std::nullopt);
 };
 
 // Half the edge of each rim vertex's cube: the report draws "a cube around every vertex, proportional

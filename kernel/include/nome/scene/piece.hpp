@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@ struct RimLine {
   std::string name;
   std::vector<Index> vertices;  // into the positions of the geometry that holds it
   bool is_loop = false;
+  std::optional<Color> color = std::nullopt;  // the surface of the nearest instance that names one
 };
 
 // The geometry of one definition or one placed instance: named vertices and faces, rim lines, and which

@@ -55,6 +55,17 @@ bool weld_before_subdividing(const StageSettings& stages, PipelineSettings& sett
 inline constexpr const char* welding_note =
     "subdividing the merged mesh: the successor's dialect welds coincident vertices first, as JIPCAD does";
 
+// A light that a `light` statement defines and an instance statement places, as JIPCAD lights its scene:
+// an ambient light adds its colour to every face; a directional one (NOME_DIRECTIONAL, and NOME_POINT and
+// NOME_SPOT, which Nome draws as directional) shines along `direction`: the light's own `direction` field
+// or, without one, +y, turned by the instance's transforms.
+struct SceneLight {
+  enum class Kind { ambient, directional };
+  Kind kind = Kind::ambient;
+  Color color{1.0f};
+  Vec3 direction{0.0, 1.0, 0.0};  // world space, unit: where the light travels
+};
+
 // The file's render statements as picture defaults, evaluated with the current slider values; `nome
 // render` and the viewer use them unless their own options say otherwise.
 struct RenderDefaults {
@@ -64,6 +75,7 @@ struct RenderDefaults {
   std::optional<std::string> camera_projection;  // the first camera's, as written (NOME_PERSPECTIVE, ...)
   std::vector<double> camera_frustum;
   std::size_t light_count = 0;
+  std::vector<SceneLight> lights;  // the placed lights; none: the viewer's own lights
 };
 
 // One top-level instance, evaluated: world-space geometry whose vertices and faces carry hierarchical
@@ -251,6 +263,8 @@ class Scene {
   Piece evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors);
   Piece definition_piece(const Placement& p, std::vector<Index>& reads, std::vector<Diagnostic>& errors);
   glm::dmat4 world_matrix(Index placement, std::vector<Index>& reads) const;
+  // The instance statement's own transforms, in order, as one matrix.
+  glm::dmat4 instance_matrix(const InstanceDecl& decl, std::vector<Index>& reads) const;
   std::optional<Color> placement_color(Index placement, std::vector<Index>& reads) const;
   Color surface_color(const Name& surface, std::vector<Index>& reads) const;
   void mark_references(const std::vector<Index>& placements);
