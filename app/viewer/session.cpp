@@ -48,9 +48,23 @@ Session Session::restore(const std::filesystem::path& document, const std::files
 }
 
 void Session::update_input() {
-  input_ = document_.pipeline_input();
-  parts_ = document_.face_parts(input_);
+  // A slider that only moved vertices takes their positions alone: no polygons, names or parts again.
+  if (!polygons_ || document_.input_topology_version() != topology_version_) {
+    auto input = std::make_shared<PipelineInput>(document_.pipeline_input());
+    positions_ = std::make_shared<const Buffer<Vec3>>(input->soup.positions);
+    parts_ = document_.face_parts(*input);
+    polygons_ = std::move(input);
+    topology_version_ = document_.input_topology_version();
+  } else {
+    positions_ = std::make_shared<const Buffer<Vec3>>(document_.pipeline_positions());
+  }
   ++version_;
+}
+
+PipelineInput Session::pipeline_input() const {
+  PipelineInput input = *polygons_;
+  input.soup.positions = *positions_;
+  return input;
 }
 
 EditOutcome Session::changed(EditOutcome outcome) {

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -12,6 +13,16 @@
 #include "nome/ops/zipper.hpp"
 
 namespace nome::viewer {
+
+// The session's pipeline input as a job takes it, shared rather than copied: the polygons of the latest
+// topology (their positions as they were when it was made) and the current positions, with the
+// version of that topology (SceneDocument::input_topology_version): a job whose version the pipeline has
+// already seen moves the vertices and looks at no polygon.
+struct SceneInput {
+  std::shared_ptr<const PipelineInput> polygons;
+  std::shared_ptr<const Buffer<Vec3>> positions;
+  std::uint64_t topology_version = 0;
+};
 
 // The file open in a window: the kernel's SceneDocument (the scene or flat geometry and its edits) plus
 // what only a window needs: the path, whether there are unsaved changes, and the pipeline input of the
@@ -32,8 +43,13 @@ class Session {
   bool are_sif_triangles_paired() const { return pair_sif_triangles_; }
   // What the scene stage shows: the scene without its deleted faces, then the consolidated and the
   // temporary faces (face_parts() says how many of each).
-  const PipelineInput& pipeline_input() const { return input_; }
-  const PolygonSoup& scene_soup() const { return input_.soup; }
+  // A copy, with the current positions.
+  PipelineInput pipeline_input() const;
+  SceneInput scene_input() const { return {polygons_, positions_, topology_version_}; }
+  // The polygons, names and parts of pipeline_input() without copying them; their positions may be
+  // older than positions().
+  const PolygonSoup& polygons() const { return polygons_->soup; }
+  const Buffer<Vec3>& positions() const { return *positions_; }
   const FaceParts& face_parts() const { return parts_; }
   // Changes whenever pipeline_input() does.
   std::uint64_t version() const { return version_; }
@@ -105,7 +121,9 @@ class Session {
   std::filesystem::path path_;
   bool pair_sif_triangles_ = false;
   SceneDocument document_;
-  PipelineInput input_;
+  std::shared_ptr<const PipelineInput> polygons_;
+  std::shared_ptr<const Buffer<Vec3>> positions_;
+  std::uint64_t topology_version_ = 0;
   FaceParts parts_;
   std::uint64_t version_ = 0;
   bool is_modified_ = false;

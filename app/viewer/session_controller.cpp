@@ -26,7 +26,7 @@ bool SessionController::open(const std::filesystem::path& path) {
     ++disk_version_;
     text_errors_.clear();
     recent_.add(path);
-    const PolygonSoup& soup = session_->scene_soup();
+    const PolygonSoup& soup = session_->polygons();
     log_.info("opened " + path.string() + " (" + std::to_string(soup.num_vertices()) + " vertices, " +
               std::to_string(soup.num_faces()) + " faces)");
     report_scene_warnings();
@@ -59,7 +59,7 @@ bool SessionController::apply_anom(const std::filesystem::path& path) {
     history_.clear();  // the working mesh replaced the edits and their history
     recent_.add(path);
     log_.info("applied " + path.string() + " to " + session_->path().filename().string() + " (" +
-              std::to_string(session_->scene_soup().num_faces()) + " faces)");
+              std::to_string(session_->polygons().num_faces()) + " faces)");
     return true;
   } catch (const std::exception& e) {
     log_.error(e.what());

@@ -32,7 +32,7 @@ bool SessionController::apply_text(const std::string& text) {
   }
   if (!reload(&text)) return false;
   log_.info("applied the text of " + session_->path().filename().string() + " (" +
-            std::to_string(session_->scene_soup().num_faces()) + " faces)");
+            std::to_string(session_->polygons().num_faces()) + " faces)");
   return true;
 }
 

@@ -32,10 +32,34 @@ WorkProgress StagePipeline::progress() const {
   return progress_;
 }
 
+std::optional<StageResult> StagePipeline::run(const SceneInput& input, const PipelineSettings& settings,
+                                              std::stop_token stop) {
+  std::lock_guard lock(mutex_);
+  if (stop.stop_requested()) return std::nullopt;
+  if (input_version_ != input.topology_version) {
+    input_version_.reset();  // until the pipeline has taken it
+    PipelineInput next = *input.polygons;
+    next.soup.positions = *input.positions;
+    pipeline_.replace_input(std::move(next));
+    input_version_ = input.topology_version;
+  } else if (input_positions_ != input.positions) {
+    pipeline_.move_input_vertices(*input.positions);
+  }
+  input_positions_ = input.positions;
+  return run_stages(settings, stop);
+}
+
 std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const PipelineSettings& settings,
                                               std::stop_token stop) {
   std::lock_guard lock(mutex_);
   if (stop.stop_requested()) return std::nullopt;
+  input_version_.reset();
+  input_positions_.reset();
+  pipeline_.set_input(input);
+  return run_stages(settings, stop);
+}
+
+std::optional<StageResult> StagePipeline::run_stages(const PipelineSettings& settings, std::stop_token stop) {
   {
     std::lock_guard progress_lock(progress_mutex_);
     progress_ = {};
@@ -44,7 +68,6 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
   StageResult result;
   result.stage = settings.stage;
   result.is_smoothed = settings.is_smoothing();
-  pipeline_.set_input(input);
   const Mesh& mesh = pipeline_.run(settings);
   result.warnings = pipeline_.warnings();
   // Told once, where the merge is what the user asked to see (not again at each later stage's run).
@@ -56,22 +79,6 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
   display(mesh, settings, result);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
-}
-
-bool StagePipeline::is_same_topology(const Mesh& mesh, const PipelineSettings& s) const {
-  if (!last_ || !last_settings_) return false;
-  const PipelineSettings& l = *last_settings_;
-  const bool same_settings = s.stage == l.stage && s.is_merging() == l.is_merging() &&
-                             s.levels_before() == l.levels_before() && s.levels_after() == l.levels_after() &&
-                             (s.distance() > 0) == (l.distance() > 0) && s.boundary == l.boundary &&
-                             s.creases == l.creases;
-  if (!same_settings || pipeline_.work(Stage::scene) == StageWork::rebuilt ||
-      (s.is_merging() && pipeline_.work(Stage::merged) == StageWork::rebuilt))
-    return false;
-  for (const Stage stage : {Stage::subdivided, Stage::offset, Stage::subdivided_offset})
-    if (stage <= s.stage && pipeline_.work(stage) == StageWork::rebuilt) return false;
-  return mesh.num_vertices() == last_->vertices && mesh.num_faces() == last_->faces &&
-         mesh.num_corners() == last_->corners && mesh.num_edges() == last_->edges;
 }
 
 std::shared_ptr<const Mesh> StagePipeline::kept_copy(const Mesh& mesh) {
@@ -116,8 +123,7 @@ std::shared_ptr<const render::DisplayPositions> StagePipeline::display_positions
 }
 
 void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result) {
-  const bool is_same = is_same_topology(mesh, settings);
-  if (is_same) {
+  if (last_ && last_->version == pipeline_.result_topology_version()) {
     result.display.topology = last_->display;
     result.borders = last_->borders;
     result.topology = last_->topology;
@@ -126,12 +132,10 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
     // A kept copy takes the positions once the display arrays have read them.
     const std::shared_ptr<const Mesh> kept = kept_copy(mesh);
     result.mesh = kept ? kept : new_copy(mesh);
-    last_settings_ = settings;
     return;
   }
   // Counted before the mesh is lent (the pipeline's then holds none).
   result.topology = pipeline_.result_report();
-  const Index counts[4] = {mesh.num_vertices(), mesh.num_faces(), mesh.num_corners(), mesh.num_edges()};
   // The pipeline's own result, lent, is what the frame shows: no copy of it before the frame. The copy
   // the pipeline takes back when it needs it (moved vertices) is made afterwards on a thread of its own,
   // beside the frames, or on one thread when the pipeline asks. The scene's or merge's mesh, which the
@@ -166,9 +170,8 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
   }
   copies_.push_back(shown);
   result.mesh = shown;
-  last_settings_ = settings;
-  last_ = Shared{
-      result.display.topology, result.borders, result.topology, counts[0], counts[1], counts[2], counts[3]};
+  last_ =
+      Shared{result.display.topology, result.borders, result.topology, pipeline_.result_topology_version()};
 }
 
 }  // namespace nome::viewer

@@ -16,6 +16,7 @@
 #include "nome/ops/pipeline.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "render/mesh_display_data.hpp"
+#include "viewer/session.hpp"
 
 namespace nome::viewer {
 
@@ -57,16 +58,23 @@ class StagePipeline {
  public:
   StagePipeline();
 
-  // Throws the kernel's errors (TopologyError naming the elements, BudgetError).
+  // Throws the kernel's errors (TopologyError naming the elements, BudgetError). An input of a topology
+  // version the pipeline has taken already only moves its vertices (Pipeline::move_input_vertices), or
+  // changes nothing when its positions are the last ones.
+  std::optional<StageResult> run(const SceneInput& input, const PipelineSettings& settings,
+                                 std::stop_token stop);
+  // The same for an input that comes with no version (tests, benches): compared with the last one
+  // (Pipeline::set_input).
   std::optional<StageResult> run(const PipelineInput& input, const PipelineSettings& settings,
                                  std::stop_token stop);
   // The progress of the run in flight (an empty task before the first report), for the status overlay.
   WorkProgress progress() const;
 
  private:
-  // The display arrays: a result of the last one's topology takes over its shared parts.
+  std::optional<StageResult> run_stages(const PipelineSettings& settings, std::stop_token stop);
+  // The display arrays: a result of the last one's topology (the pipeline's result_topology_version)
+  // takes over its shared parts.
   void display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result);
-  bool is_same_topology(const Mesh& mesh, const PipelineSettings& settings) const;
   // The result's mesh for a result of the last one's topology: a kept copy no one else holds, with the
   // pipeline's positions, or null when all are held. Valid only after the display arrays: the pipeline's
   // result then holds an older array.
@@ -80,13 +88,15 @@ class StagePipeline {
   // Copies the result lent to the last new topology's StageResult; done once the flag is set.
   std::jthread copy_thread_;
   std::shared_ptr<std::atomic<bool>> copy_done_;
-  std::optional<PipelineSettings> last_settings_;
+  // The scene input the pipeline holds: its topology version and positions (none: take the next whole).
+  std::optional<std::uint64_t> input_version_;
+  std::shared_ptr<const Buffer<Vec3>> input_positions_;
   // What results of the last one's topology share.
   struct Shared {
     std::shared_ptr<const render::DisplayTopology> display;
     std::shared_ptr<const BorderLookup> borders;
     TopologyReport topology;
-    Index vertices = 0, faces = 0, corners = 0, edges = 0;
+    std::uint64_t version = 0;  // the pipeline's result_topology_version
   };
   std::optional<Shared> last_;
   std::vector<std::shared_ptr<Mesh>> copies_;  // of the last topology, handed out in results

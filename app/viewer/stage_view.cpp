@@ -5,7 +5,7 @@
 namespace nome::viewer {
 
 StageView::StageView()
-    : evaluate_([this](const PipelineInput& input, const PipelineSettings& settings, std::stop_token stop) {
+    : evaluate_([this](const SceneInput& input, const PipelineSettings& settings, std::stop_token stop) {
         return pipeline_.run(input, settings, stop);
       }) {}
 
@@ -16,8 +16,8 @@ bool StageView::request(const Session& session) {
   requested_version_ = session.version();
   requested_settings_ = settings_;
   has_request_ = true;
-  // The scene's polygons are copied for the job.
-  waiting_ = [this, input = session.pipeline_input(), parts = session.face_parts(),
+  // The job shares the session's polygons and positions; a slider that moved vertices sends positions.
+  waiting_ = [this, input = session.scene_input(), parts = session.face_parts(),
               settings = settings_](std::stop_token stop) {
     auto result = evaluate_(input, settings, stop);
     if (result) result->parts = parts;

@@ -19,8 +19,8 @@ namespace nome::viewer {
 class StageView {
  public:
   // What a job runs: the stage pipeline by default (tests give their own).
-  using Evaluate = std::function<std::optional<StageResult>(const PipelineInput&, const PipelineSettings&,
-                                                            std::stop_token)>;
+  using Evaluate =
+      std::function<std::optional<StageResult>(const SceneInput&, const PipelineSettings&, std::stop_token)>;
   StageView();
   explicit StageView(Evaluate evaluate) : evaluate_(std::move(evaluate)) {}
 

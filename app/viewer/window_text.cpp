@@ -44,7 +44,7 @@ std::optional<scene::SourcePlace> Window::selection_statement() const {
   const Session* session = sessions_.session();
   if (!shown || !session || !is_editable(shown->stage)) return std::nullopt;
   // The shown mesh has the input's faces in their order, unless it is still one made from an older input.
-  const PolygonSoup& soup = session->scene_soup();
+  const PolygonSoup& soup = session->polygons();
   const Mesh& mesh = *shown->mesh;
   if (mesh.num_faces() != soup.num_faces() || mesh.face_names() != soup.face_names) return std::nullopt;
   const bool is_face_mode = selection_.mode() == SelectionMode::face;

@@ -183,19 +183,19 @@ void million_figures() {
   const auto renderer = render::make_gl_scene_renderer();
   kernel.set_input(session.pipeline_input());
   const Index faces = kernel.run(settings).num_faces();
-  show(*renderer, *stages.run(session.pipeline_input(), settings, {}));
+  show(*renderer, *stages.run(session.scene_input(), settings, {}));
   std::vector<double> kernel_ms, stage_ms, buffer_ms, kernel_cpu, stage_cpu;
   for (int i = 0; i < 11; ++i) {
     session.set_parameter("t_r", i % 2 ? 0.35 : 0.36);
     auto start = Clock::now();
     double cpu = cpu_ms();
-    kernel.set_input(session.pipeline_input());
+    kernel.move_input_vertices(session.positions());
     kernel.run(settings);
     kernel_ms.push_back(ms_since(start));
     kernel_cpu.push_back(cpu_ms() - cpu);
     start = Clock::now();
     cpu = cpu_ms();
-    const auto result = stages.run(session.pipeline_input(), settings, {});
+    const auto result = stages.run(session.scene_input(), settings, {});
     stage_ms.push_back(ms_since(start));
     stage_cpu.push_back(cpu_ms() - cpu);
     if (!result) std::exit(1);

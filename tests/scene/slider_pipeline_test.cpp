@@ -54,6 +54,21 @@ TEST_CASE("a slider tick that moves vertices builds no mesh, from the scene to t
   }
 }
 
+TEST_CASE("the document's topology version stays while a slider moves vertices, faces named by the user too",
+          "[scene]") {
+  SceneDocument doc = funnel_cube_document();  // its saved faces name the funnels' vertices
+  const std::uint64_t first = doc.input_topology_version();
+  const Index faces = doc.pipeline_input().soup.num_faces();
+  doc.set_parameter("fp_h", 0.4);
+  CHECK(doc.scene()->last_change_moved_vertices_only());
+  CHECK(doc.input_topology_version() == first);
+  CHECK(doc.pipeline_positions() == doc.pipeline_input().soup.positions);
+  doc.set_parameter("fp_n", 7);
+  CHECK_FALSE(doc.scene()->last_change_moved_vertices_only());
+  CHECK(doc.input_topology_version() != first);
+  CHECK(doc.pipeline_input().soup.num_faces() != faces);
+}
+
 TEST_CASE("a slider tick that changes the topology builds the scene mesh and the merged mesh once",
           "[scene]") {
   SceneDocument doc = funnel_cube_document();

@@ -1,6 +1,7 @@
 #include "nome/edit/document.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <span>
 #include <unordered_set>
 
@@ -53,6 +54,7 @@ Document::Document(PolygonSoup scene_geometry) {
 void Document::set_scene_geometry(PolygonSoup geometry) {
   scene_ = std::move(geometry);
   index_scene();
+  note_new_topology();
 }
 
 void Document::move_scene_vertices(Buffer<Vec3> positions) {
@@ -85,6 +87,17 @@ void Document::load_edits(const std::vector<std::vector<std::string>>& consolida
   deleted_ = std::move(deleted);
   history_.clear();
   done_ = 0;
+  note_new_topology();
+}
+
+void Document::note_new_topology() {
+  // Numbered across all documents: a pipeline that goes on to another document never takes its first
+  // version for the one it has.
+  static std::atomic<std::uint64_t> versions{0};
+  input_topology_version_ = ++versions;
+  edited_vertex_sources_ = edited_sources(consolidated_);
+  const std::vector<Index> temporary = edited_sources(temporary_);
+  edited_vertex_sources_.insert(edited_vertex_sources_.end(), temporary.begin(), temporary.end());
 }
 
 Index Document::vertex_id(const std::string& name) const {
@@ -245,17 +258,20 @@ void Document::execute(Command command) {
   history_.push_back(std::move(command));
   apply(history_.back());
   ++done_;
+  note_new_topology();
 }
 
 bool Document::undo() {
   if (!can_undo()) return false;
   revert(history_[--done_]);
+  note_new_topology();
   return true;
 }
 
 bool Document::redo() {
   if (!can_redo()) return false;
   apply(history_[done_++]);
+  note_new_topology();
   return true;
 }
 
@@ -361,6 +377,27 @@ PolygonSoup Document::edited_soup(const std::vector<EditedFace>& faces) const {
     soup.face_names.push_back(face.name);
   }
   return soup;
+}
+
+std::vector<Index> Document::edited_sources(const std::vector<EditedFace>& faces) const {
+  std::vector<Index> sources;
+  std::unordered_set<Index> seen;
+  for (const EditedFace& face : faces) {
+    std::vector<Index> ids;
+    for (const std::string& name : face.vertices) ids.push_back(vertex_id(name));
+    if (std::find(ids.begin(), ids.end(), no_index) != ids.end()) continue;
+    for (Index v : ids)
+      if (seen.insert(v).second) sources.push_back(v);
+  }
+  return sources;
+}
+
+Buffer<Vec3> Document::pipeline_positions() const {
+  Buffer<Vec3> positions;
+  positions.reserve(scene_.positions.size() + edited_vertex_sources_.size());
+  positions.assign(scene_.positions.begin(), scene_.positions.end());
+  for (Index v : edited_vertex_sources_) positions.push_back(scene_.positions[v]);
+  return positions;
 }
 
 PolygonSoup Document::consolidated_soup() const {

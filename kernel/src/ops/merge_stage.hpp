@@ -15,7 +15,7 @@ namespace nome {
 class MergeStage {
  public:
   // Returns what changed in the merged mesh.
-  InputChange update(const Mesh& input, InputChange change, double tolerance);
+  Change update(const Mesh& input, Change change, double tolerance);
   bool has_mesh() const { return merged_.has_value(); }
   const Mesh& mesh() const { return merged_->mesh; }
   Mesh& mesh() { return merged_->mesh; }

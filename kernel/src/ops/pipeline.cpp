@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "nome/error.hpp"
 #include "nome/ops/offset.hpp"
@@ -66,24 +67,29 @@ Pipeline::~Pipeline() = default;
 Pipeline::Pipeline(Pipeline&&) noexcept = default;
 Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;
 
-void Pipeline::input_changed(int change) {
-  merge_change_ = std::max(merge_change_, change);
-  solid_change_ = std::max(solid_change_, change);
+void Pipeline::input_changed(Change change) {
+  merge_change_ = combined(merge_change_, change);
+  solid_change_ = combined(solid_change_, change);
+  pending_result_change_ = combined(pending_result_change_, change);
   result_ = nullptr;
   input_warnings_.clear();
   input_warnings_ = scene_->problems();
 }
 
 void Pipeline::set_input(PipelineInput input) {
-  input_changed(int(scene_->update(std::move(input))));
+  input_changed(scene_->update(std::move(input)));
+}
+
+void Pipeline::replace_input(PipelineInput input) {
+  input_changed(scene_->replace(std::move(input)));
 }
 
 void Pipeline::move_input_vertices(Buffer<Vec3> positions) {
-  input_changed(int(scene_->move_vertices(std::move(positions))));
+  input_changed(scene_->move_vertices(std::move(positions)));
 }
 
 void Pipeline::set_input(const Mesh& scene_mesh) {
-  input_changed(int(scene_->update(scene_mesh)));
+  input_changed(scene_->update(scene_mesh));
 }
 
 void Pipeline::set_progress(Progress progress) {
@@ -102,29 +108,54 @@ const Mesh& Pipeline::run(const PipelineSettings& s) {
 
 const Mesh& Pipeline::run(const PipelineSettings& s, const PipelineSettings& budgeted,
                           bool streams_last_level) {
+  try {
+    return run_stages(s, budgeted, streams_last_level);
+  } catch (...) {
+    // Stages that threw start over: whatever the next run shows is a new topology to its caller.
+    last_result_ = nullptr;
+    throw;
+  }
+}
+
+void Pipeline::note_result_change(Change change) {
+  if (result_ != last_result_) change = Change::topology;
+  last_result_ = result_;
+  result_change_ = change;
+  if (change == Change::topology) ++result_topology_version_;
+}
+
+const Mesh& Pipeline::run_stages(const PipelineSettings& s, const PipelineSettings& budgeted,
+                                 bool streams_last_level) {
   last_level_.reset();
+  Change result_change = std::exchange(pending_result_change_, Change::none);
   warnings_ = std::move(input_warnings_);
   input_warnings_.clear();
   const Mesh* current = &scene_->mesh();
   int source = int(Stage::scene);
   if (s.is_merging()) {
-    const InputChange change = merged_->update(*current, InputChange(merge_change_), s.merge_tolerance);
-    merge_change_ = 0;
+    const Change change = merged_->update(*current, merge_change_, s.merge_tolerance);
+    merge_change_ = Change::none;
+    result_change = combined(result_change, change);
     if (merged_->work() == StageWork::rebuilt)
       for (const SkippedMerge& skip : merged_->summary().skipped)
         warnings_.push_back("merge: " + skip.message);
-    solid_change_ = std::max(solid_change_, int(change));
+    solid_change_ = combined(solid_change_, change);
     current = &merged_->mesh();
     source = int(Stage::merged);
   }
-  if (s.stage <= Stage::merged) return *(result_ = current);
+  if (s.stage <= Stage::merged) {
+    result_ = current;
+    note_result_change(result_change);
+    return *result_;
+  }
   check_budget(*current, budgeted, streams_last_level);
-  if (source != solid_source_) solid_change_ = int(InputChange::topology);
-  const InputChange change = InputChange(solid_change_);
+  if (source != solid_source_) solid_change_ = Change::topology;
+  const Change change = solid_change_;
   solid_source_ = -1;  // until the solid stages have run on it
   result_ = &solid_->run(*current, change, s);
   solid_source_ = source;
-  solid_change_ = 0;
+  solid_change_ = Change::none;
+  note_result_change(solid_->result_change());
   for (const std::string& w : solid_->warnings()) warnings_.push_back(w);
   return *result_;
 }

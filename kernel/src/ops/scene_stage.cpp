@@ -117,7 +117,15 @@ bool SceneStage::faces_match(const Buffer<Index>& face_offsets, const Buffer<Ind
   return face_offsets == input_face_offsets_ && face_vertices == input_face_vertices_;
 }
 
-InputChange SceneStage::update(PipelineInput input) {
+Change SceneStage::update(PipelineInput input) {
+  return take(std::move(input), true);
+}
+
+Change SceneStage::replace(PipelineInput input) {
+  return take(std::move(input), false);
+}
+
+Change SceneStage::take(PipelineInput input, bool may_be_same) {
   PolygonSoup& soup = input.soup;
   Structure next{std::move(soup.sharp_edges),
                  std::move(soup.sharp_edge_weights),
@@ -128,11 +136,11 @@ InputChange SceneStage::update(PipelineInput input) {
                  soup.num_vertices(),
                  input.joining,
                  !soup.face_colors.empty()};
-  if (has_input_ && next == structure_ && faces_match(soup.face_offsets, soup.face_vertices)) {
+  if (may_be_same && has_input_ && next == structure_ && faces_match(soup.face_offsets, soup.face_vertices)) {
     take_positions(soup.positions);
     mesh_.face_colors() = std::move(soup.face_colors);
     work_ = StageWork::positions;
-    return InputChange::positions;
+    return Change::positions;
   }
   structure_ = std::move(next);
   soup.sharp_edges = structure_.sharp_edges;
@@ -148,7 +156,7 @@ InputChange SceneStage::update(PipelineInput input) {
     throw;
   }
   has_input_ = true;
-  return InputChange::topology;
+  return Change::topology;
 }
 
 void SceneStage::take_positions(Buffer<Vec3>& input) {
@@ -160,14 +168,14 @@ void SceneStage::take_positions(Buffer<Vec3>& input) {
   }
 }
 
-InputChange SceneStage::move_vertices(Buffer<Vec3> positions) {
+Change SceneStage::move_vertices(Buffer<Vec3> positions) {
   if (!has_input_ || positions.size() != structure_.num_vertices)
     throw InvalidInputError("Pipeline::move_input_vertices: " + std::to_string(positions.size()) +
                             " positions for an input of " + std::to_string(structure_.num_vertices) +
                             " vertices (set_input first)");
   take_positions(positions);
   work_ = StageWork::positions;
-  return InputChange::positions;
+  return Change::positions;
 }
 
 void SceneStage::keep_input_faces(PolygonSoup& soup) {
@@ -209,7 +217,7 @@ void SceneStage::rebuild(PipelineInput input) {
   work_ = StageWork::rebuilt;
 }
 
-InputChange SceneStage::update(const Mesh& mesh) {
+Change SceneStage::update(const Mesh& mesh) {
   problems_.clear();
   const bool is_same_topology =
       has_mesh_ && mesh.face_offsets() == mesh_.face_offsets() &&
@@ -221,7 +229,7 @@ InputChange SceneStage::update(const Mesh& mesh) {
       mesh.face_holes() == mesh_.face_holes();
   if (is_same_topology && mesh.positions() == mesh_.positions()) {
     work_ = StageWork::cached;
-    return InputChange::none;
+    return Change::none;
   }
   if (is_same_topology)
     mesh_.positions() = mesh.positions();
@@ -234,7 +242,7 @@ InputChange SceneStage::update(const Mesh& mesh) {
   input_face_offsets_ = {};
   input_face_vertices_ = {};
   work_ = is_same_topology ? StageWork::positions : StageWork::rebuilt;
-  return is_same_topology ? InputChange::positions : InputChange::topology;
+  return is_same_topology ? Change::positions : Change::topology;
 }
 
 }  // namespace nome

@@ -16,12 +16,14 @@ class SceneStage {
  public:
   // Takes the next input and brings the mesh up to date. Throws TopologyError naming the part at fault;
   // the stage then starts over.
-  InputChange update(PipelineInput input);
+  Change update(PipelineInput input);
+  // Takes the next input as a new topology (the caller knows): builds the mesh without comparing.
+  Change replace(PipelineInput input);
   // Takes a mesh built by the caller as the stage's result (compared with the last one).
-  InputChange update(const Mesh& mesh);
+  Change update(const Mesh& mesh);
   // New positions for the last input's vertices, its polygons unchanged. Throws InvalidInputError when
   // there is no such input or the count differs.
-  InputChange move_vertices(Buffer<Vec3> positions);
+  Change move_vertices(Buffer<Vec3> positions);
 
   const Mesh& mesh() const { return mesh_; }
   Mesh& mesh() { return mesh_; }
@@ -44,6 +46,7 @@ class SceneStage {
     bool operator==(const Structure&) const = default;
   };
 
+  Change take(PipelineInput input, bool may_be_same);
   void rebuild(PipelineInput input);
   void take_positions(Buffer<Vec3>& positions);
   void keep_input_faces(PolygonSoup& soup);

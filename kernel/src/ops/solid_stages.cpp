@@ -27,14 +27,14 @@ void check_settings(const PipelineSettings& s) {
 
 }  // namespace
 
-const Mesh& SolidStages::run(const Mesh& input, InputChange change, const PipelineSettings& s) {
+const Mesh& SolidStages::run(const Mesh& input, Change change, const PipelineSettings& s) {
   check_settings(s);
   warnings_.clear();
   const bool is_first_run = !last_settings_;
   const PipelineSettings previous = last_settings_.value_or(s);
   last_settings_ = s;
-  has_new_topology_ = is_first_run || change == InputChange::topology;
-  has_new_positions_ = has_new_topology_ || change == InputChange::positions || has_exchanged_result_;
+  has_new_topology_ = is_first_run || change == Change::topology;
+  has_new_positions_ = has_new_topology_ || change == Change::positions || has_exchanged_result_;
   has_exchanged_result_ = false;
   input_ = &input;
   try {

@@ -8,13 +8,11 @@
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/normals.hpp"
 #include "nome/mesh/topology_report.hpp"
+#include "nome/ops/change.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/ops/subdivide.hpp"
 
 namespace nome {
-
-// What changed in a stage's input since the stage last ran.
-enum class InputChange { none, positions, topology };
 
 // The stages after the merge (subdivide k -> offset d -> subdivide j), each result cached. A run redoes
 // only what its input's change and the settings invalidate: a new topology (or other level counts)
@@ -24,7 +22,11 @@ class SolidStages {
  public:
   // The last stage's result, or `input` when no stage runs (valid until the next run). Throws
   // InvalidInputError for settings out of range.
-  const Mesh& run(const Mesh& input, InputChange change, const PipelineSettings& settings);
+  const Mesh& run(const Mesh& input, Change change, const PipelineSettings& settings);
+  // What the last run changed in its result (its stages' input change carried through them).
+  Change result_change() const {
+    return has_new_topology_ ? Change::topology : has_new_positions_ ? Change::positions : Change::none;
+  }
   // Moves the last stage's result out (none ran: none); the caches start over.
   std::optional<Mesh> take_result();
 

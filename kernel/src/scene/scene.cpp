@@ -249,7 +249,11 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
     if (over_budget) throw BudgetError(*over_budget);
     throw SceneError(std::move(errors));
   }
-  has_only_moved_vertices_ = remade.empty() && !moves_sharpness;
+  // Placements made again (those that name other placements' vertices) may still have only moved.
+  bool keeps_topology = true;
+  for (size_t k = 0; k < remade.size() && keeps_topology; ++k)
+    keeps_topology = has_same_topology(backup[k].first, placements_[remade[k]].world);
+  has_only_moved_vertices_ = keeps_topology && !moves_sharpness;
   std::vector<Index> tops, remade_tops;
   for (Index i : remade) remade_tops.push_back(placements_[i].top);
   sort_unique(remade_tops);

@@ -24,7 +24,7 @@ const char* funnel_scene =
     "instance i f endinstance\n";
 
 void delete_first_face(Session& session) {
-  const Mesh shown = build_mesh(session.scene_soup());
+  const Mesh shown = build_mesh(session.polygons());
   const Index face = 0;
   REQUIRE(session.delete_faces(shown, {&face, 1}).applied);
 }
@@ -62,7 +62,7 @@ TEST_CASE("autosave keeps unsaved changes in a recovery file: at once per edit, 
   autosave.update(session, 32.0);
   const Session restored = Session::restore(document, recovery);
   CHECK(restored.document().deleted_faces().size() == 1);
-  CHECK(restored.scene_soup().num_faces() == 3);
+  CHECK(restored.polygons().num_faces() == 3);
   CHECK(restored.path() == document);
   CHECK(restored.is_modified());
   CHECK(fs::is_empty(folder) == false);
@@ -103,11 +103,11 @@ TEST_CASE("a recovery file newer than its document is offered, and restoring it 
   Session restored = Session::restore(document, recovery);
   CHECK(restored.is_modified());
   CHECK(restored.scene()->parameters()[0].value == 0.7);
-  CHECK(restored.scene_soup().num_faces() == 3);
+  CHECK(restored.polygons().num_faces() == 3);
   restored.save(document);  // Save writes the document itself
   const Session reopened = Session::open(document);
   CHECK(reopened.scene()->parameters()[0].value == 0.7);
-  CHECK(reopened.scene_soup().num_faces() == 3);
+  CHECK(reopened.polygons().num_faces() == 3);
 
   // A document saved after the recovery file was written is not offered it.
   fs::last_write_time(recovery, now - std::chrono::minutes(10));

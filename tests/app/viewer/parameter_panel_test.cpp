@@ -25,20 +25,20 @@ TEST_CASE("resetting a bank returns the scene to the file's positions exactly", 
   const std::string dir = nome::test::private_scratch_dir("parameter_reset");
   nome::test::write_twelve_banks(dir + "/twelve.nome");
   viewer::Session session = viewer::Session::open(dir + "/twelve.nome");
-  const auto file_positions = session.scene_soup().positions;
+  const auto file_positions = session.positions();
   viewer::ParameterPanelState state;
   state.track(*session.scene());
   const scene::Bank bank = session.scene()->banks()[5];
   session.set_parameter("b5_ro", 0.7);
   session.set_parameter("b5_ratio", -0.3);
   session.set_parameter("b5_n", 9);
-  REQUIRE(session.scene_soup().positions != file_positions);
+  REQUIRE(session.positions() != file_positions);
   const scene::Parameter& ro = session.scene()->parameters()[bank.parameters[1]];
   CHECK(state.is_moved(ro, bank.parameters[1]));
   const auto moves = viewer::bank_reset(*session.scene(), bank, state);
   CHECK(moves.size() == 3);
   for (const auto& [id, value] : moves) session.set_parameter(id, value);
-  CHECK(session.scene_soup().positions == file_positions);
+  CHECK(session.positions() == file_positions);
   CHECK(viewer::bank_reset(*session.scene(), bank, state).empty());
 }
 
@@ -60,7 +60,7 @@ TEST_CASE("the banks a selected vertex depends on come first", "[app]") {
   nome::test::write_twelve_banks(dir + "/twelve.nome");
   const viewer::Session session = viewer::Session::open(dir + "/twelve.nome");
   const scene::Scene& scene = *session.scene();
-  const auto& names = session.scene_soup().vertex_names;
+  const auto& names = session.polygons().vertex_names;
   const auto vertex =
       std::find_if(names.begin(), names.end(), [](const std::string& n) { return n.starts_with("i7_"); });
   REQUIRE(vertex != names.end());

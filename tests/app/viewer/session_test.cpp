@@ -17,8 +17,8 @@ TEST_CASE("a bad edit of the open file keeps the last good geometry and the edit
   const std::string squares = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nv 3 1 0\nv 2 1 0\n";
   std::ofstream(file) << squares << "f 1 2 3 4\nf 5 6 7 8\n";
   Session session = Session::open(file);
-  REQUIRE(session.scene_soup().num_faces() == 2);
-  const Mesh shown = build_mesh(session.scene_soup());
+  REQUIRE(session.polygons().num_faces() == 2);
+  const Mesh shown = build_mesh(session.polygons());
   auto id = [&](const std::string& name) {
     const auto& names = shown.vertex_names();
     return Index(std::find(names.begin(), names.end(), name) - names.begin());
@@ -32,14 +32,14 @@ TEST_CASE("a bad edit of the open file keeps the last good geometry and the edit
   const auto version = session.version();
   CHECK_THROWS_AS(session.reload(), IoError);
   CHECK(session.version() == version);
-  CHECK(session.scene_soup().num_faces() == 3);
+  CHECK(session.polygons().num_faces() == 3);
 
   // A good edit comes in and the added face follows it by name.
   std::ofstream(file) << squares << "f 1 2 3 4\nf 5 6 7 8\n"
                       << "v 9 9 9\n";
   session.reload();
   CHECK(session.version() > version);
-  CHECK(session.scene_soup().num_faces() == 3);
+  CHECK(session.polygons().num_faces() == 3);
   CHECK(session.face_parts().temporary == 1);
 }
 
@@ -48,11 +48,11 @@ TEST_CASE("an .anom file applies its saved sliders and working mesh to the open 
   NOME_NEEDS_SHARED_EXAMPLES("original");
   const std::string original = nome::test::shared_examples_dir("original");
   Session session = Session::open(original + "kleinbottle.nom");
-  REQUIRE(session.scene_soup().num_faces() == 80);
+  REQUIRE(session.polygons().num_faces() == 80);
   CHECK_FALSE(session.is_modified());
   session.apply_anom(original + "kleinbottle_s1.anom");
   // Its eight zipped faces join the five tunnels' 80.
-  CHECK(session.scene_soup().num_faces() == 88);
+  CHECK(session.polygons().num_faces() == 88);
   CHECK(session.document().consolidated_faces().size() == 8);
   CHECK(session.is_modified());
 

@@ -91,10 +91,10 @@ TEST_CASE("the viewer's slider tick that moves vertices builds no mesh", "[app]"
   StagePipeline pipeline;
   PipelineSettings settings = viewer::initial_settings();
   settings.stage = Stage::offset;
-  REQUIRE(pipeline.run(session.pipeline_input(), settings, std::stop_token{}));
+  REQUIRE(pipeline.run(session.scene_input(), settings, std::stop_token{}));
   const std::uint64_t before = build_mesh_count();
   session.set_parameter("fp_h", 0.4);
-  const auto result = pipeline.run(session.pipeline_input(), settings, std::stop_token{});
+  const auto result = pipeline.run(session.scene_input(), settings, std::stop_token{});
   REQUIRE(result);
   CHECK(build_mesh_count() == before);
   CHECK(result->topology.borders == 0);
@@ -119,7 +119,7 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
   viewer::Session session = viewer::Session::open(NOME_SOURCE_DIR "/assets/funnel_cube_consolidated.nome");
   StagePipeline pipeline;
   const PipelineSettings settings = offset_settings();
-  auto run = [&] { return pipeline.run(session.pipeline_input(), settings, std::stop_token{}); };
+  auto run = [&] { return pipeline.run(session.scene_input(), settings, std::stop_token{}); };
   const auto first = run();
   REQUIRE(first);
   const Buffer<Vec3> first_positions = first->mesh->positions();
@@ -136,7 +136,7 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
     const render::MeshDisplayData fresh = render::build_display_data(*moved.mesh);
     CHECK(moved.display.positions->vertices == fresh.positions->vertices);
     StagePipeline fresh_pipeline;
-    const auto fresh_run = fresh_pipeline.run(session.pipeline_input(), settings, std::stop_token{});
+    const auto fresh_run = fresh_pipeline.run(session.scene_input(), settings, std::stop_token{});
     REQUIRE(fresh_run);
     CHECK(moved.display.positions->vertex_normals == fresh_run->display.positions->vertex_normals);
     CHECK(moved.display.positions->face_normals == fresh_run->display.positions->face_normals);
@@ -160,7 +160,7 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
   // Its positions changed places with the pipeline's: those of a fresh run, here and at the next tick.
   StagePipeline fresh_pipeline;
   CHECK(reused->mesh->positions() ==
-        fresh_pipeline.run(session.pipeline_input(), settings, std::stop_token{})->mesh->positions());
+        fresh_pipeline.run(session.scene_input(), settings, std::stop_token{})->mesh->positions());
   const auto unchanged = run();
   REQUIRE(unchanged);
   CHECK(unchanged->mesh->positions() == reused->mesh->positions());
@@ -214,7 +214,7 @@ TEST_CASE("a new solid is read by a frame while the pipeline copies it and the n
   StagePipeline pipeline;
   PipelineSettings settings = offset_settings();
   settings.threads = 2;  // the pipeline's copy on a thread of its own
-  auto run = [&](StagePipeline& p) { return p.run(session.pipeline_input(), settings, std::stop_token{}); };
+  auto run = [&](StagePipeline& p) { return p.run(session.scene_input(), settings, std::stop_token{}); };
   const auto first = run(pipeline);
   REQUIRE(first);
   const Buffer<Vec3> first_positions = first->mesh->positions();

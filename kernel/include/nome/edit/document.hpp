@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <unordered_map>
 #include <variant>
@@ -102,6 +103,12 @@ class Document {
   // The three as the pipeline's input, in that order, parts named "scene", "consolidated" and
   // "temporary": faces that only touch at a vertex keep separate vertices there (Joining::across_edges).
   PipelineInput pipeline_input() const;
+  // The positions of pipeline_input()'s polygons alone: what a slider that only moved the scene's vertices
+  // changes (see input_topology_version). No names, no polygons, no lookups by name.
+  Buffer<Vec3> pipeline_positions() const;
+  // A new number, unique among all documents, whenever pipeline_input() has other polygons, names, colours
+  // or sharpness than before (new scene geometry, an edit, undo, redo); stays when only vertices moved.
+  std::uint64_t input_topology_version() const { return input_topology_version_; }
 
  private:
   struct AddTemporary {
@@ -138,6 +145,8 @@ class Document {
   void apply(const Command& command);
   void revert(const Command& command);
   void index_scene();
+  // After anything but moved vertices: a new input topology, whose edited vertices' sources are found again.
+  void note_new_topology();
   float text_sharpness(Index u, Index w) const;
   std::vector<EdgeUse> uses_of(Index u, Index w) const;
   // Why a new face cannot be added next to the current faces plus `pending` (faces of the same edit),
@@ -150,6 +159,8 @@ class Document {
   EditOutcome add_strip(std::vector<EditedFace> faces, const ZipperFaces& strip, bool orient);
   Index vertex_id(const std::string& name) const;
   PolygonSoup edited_soup(const std::vector<EditedFace>& faces) const;
+  // The scene vertices edited_soup(faces) copies, in its order.
+  std::vector<Index> edited_sources(const std::vector<EditedFace>& faces) const;
   std::string next_face_name() { return "edit" + std::to_string(++face_counter_); }
 
   PolygonSoup scene_;
@@ -164,6 +175,8 @@ class Document {
   std::vector<Command> history_;
   size_t done_ = 0;  // history_[0, done_) is applied; the rest can be redone
   std::size_t face_counter_ = 0;
+  std::uint64_t input_topology_version_ = 0;
+  std::vector<Index> edited_vertex_sources_;  // of the consolidated and temporary parts, in input order
 };
 
 }  // namespace nome

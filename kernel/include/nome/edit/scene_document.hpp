@@ -66,6 +66,10 @@ class SceneDocument {
   // The scene stage's polygons for the pipeline: the scene without its deleted faces, the consolidated
   // and the temporary faces (face_parts() says how many of each).
   PipelineInput pipeline_input() const { return document_.pipeline_input(); }
+  // What changed since a caller took pipeline_input(): while input_topology_version() stays, only the
+  // positions moved, and pipeline_positions() holds them (Document's).
+  Buffer<Vec3> pipeline_positions() const { return document_.pipeline_positions(); }
+  std::uint64_t input_topology_version() const { return document_.input_topology_version(); }
   FaceParts face_parts(const PipelineInput& input) const;
 
   // The scene carrying the consolidated faces and deletions, for scene::write_nome. Edits whose vertices

@@ -12,6 +12,7 @@
 #include "nome/mesh/polygon_soup.hpp"
 #include "nome/mesh/quad_surface.hpp"
 #include "nome/mesh/topology_report.hpp"
+#include "nome/ops/change.hpp"
 #include "nome/ops/merge.hpp"
 #include "nome/ops/offset_surface.hpp"
 #include "nome/ops/pipeline_input.hpp"
@@ -76,6 +77,9 @@ class Pipeline {
   // The polygons of the scene stage: makes the scene mesh, or only moves its vertices when the polygons
   // are those of the last input. Throws TopologyError naming the input part at fault.
   void set_input(PipelineInput input);
+  // The polygons of the scene stage from a caller that knows they are a new topology (the viewer's
+  // document tells it): builds the scene mesh without comparing them with the last input.
+  void replace_input(PipelineInput input);
   // The scene stage as a mesh the caller built (compared with the last one).
   void set_input(const Mesh& scene_mesh);
   // New positions for the vertices of the last set_input(PipelineInput), its polygons unchanged (a slider
@@ -135,6 +139,13 @@ class Pipeline {
   // counted on the result (then before lending it).
   TopologyReport result_report() const;
 
+  // What the last run changed in its result since the run before, and the version of the result's
+  // topology, which grows with every run whose result has other connectivity than the last one's (a stage
+  // rebuilt, or another stage's mesh is the result). A display keeps what it derived from the connectivity
+  // while the version stays.
+  Change result_change() const { return result_change_; }
+  std::uint64_t result_topology_version() const { return result_topology_version_; }
+
   // What each stage did in the last run.
   StageWork work(Stage stage) const;
   const MergeSummary& merge_summary() const;
@@ -143,7 +154,12 @@ class Pipeline {
   const std::vector<std::string>& warnings() const { return warnings_; }
 
  private:
-  void input_changed(int change);
+  void input_changed(Change change);
+  const Mesh& run_stages(const PipelineSettings& settings, const PipelineSettings& budgeted,
+                         bool streams_last_level);
+  // Sets result_change() to what the stages that made the result changed, or to a new topology when
+  // the result is another stage's mesh than last time.
+  void note_result_change(Change change);
   // Whether the last result is the solid stages' (not the scene's or merge's mesh).
   bool is_solid_result() const;
   // run(), with the budget checked for `budgeted` (the last level as quads when `streams_last_level`).
@@ -157,9 +173,13 @@ class Pipeline {
   std::unique_ptr<SolidStages> solid_;
   // What changed in the scene mesh since the merge stage, and in its input since the solid stages, last
   // ran (an InputChange: stages that a run skips catch up at the next run that reaches them).
-  int merge_change_ = 0, solid_change_ = 0;
-  int solid_source_ = -1;  // the stage the solid stages last started from
+  Change merge_change_ = Change::none, solid_change_ = Change::none;
+  Change pending_result_change_ = Change::topology;  // of the scene mesh since the last run
+  int solid_source_ = -1;                            // the stage the solid stages last started from
   const Mesh* result_ = nullptr;
+  const Mesh* last_result_ = nullptr;  // the stage mesh the run before last showed
+  Change result_change_ = Change::topology;
+  std::uint64_t result_topology_version_ = 0;
   std::optional<Refinement> last_level_;  // run_surface's: the last level's quads and positions
   Progress progress_;
   std::vector<std::string> input_warnings_;

@@ -55,6 +55,9 @@ struct Piece {
   }
 };
 
+// Whether b differs from a in its positions alone: the same faces, names, colours, sharp marks and rims.
+bool has_same_topology(const Piece& a, const Piece& b);
+
 // What a generator that knows its topology without making it gives on a slider move: the positions its
 // piece would have, and that piece's topology key.
 struct PiecePositions {
