@@ -17,9 +17,9 @@
 #include "viewer/layout.hpp"
 #include "viewer/message_log.hpp"
 #include "viewer/picking.hpp"
-#include "viewer/recent_files.hpp"
 #include "viewer/selection.hpp"
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/recent_files.hpp"
+#include "viewer/session/stage_pipeline.hpp"
 
 // The ImGui panels, one file each: each draws from what it is given and reports what the user changed;
 // actions go through the registry, so a button does what its key and its script name do.

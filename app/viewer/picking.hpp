@@ -16,7 +16,7 @@
 #include "render/scene_renderer.hpp"
 #include "viewer/rim_picking.hpp"
 #include "viewer/selection.hpp"
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/stage_pipeline.hpp"
 
 namespace nome::viewer {
 

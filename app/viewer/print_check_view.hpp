@@ -11,9 +11,9 @@
 #include "nome/ops/pipeline.hpp"
 #include "nome/query/print_check.hpp"
 #include "render/cube_set.hpp"
-#include "viewer/background_job.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_view.hpp"
+#include "viewer/session/background_job.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_view.hpp"
 
 namespace nome::viewer {
 

@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "nome/io/read_scene.hpp"
-#include "viewer/source_text.hpp"
+#include "viewer/session/source_text.hpp"
 
 namespace nome::viewer {
 

@@ -8,7 +8,7 @@
 #define GLFW_INCLUDE_NONE  // GL comes from glad (render/gl.hpp)
 #include <GLFW/glfw3.h>
 
-#include "viewer/source_text.hpp"
+#include "viewer/session/source_text.hpp"
 #include "viewer/text_pane.hpp"
 
 namespace nome::viewer {

@@ -12,8 +12,8 @@
 #include "render/render_support.hpp"
 #include "support/shared_examples.hpp"
 #include "viewer/picking.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_pipeline.hpp"
 
 using namespace nome;
 using nome::test::click_line;

@@ -2,7 +2,7 @@
 
 #include "app/viewer_support.hpp"
 #include "viewer/parameter_panel.hpp"
-#include "viewer/session.hpp"
+#include "viewer/session/session.hpp"
 
 using namespace nome;
 

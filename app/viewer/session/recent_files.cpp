@@ -1,4 +1,4 @@
-#include "viewer/recent_files.hpp"
+#include "viewer/session/recent_files.hpp"
 
 #include <algorithm>
 #include <cstdlib>

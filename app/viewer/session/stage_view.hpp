@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "nome/query/triangle_bvh.hpp"
-#include "viewer/background_job.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/background_job.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_pipeline.hpp"
 
 namespace nome::viewer {
 

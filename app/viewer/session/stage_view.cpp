@@ -1,4 +1,4 @@
-#include "viewer/stage_view.hpp"
+#include "viewer/session/stage_view.hpp"
 
 #include <utility>
 

@@ -1,7 +1,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "viewer/session_controller.hpp"
+#include "viewer/session/session_controller.hpp"
 
 // Colours given to instances from the viewer (report 8.4), as steps of the one history.
 namespace nome::viewer {

@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "viewer/actions.hpp"
-#include "viewer/autosave.hpp"
 #include "viewer/message_log.hpp"
-#include "viewer/recent_files.hpp"
 #include "viewer/rim_picking.hpp"
 #include "viewer/selection.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_pipeline.hpp"
-#include "viewer/undo_history.hpp"
+#include "viewer/session/autosave.hpp"
+#include "viewer/session/recent_files.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_pipeline.hpp"
+#include "viewer/session/undo_history.hpp"
 
 namespace nome::viewer {
 

@@ -1,4 +1,4 @@
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/stage_pipeline.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -1,4 +1,4 @@
-#include "viewer/session.hpp"
+#include "viewer/session/session.hpp"
 
 #include <algorithm>
 #include <cctype>

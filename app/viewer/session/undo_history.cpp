@@ -1,4 +1,4 @@
-#include "viewer/undo_history.hpp"
+#include "viewer/session/undo_history.hpp"
 
 namespace nome::viewer {
 

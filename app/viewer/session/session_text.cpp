@@ -1,6 +1,6 @@
 #include "nome/atomic_file.hpp"
 #include "nome/error.hpp"
-#include "viewer/session_controller.hpp"
+#include "viewer/session/session_controller.hpp"
 
 // The scene's text as the text pane edits it: applied and saved through the reload a change on disk makes.
 namespace nome::viewer {

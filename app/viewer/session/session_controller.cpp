@@ -1,4 +1,4 @@
-#include "viewer/session_controller.hpp"
+#include "viewer/session/session_controller.hpp"
 
 #include <algorithm>
 

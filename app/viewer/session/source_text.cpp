@@ -1,4 +1,4 @@
-#include "viewer/source_text.hpp"
+#include "viewer/session/source_text.hpp"
 
 #include <algorithm>
 

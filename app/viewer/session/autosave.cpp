@@ -1,10 +1,10 @@
-#include "viewer/autosave.hpp"
+#include "viewer/session/autosave.hpp"
 
 #include <cstdio>
 #include <cstdlib>
 
 #include "nome/scene/save_nome.hpp"
-#include "viewer/session.hpp"
+#include "viewer/session/session.hpp"
 
 namespace nome::viewer {
 namespace {
