@@ -4,7 +4,7 @@
 
 #include <imgui.h>
 
-#include "viewer/print_setup_panel.hpp"
+#include "viewer/tools/print_setup_tool.hpp"
 #include "viewer/window.hpp"
 
 // The panels in their places: the style for the screen, the layout of the sidebars, the log and the

@@ -1,4 +1,4 @@
-#include "viewer/print_check_panel.hpp"
+#include "viewer/tools/print_check_tool.hpp"
 #include "viewer/window.hpp"
 
 namespace nome::viewer {

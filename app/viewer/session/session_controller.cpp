@@ -4,7 +4,7 @@
 
 #include "nome/error.hpp"
 #include "viewer/layout.hpp"
-#include "viewer/picking.hpp"
+#include "viewer/view/picking.hpp"
 
 namespace nome::viewer {
 

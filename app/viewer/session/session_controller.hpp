@@ -7,15 +7,15 @@
 #include <utility>
 #include <vector>
 
-#include "viewer/actions.hpp"
+#include "viewer/commands/actions.hpp"
 #include "viewer/message_log.hpp"
-#include "viewer/rim_picking.hpp"
-#include "viewer/selection.hpp"
 #include "viewer/session/autosave.hpp"
 #include "viewer/session/recent_files.hpp"
 #include "viewer/session/session.hpp"
 #include "viewer/session/stage_pipeline.hpp"
 #include "viewer/session/undo_history.hpp"
+#include "viewer/view/rim_picking.hpp"
+#include "viewer/view/selection.hpp"
 
 namespace nome::viewer {
 

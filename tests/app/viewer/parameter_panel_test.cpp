@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "app/viewer_support.hpp"
-#include "viewer/parameter_panel.hpp"
+#include "viewer/panels/parameter_panel.hpp"
 #include "viewer/session/session.hpp"
 
 using namespace nome;

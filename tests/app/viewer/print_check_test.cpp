@@ -10,7 +10,7 @@
 #include "nome/ops/subdivide.hpp"
 #include "render/image.hpp"
 #include "support/shapes.hpp"
-#include "viewer/print_check_view.hpp"
+#include "viewer/tools/print_check_job.hpp"
 #include "viewer/window.hpp"
 
 using namespace nome;

@@ -1,0 +1,69 @@
+#include "viewer/tools/print_check_tool.hpp"
+
+#include <cstdio>
+
+#include <imgui.h>
+
+namespace nome::viewer {
+namespace {
+
+constexpr std::size_t listed_places = 24;
+
+void draw_verdict(const PrintCheckRun& run, bool is_current) {
+  const PrintCheck& check = run.check;
+  const ImVec4 color =
+      check.is_printable() ? ImVec4(0.1f, 0.6f, 0.25f, 1.0f) : ImVec4(0.85f, 0.1f, 0.1f, 1.0f);
+  ImGui::TextColored(color, "%s", check.is_printable() ? "printable" : "not printable");
+  ImGui::SameLine();
+  ImGui::TextDisabled("(%.2f s%s)", run.seconds, is_current ? "" : ", out of date");
+  ImGui::Text("offset %g, wall %g", check.offset_distance, check.min_wall);
+  ImGui::Text("fold-over faces %zu", check.fold_over_faces.size());
+  ImGui::Text("crossing faces %zu (%u curves)", check.crossings.faces.size(), check.crossings.curves);
+  ImGui::Text("near-miss vertices %zu", check.near_misses.size());
+}
+
+// One selectable row per place, worst first; returns the clicked one.
+std::optional<std::size_t> draw_places(const PrintCheck& check) {
+  std::optional<std::size_t> clicked;
+  char label[160];
+  for (std::size_t i = 0; i < check.places.size() && i < listed_places; ++i) {
+    const PrintPlace& p = check.places[i];
+    if (p.kind == FindingKind::near_miss)
+      std::snprintf(label, sizeof label, "%s  gap %.4g  (%u vertices)##place%zu", to_string(p.kind),
+                    p.distance, p.size, i);
+    else
+      std::snprintf(label, sizeof label, "%s  face %u  (%u %s)##place%zu", to_string(p.kind), p.face, p.size,
+                    p.kind == FindingKind::crossing ? "pairs" : "faces", i);
+    if (ImGui::Selectable(label)) clicked = i;
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("at (%.4g, %.4g, %.4g): click to frame it", p.position.x, p.position.y, p.position.z);
+  }
+  if (check.places.size() > listed_places) ImGui::TextDisabled("... %zu places in all", check.places.size());
+  return clicked;
+}
+
+}  // namespace
+
+std::optional<std::size_t> draw_print_check_section(const ActionRegistry& actions, PrintCheckView& view,
+                                                    bool is_current) {
+  if (!ImGui::CollapsingHeader("Print check", ImGuiTreeNodeFlags_DefaultOpen)) return std::nullopt;
+  if (ImGui::Button("Check now")) actions.run(Action::print_check);
+  ImGui::SameLine();
+  ImGui::Checkbox("after each change", &view.is_automatic);
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+  double wall = view.min_wall;
+  if (ImGui::InputDouble("minimum wall", &wall, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue))
+    view.min_wall = wall > 0.0 ? wall : 0.0;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: twice the offset distance");
+  if (view.is_busy()) ImGui::Text("checking ... %d%%", int(view.progress() * 100.0));
+  const PrintCheckRun* run = view.last();
+  if (!run) {
+    if (!view.is_busy()) ImGui::TextDisabled("not checked yet");
+    return std::nullopt;
+  }
+  draw_verdict(*run, is_current);
+  ImGui::TextDisabled("red: crossings, magenta: fold-overs, orange: too thin");
+  return draw_places(run->check);
+}
+
+}  // namespace nome::viewer
