@@ -155,6 +155,12 @@ bool ActionRegistry::press(int key, KeyModifier modifiers) const {
     run(row.action);
     return true;
   }
+  for (std::size_t i = 0; i < tool_commands_.size(); ++i) {
+    const ToolCommandInfo& row = tool_commands_[i];
+    if (row.key == 0 || row.key != key || row.modifiers != modifiers) continue;
+    tool_handlers_[i]();
+    return true;
+  }
   return false;
 }
 
@@ -165,7 +171,24 @@ bool ActionRegistry::press(const std::string& label) const {
     run(row.action);
     return true;
   }
+  for (std::size_t i = 0; i < tool_commands_.size(); ++i) {
+    const ToolCommandInfo& row = tool_commands_[i];
+    if (row.key == 0 || lower(key_label(row.key, row.modifiers)) != wanted) continue;
+    tool_handlers_[i]();
+    return true;
+  }
   return false;
+}
+
+void ActionRegistry::add(ToolCommandInfo info, Handler handler) {
+  tool_commands_.push_back(std::move(info));
+  tool_handlers_.push_back(std::move(handler));
+}
+
+std::optional<bool> ActionRegistry::run_tool_command(const std::string& name) const {
+  for (std::size_t i = 0; i < tool_commands_.size(); ++i)
+    if (tool_commands_[i].name == name) return tool_handlers_[i]();
+  return std::nullopt;
 }
 
 }  // namespace nome::viewer

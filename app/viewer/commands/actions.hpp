@@ -90,7 +90,17 @@ std::string shortcut(Action action);
 // "Ctrl+Shift+F1", "W", "?" from a GLFW key code and modifiers.
 std::string key_label(int key, KeyModifier modifiers);
 
-// What each action does in this window: keys and labels are looked up in the table.
+// A command a tool adds beside the table's: its script name (`tool NAME`), its key (0: none) and the help
+// overlay's words.
+struct ToolCommandInfo {
+  std::string name;
+  int key = 0;  // a GLFW key code
+  KeyModifier modifiers = KeyModifier::none;
+  std::string description;
+};
+
+// What each action does in this window: keys and labels are looked up in the table, then in the tools'
+// commands.
 class ActionRegistry {
  public:
   // The handler returns false when it refused (and logged why).
@@ -104,8 +114,16 @@ class ActionRegistry {
   // Runs the action with this shortcut label (case-insensitive: "w", "ctrl+z"); false when none has it.
   bool press(const std::string& label) const;
 
+  // A tool's own command; a key the table has already stays the table's.
+  void add(ToolCommandInfo info, Handler handler);
+  // Runs the tool command of this name; none when no tool has it, else whether it did its work.
+  std::optional<bool> run_tool_command(const std::string& name) const;
+  const std::vector<ToolCommandInfo>& tool_commands() const { return tool_commands_; }
+
  private:
   std::vector<Handler> handlers_;
+  std::vector<ToolCommandInfo> tool_commands_;
+  std::vector<Handler> tool_handlers_;  // by tool command
 };
 
 }  // namespace nome::viewer

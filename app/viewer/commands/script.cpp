@@ -68,6 +68,7 @@ const Syntax syntaxes[] = {
     {"state", ScriptCommand::Kind::state, 0, 0, "state (logs the topology line, selection and edit counts)"},
     {"text-set", ScriptCommand::Kind::text_set, 1, 0, "text-set PATH (the text pane's text, not applied)"},
     {"log-click", ScriptCommand::Kind::log_click, 0, 1, "log-click N (the N-th newest log message)"},
+    {"tool", ScriptCommand::Kind::tool, 1, 0, "tool NAME (a command a tool adds)"},
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 
@@ -132,6 +133,7 @@ const char* script_synopsis() {
          "                            action apply-text, action save-text)\n"
          "  log-click N               click the N-th newest log message (1: the newest): a located\n"
          "                            one puts the text pane's cursor at its line and column\n"
+         "  tool NAME                 run a command a tool adds (listed with its key in the help)\n"
          "  quit                      end the session (without asking: key Ctrl+Q asks)\n";
 }
 

@@ -31,6 +31,7 @@ struct ScriptCommand {
     state,
     text_set,
     log_click,
+    tool,
     quit
   };
   Kind kind = Kind::quit;

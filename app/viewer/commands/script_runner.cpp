@@ -5,15 +5,6 @@
 namespace nome::viewer {
 namespace {
 
-SelectionMode mode_named(const std::string& word) {
-  if (word == "face") return SelectionMode::face;
-  if (word == "border") return SelectionMode::border;
-  if (word == "border-partial") return SelectionMode::border_partial;
-  if (word == "edge") return SelectionMode::edge;
-  if (word == "instance") return SelectionMode::instance;
-  return SelectionMode::vertex;
-}
-
 ScrolledPanel panel_named(const std::string& word) {
   if (word == "controls") return ScrolledPanel::controls;
   if (word == "log") return ScrolledPanel::log;
@@ -51,9 +42,6 @@ bool run_input_command(ScriptHost& host, const ScriptCommand& c) {
   using Kind = ScriptCommand::Kind;
   const glm::dvec2 pixel = c.numbers.size() == 2 ? glm::dvec2(c.numbers[0], c.numbers[1]) : glm::dvec2(0.0);
   switch (c.kind) {
-    case Kind::mode:
-      host.set_mode(mode_named(c.words[0]));
-      return true;
     case Kind::click:
       host.click(pixel);
       return true;
@@ -75,8 +63,6 @@ bool run_input_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::scroll:
       host.scroll(panel_named(c.words[0]), c.numbers[0]);
       return true;
-    case Kind::log_click:
-      return host.click_log(int(c.numbers[0]));
     default:
       return false;
   }
@@ -87,8 +73,12 @@ bool run_input_command(ScriptHost& host, const ScriptCommand& c) {
 bool run_command(ScriptHost& host, const ScriptCommand& c) {
   using Kind = ScriptCommand::Kind;
   switch (c.kind) {
+    case Kind::mode:
     case Kind::color:
-      return host.color_instances(glm::vec3(c.numbers[0], c.numbers[1], c.numbers[2]));
+    case Kind::text_set:
+    case Kind::log_click:
+    case Kind::tool:
+      return host.run_tool_script(c);
     case Kind::screenshot:
       host.take_screenshot(c.words[0]);
       return true;
@@ -119,13 +109,9 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::state:
       host.print_state();
       return true;
-    case Kind::text_set:
-      host.set_text(c.words[0]);
-      return true;
     case Kind::quit:
       host.quit();
       return true;
-    case Kind::mode:
     case Kind::click:
     case Kind::double_click:
     case Kind::drop:
@@ -134,7 +120,6 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::action:
     case Kind::view:
     case Kind::scroll:
-    case Kind::log_click:
       return run_input_command(host, c);
   }
   return false;

@@ -5,14 +5,12 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
-#include <glm/vec3.hpp>
 
 #include "viewer/commands/actions.hpp"
 #include "viewer/commands/script.hpp"
 #include "viewer/message_log.hpp"
 #include "viewer/panels/panels.hpp"
 #include "viewer/panels/prompt_dialog.hpp"
-#include "viewer/view/selection.hpp"
 
 namespace nome::viewer {
 
@@ -21,10 +19,7 @@ namespace nome::viewer {
 class ScriptHost {
  public:
   virtual ~ScriptHost() = default;
-  virtual void set_mode(SelectionMode mode) = 0;
   virtual void click(glm::dvec2 pixel) = 0;
-  // Gives the selected instances a colour; false when refused (logged).
-  virtual bool color_instances(glm::vec3 color) = 0;
   // False when no surface is under the pixel.
   virtual bool double_click(glm::dvec2 pixel) = 0;
   virtual bool drop(const std::vector<std::filesystem::path>& paths) = 0;
@@ -49,10 +44,9 @@ class ScriptHost {
   // consolidated and temporary face counts, as one `state: ...` line.
   virtual void print_state() = 0;
   virtual void scroll(ScrolledPanel panel, double pixels) = 0;
-  // The text pane's text becomes the file's, as if typed (script `text-set`).
-  virtual void set_text(const std::filesystem::path& path) = 0;
-  // Clicks the `back`-th newest log message (1: the newest); throws when it names no place.
-  virtual bool click_log(int back) = 0;
+  // A command the window's tools answer (mode, color, text-set, log-click, tool NAME); false when it
+  // failed; throws InvalidInputError when no tool takes it.
+  virtual bool run_tool_script(const ScriptCommand& command) = 0;
   virtual void quit() = 0;
 };
 

@@ -8,43 +8,6 @@
 namespace nome::viewer {
 namespace {
 
-// The selected edges' crease weights on the shown mesh: one, or their range.
-void draw_selected_sharpness(const Selection& selection, const Mesh* shown) {
-  if (!shown || selection.edges().empty()) return;
-  float low = infinite_sharpness, high = 0.0f;
-  for (Index e : selection.edges()) {
-    low = std::min(low, shown->edge_sharpness(e));
-    high = std::max(high, shown->edge_sharpness(e));
-  }
-  const std::string text =
-      low == high ? sharpness_text(low) : sharpness_text(low) + " to " + sharpness_text(high);
-  ImGui::Text("sharpness: %s", text.c_str());
-}
-
-bool draw_selection_section(const ActionRegistry& actions, Selection& selection, glm::vec3& instance_color,
-                            const Mesh* shown) {
-  int mode = int(selection.mode());
-  const char* labels[] = {"vertex", "face", "border (whole)", "border (partial)", "edge", "instance"};
-  for (int i = 0; i < 6; ++i) {
-    if (ImGui::RadioButton(labels[i], &mode, i)) selection.set_mode(SelectionMode(i));
-    if (i % 2 == 0) ImGui::SameLine(130);
-  }
-  ImGui::NewLine();
-  ImGui::Text("%zu vertices, %zu faces, %zu edges, %zu borders", selection.vertices().size(),
-              selection.faces().size(), selection.edges().size(), selection.borders().size());
-  draw_selected_sharpness(selection, shown);
-  if (ImGui::Button("Clear selection")) actions.run(Action::clear_selection);
-  if (selection.mode() != SelectionMode::instance) return false;
-  // Report 8.4: selected instances take a surface colour, saved with the scene.
-  ImGui::Text("%zu instances selected", selection.instances().size());
-  ImGui::ColorEdit3("instance colour", &instance_color.x, ImGuiColorEditFlags_NoInputs);
-  ImGui::SameLine();
-  ImGui::BeginDisabled(selection.instances().empty());
-  const bool is_applied = ImGui::Button("Colour selected");
-  ImGui::EndDisabled();
-  return is_applied;
-}
-
 // The crease method and the smooth-triangle rule (OpenSubdiv's `t creasemethod`, `t smoothtriangles`).
 void draw_crease_controls(CreaseOptions& creases) {
   int method = int(creases.method);
@@ -188,10 +151,6 @@ ControlPanelChanges draw_color_section(const ControlPanelModel& model) {
 
 ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPanelModel model) {
   ControlPanelChanges changes;
-  bool is_instance_color_applied = false;
-  if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
-    is_instance_color_applied =
-        draw_selection_section(actions, model.selection, model.instance_color, model.shown);
   if (ImGui::CollapsingHeader("Stage", ImGuiTreeNodeFlags_DefaultOpen)) {
     if (model.sif_pairing) {
       bool is_paired = *model.sif_pairing;
@@ -205,7 +164,6 @@ ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPan
   }
   if (ImGui::CollapsingHeader("Edit", ImGuiTreeNodeFlags_DefaultOpen)) draw_edit_section(actions, model);
   if (ImGui::CollapsingHeader("Colours")) changes = draw_color_section(model);
-  changes.is_instance_color_applied = is_instance_color_applied;
   return changes;
 }
 

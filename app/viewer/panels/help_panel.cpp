@@ -15,7 +15,7 @@ void draw_row(const char* what, const char* does) {
 
 }  // namespace
 
-void draw_help_overlay(bool& is_shown) {
+void draw_help_overlay(const ActionRegistry& actions, bool& is_shown) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(0.92f);
@@ -33,6 +33,8 @@ void draw_help_overlay(bool& is_shown) {
     draw_row("double click", "orbit around the point clicked");
     for (const ActionInfo& row : action_table())
       if (row.key != 0) draw_row(key_label(row.key, row.modifiers).c_str(), row.description);
+    for (const ToolCommandInfo& row : actions.tool_commands())
+      if (row.key != 0) draw_row(key_label(row.key, row.modifiers).c_str(), row.description.c_str());
     ImGui::EndTable();
   }
   ImGui::End();

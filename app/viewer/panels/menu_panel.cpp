@@ -81,7 +81,7 @@ void draw_view_menu(const ActionRegistry& actions, render::DisplaySettings& disp
   ImGui::MenuItem("Parameters sidebar", nullptr, &layout.is_right_shown);
   action_item(actions, "Hide / show both sidebars", Action::toggle_sidebars);
   ImGui::MenuItem("Log open", shortcut(Action::toggle_log).c_str(), &layout.is_log_open);
-  ImGui::MenuItem("Scene text", shortcut(Action::toggle_text_pane).c_str(), &layout.is_text_shown);
+  ImGui::MenuItem("Scene text", shortcut(Action::toggle_text_pane).c_str(), &layout.is_pane_shown);
   ImGui::MenuItem("Dark theme", nullptr, &layout.is_dark);
 }
 

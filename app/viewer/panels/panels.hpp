@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <imgui.h>
 #include <glm/vec3.hpp>
@@ -51,9 +52,8 @@ struct MenuContext {
 std::optional<std::filesystem::path> draw_main_menu(const ActionRegistry& actions, const MenuContext& context,
                                                     render::DisplaySettings& display, LayoutSettings& layout);
 
-// The control panel's state: selection mode, stage settings, edit buttons, colours.
+// The control panel's state: stage settings, edit buttons, colours.
 struct ControlPanelModel {
-  Selection& selection;
   PipelineSettings& settings;
   ZipperOptions& zipper;
   render::DisplaySettings& display;
@@ -62,17 +62,14 @@ struct ControlPanelModel {
   bool can_edit;
   bool is_parameter_lock_on;
   std::optional<bool> sif_pairing;  // a .sif file is open: whether its triangles are paired
-  glm::vec3& instance_color;        // the colour picker's, for the selected instances
   float& sharpness;                 // the weight K gives the selected edges
-  const Mesh* shown;                // the shown stage's mesh (the selection is on it), if any
 };
 // What the control panel changed that needs the renderer told.
 struct ControlPanelChanges {
   bool is_selection_changed = false;
   bool is_edit_color_changed = false;
-  bool is_instance_color_applied = false;  // "Colour selected instances" was pressed
 };
-// Draws into the current window (the left sidebar).
+// Draws into the current window (the left sidebar, under the tools' sections there).
 ControlPanelChanges draw_control_panel(const ActionRegistry& actions, ControlPanelModel model);
 
 // The shown stage's report and its bounding box's size (in the export unit: mm).
@@ -93,15 +90,13 @@ struct StatusLine {
   Stage stage = Stage::scene;
   Index vertices = 0;
   Index faces = 0;
-  SelectionMode mode = SelectionMode::vertex;
-  glm::dvec3 size{0.0};   // the bounding box of the shown stage
-  std::string instances;  // the selected instances' paths, comma-separated
-  std::string statement;  // "line 7": where the selected face or vertex was made
+  glm::dvec3 size{0.0};            // the bounding box of the shown stage
+  std::vector<std::string> notes;  // the tools' words ("vertex mode", "line 7"), in their order
 };
 // "12.5 x 8 x 3.25 mm": a bounding box's size in the export unit.
 std::string size_text(const glm::dvec3& size);
 void draw_status_bar(const std::optional<StatusLine>& status, const MessageLog& log);
-void draw_help_overlay(bool& is_shown);
+void draw_help_overlay(const ActionRegistry& actions, bool& is_shown);
 // The spinner while a stage takes longer than a frame, with the kernel task and its percentage once the
 // pipeline reports them.
 void draw_progress(double seconds_running, const WorkProgress& progress);

@@ -29,16 +29,11 @@ void draw_status_bar(const std::optional<StatusLine>& status, const MessageLog& 
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::Begin("##status", nullptr, flags);
   if (status) {
-    ImGui::Text("%s%s | %s stage: %u V, %u F, %s | %s mode", status->file.c_str(),
-                status->is_modified ? " *" : "", to_string(status->stage), status->vertices, status->faces,
-                size_text(status->size).c_str(), to_string(status->mode));
-    if (!status->instances.empty()) {
+    ImGui::Text("%s%s | %s stage: %u V, %u F, %s", status->file.c_str(), status->is_modified ? " *" : "",
+                to_string(status->stage), status->vertices, status->faces, size_text(status->size).c_str());
+    for (const std::string& note : status->notes) {
       ImGui::SameLine();
-      ImGui::Text("| instances %s", status->instances.c_str());
-    }
-    if (!status->statement.empty()) {
-      ImGui::SameLine();
-      ImGui::Text("| %s", status->statement.c_str());
+      ImGui::Text("| %s", note.c_str());
     }
   } else {
     ImGui::TextUnformatted("no file: File > Open (Ctrl+O) or drop a file on the window");

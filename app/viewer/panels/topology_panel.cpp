@@ -33,6 +33,12 @@ void draw_topology_section(const TopologyReport& report, const glm::dvec3& size)
   ImGui::Text("%s, %u borders, %u Möbius edges", report.orientable ? "orientable" : "non-orientable",
               report.borders, report.mobius_edges);
   constexpr std::size_t shown_rows = 64;
+  // Many parts make a long table: a line that opens it.
+  constexpr std::size_t parts_in_a_line = 4;
+  if (report.components.size() > parts_in_a_line &&
+      !ImGui::TreeNode("parts", "%zu parts (table)", report.components.size()))
+    return;
+  const bool is_tree_open = report.components.size() > parts_in_a_line;
   if (ImGui::BeginTable("components", 8, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
     for (const char* title : {"#", "V", "E", "F", "chi", "or.", "b", "g"}) ImGui::TableSetupColumn(title);
     ImGui::TableHeadersRow();
@@ -42,6 +48,7 @@ void draw_topology_section(const TopologyReport& report, const glm::dvec3& size)
   }
   if (report.components.size() > shown_rows)
     ImGui::Text("... %zu components in all", report.components.size());
+  if (is_tree_open) ImGui::TreePop();
 }
 
 }  // namespace nome::viewer

@@ -16,6 +16,23 @@ std::string measure_length_text(double length) {
   return text;
 }
 
+void MeasureTool::bind(ToolContext& context) {
+  context.actions.bind(Action::measure_distance, [this] { return toggle(MeasureMode::distance), true; });
+  context.actions.bind(Action::measure_wall, [this] { return toggle(MeasureMode::wall), true; });
+}
+
+bool MeasureTool::click(ToolContext& context, glm::dvec2 pixel) {
+  const StageResult* shown = context.stage.shown();
+  if (mode_ == MeasureMode::off || !shown) return false;
+  const Ray ray = ray_through_pixel(context.view.projection(context.layout.viewport), pixel);
+  context.log.info(click(*shown->mesh, context.stage.picking_bvh(), ray));
+  return true;
+}
+
+void MeasureTool::draw_overlay(ToolContext& context) {
+  draw_overlay(context.view.projection(context.layout.viewport));
+}
+
 void MeasureTool::toggle(MeasureMode mode) {
   mode_ = mode_ == mode ? MeasureMode::off : mode;
   first_.reset();

@@ -6,6 +6,7 @@
 #include "nome/mesh/mesh.hpp"
 #include "nome/query/screen_projection.hpp"
 #include "nome/query/triangle_bvh.hpp"
+#include "viewer/tools/tool.hpp"
 
 namespace nome::viewer {
 
@@ -24,8 +25,14 @@ struct Measurement {
 // The viewer's measuring (M: distance, Shift+M: wall thickness): clicks cast the picking ray at the shown
 // stage; the result is logged, listed in the Measure section and drawn over the view, in mm (the export
 // unit).
-class MeasureTool {
+class MeasureTool final : public Tool {
  public:
+  std::string title() const override { return "Measure"; }
+  void bind(ToolContext& context) override;
+  bool click(ToolContext& context, glm::dvec2 pixel) override;
+  void draw_section(ToolContext&) override { draw_section(); }
+  void draw_overlay(ToolContext& context) override;
+
   MeasureMode mode() const { return mode_; }
   // Switches to `mode`, or off when it is on already; forgets a half-made distance.
   void toggle(MeasureMode mode);

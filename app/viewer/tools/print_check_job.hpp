@@ -14,11 +14,9 @@
 #include "viewer/session/background_job.hpp"
 #include "viewer/session/session.hpp"
 #include "viewer/session/stage_view.hpp"
+#include "viewer/tools/tool.hpp"
 
 namespace nome::viewer {
-
-// A face of the shown mesh and the RGBA colour painted over its own.
-using FacePaint = std::pair<Index, std::array<std::uint8_t, 4>>;
 
 // The check's own pipeline, its runs serialised (a superseded check may still be running).
 struct CheckPipeline {
@@ -36,7 +34,7 @@ struct PrintCheckRun {
   double seconds = 0.0;
 };
 
-// The viewer's print check (issue 17): checks the surface the offset thickens (the subdivided stage, with
+// The viewer's print check: checks the surface the offset thickens (the subdivided stage, with
 // the stage settings' offset distance) off the UI thread, on demand or once the geometry has rested after a
 // change, and tells the window which faces of the shown stage to paint and where the places are.
 class PrintCheckView {

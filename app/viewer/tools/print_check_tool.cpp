@@ -44,26 +44,72 @@ std::optional<std::size_t> draw_places(const PrintCheck& check) {
 
 }  // namespace
 
-std::optional<std::size_t> draw_print_check_section(const ActionRegistry& actions, PrintCheckView& view,
-                                                    bool is_current) {
-  if (!ImGui::CollapsingHeader("Print check", ImGuiTreeNodeFlags_DefaultOpen)) return std::nullopt;
-  if (ImGui::Button("Check now")) actions.run(Action::print_check);
+void PrintCheckTool::bind(ToolContext& context) {
+  context.actions.bind(Action::print_check, [this, &context] {
+    const Session* session = context.sessions.session();
+    if (!session) {
+      context.log.warning("print check: open a scene or mesh first");
+      return false;
+    }
+    job_.request(*session, context.stage.settings());
+    return true;
+  });
+  context.actions.bind(Action::next_print_place, [this, &context] {
+    if (!job_.last() || job_.last()->check.places.empty()) {
+      context.log.warning("print check: no places to frame (run the check first)");
+      return false;
+    }
+    const std::size_t place = job_.next_place();
+    context.view.frame(job_.place_box(place), {}, context.layout.viewport);
+    return true;
+  });
+}
+
+void PrintCheckTool::update(ToolContext& context) {
+  const Session* session = context.sessions.session();
+  if (!session) return;
+  try {
+    if (!job_.update(context.stage, *session, context.platform.now())) return;
+  } catch (const std::exception& e) {
+    context.log.error("print check: " + std::string(e.what()));
+    return;
+  }
+  const PrintCheck& check = job_.last()->check;
+  context.log.info("print check: " + std::string(check.is_printable() ? "printable" : "not printable") +
+                   " (" + std::to_string(check.fold_over_faces.size()) + " fold-over faces, " +
+                   std::to_string(check.crossings.faces.size()) + " crossing faces, " +
+                   std::to_string(check.near_misses.size()) + " near-miss vertices)");
+  context.paint_faces();
+  context.refresh_selection();
+}
+
+std::vector<FacePaint> PrintCheckTool::face_paints(const ToolContext& context) const {
+  const StageResult* shown = context.stage.shown();
+  if (!shown) return {};
+  return job_.face_paints(*shown, context.stage.settings());
+}
+
+void PrintCheckTool::draw_section(ToolContext& context) {
+  const Session* session = context.sessions.session();
+  const bool is_current = session && job_.is_current(*session, context.stage.settings());
+  if (ImGui::Button("Check now")) context.actions.run(Action::print_check);
   ImGui::SameLine();
-  ImGui::Checkbox("after each change", &view.is_automatic);
+  ImGui::Checkbox("after each change", &job_.is_automatic);
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-  double wall = view.min_wall;
+  double wall = job_.min_wall;
   if (ImGui::InputDouble("minimum wall", &wall, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue))
-    view.min_wall = wall > 0.0 ? wall : 0.0;
+    job_.min_wall = wall > 0.0 ? wall : 0.0;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: twice the offset distance");
-  if (view.is_busy()) ImGui::Text("checking ... %d%%", int(view.progress() * 100.0));
-  const PrintCheckRun* run = view.last();
+  if (job_.is_busy()) ImGui::Text("checking ... %d%%", int(job_.progress() * 100.0));
+  const PrintCheckRun* run = job_.last();
   if (!run) {
-    if (!view.is_busy()) ImGui::TextDisabled("not checked yet");
-    return std::nullopt;
+    if (!job_.is_busy()) ImGui::TextDisabled("not checked yet");
+    return;
   }
   draw_verdict(*run, is_current);
   ImGui::TextDisabled("red: crossings, magenta: fold-overs, orange: too thin");
-  return draw_places(run->check);
+  if (const auto place = draw_places(run->check))
+    context.view.frame(job_.place_box(*place), {}, context.layout.viewport);
 }
 
 }  // namespace nome::viewer

@@ -52,4 +52,23 @@ std::optional<PrintPlacementOptions> draw_print_setup_section(const PrintPlaceme
   return edited;
 }
 
+void PrintSetupTool::draw_section(ToolContext& context) {
+  const scene::Scene* scene = context.sessions.scene();
+  if (!scene) {
+    ImGui::TextDisabled("open a scene (.nome) to prepare it for printing");
+    return;
+  }
+  const std::vector<Index>& faces = context.selection.faces();
+  const std::optional<Index> face = faces.size() == 1 ? std::optional(faces.front()) : std::nullopt;
+  if (const auto changed =
+          draw_print_setup_section(scene->print_setup().value_or(PrintPlacementOptions{}), face))
+    context.sessions.set_print_setup(*changed);
+}
+
+std::optional<Mesh> PrintSetupTool::exported(const ToolContext& context, const Mesh& shown) const {
+  const scene::Scene* scene = context.sessions.scene();
+  if (!scene || !scene->print_setup()) return std::nullopt;
+  return placed_for_print(shown, *scene->print_setup());
+}
+
 }  // namespace nome::viewer

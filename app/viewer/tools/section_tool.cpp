@@ -49,4 +49,18 @@ void apply_section(const SectionState& state, const render::Camera& camera, cons
   display.fills_section = is_solid;
 }
 
+void SectionTool::bind(ToolContext& context) {
+  context.actions.bind(Action::toggle_section, [this] { return state_.is_on = !state_.is_on, true; });
+}
+
+void SectionTool::before_draw(ToolContext& context) {
+  const StageResult* shown = context.stage.shown();
+  apply_section(state_, context.view.camera(), 0.5 * (context.shown_low + context.shown_high),
+                shown && shown->stage >= Stage::offset, context.display);
+}
+
+void SectionTool::draw_section(ToolContext& context) {
+  draw_section_panel(state_, context.shown_low, context.shown_high);
+}
+
 }  // namespace nome::viewer

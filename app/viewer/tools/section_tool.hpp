@@ -5,6 +5,7 @@
 #include "nome/mesh/mesh.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
+#include "viewer/tools/tool.hpp"
 
 namespace nome::viewer {
 
@@ -29,5 +30,20 @@ void draw_section_panel(SectionState& state, const glm::dvec3& low, const glm::d
 // whose cut is filled.
 void apply_section(const SectionState& state, const render::Camera& camera, const glm::dvec3& centre,
                    bool is_solid, render::DisplaySettings& display);
+
+// The section plane as a tool: its key (C), its sidebar section, and the plane set on the display each
+// frame.
+class SectionTool final : public Tool {
+ public:
+  std::string title() const override { return "Section"; }
+  void bind(ToolContext& context) override;
+  void before_draw(ToolContext& context) override;
+  void draw_section(ToolContext& context) override;
+
+  const SectionState& state() const { return state_; }
+
+ private:
+  SectionState state_;
+};
 
 }  // namespace nome::viewer

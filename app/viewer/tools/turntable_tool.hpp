@@ -4,12 +4,23 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "viewer/tools/tool.hpp"
+
 namespace nome::viewer {
 
 // The viewer's turntable (T): while on, the view turns about the vertical axis at a steady speed, one
 // turn in seconds_per_turn whatever the frame rate, as `nome render --turntable` does in frames.
-class TurntableMode {
+class TurntableTool final : public Tool {
  public:
+  void bind(ToolContext& context) override {
+    context.actions.bind(Action::toggle_turntable, [this, &context] {
+      toggle(context.platform.now());
+      return true;
+    });
+  }
+  void before_draw(ToolContext& context) override { context.view.turn(advance(context.platform.now())); }
+  bool is_animating() const override { return is_on_; }
+
   static constexpr double seconds_per_turn = 12.0;
 
   bool is_on() const { return is_on_; }
