@@ -8,16 +8,20 @@
 namespace nome::viewer {
 namespace {
 
+// The next item takes this part of the width left on its line: the sidebar may be narrow.
+void set_width_part(float part) {
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * part);
+}
+
 // The crease method and the smooth-triangle rule (OpenSubdiv's `t creasemethod`, `t smoothtriangles`).
 void draw_crease_controls(CreaseOptions& creases) {
   int method = int(creases.method);
   const char* methods[] = {to_string(CreaseMethod::uniform), to_string(CreaseMethod::chaikin)};
-  ImGui::SetNextItemWidth(120);
+  set_width_part(0.5f);
   if (ImGui::Combo("creases", &method, methods, IM_ARRAYSIZE(methods))) creases.method = CreaseMethod(method);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "how semi-sharp weights decay: uniform (1 per level) or Chaikin (evened out along a crease)");
-  ImGui::SameLine();
   ImGui::Checkbox("smooth triangles", &creases.smooth_triangles);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("OpenSubdiv's smooth triangle rule: edge points beside a triangle lean to its centre");
@@ -27,29 +31,28 @@ void draw_stage_section(const ActionRegistry& actions, PipelineSettings& setting
   int stage = int(settings.stage);
   const char* stages[] = {to_string(Stage::scene), to_string(Stage::merged), to_string(Stage::subdivided),
                           to_string(Stage::offset), to_string(Stage::subdivided_offset)};
-  ImGui::SetNextItemWidth(200);
+  set_width_part(0.7f);
   if (ImGui::Combo("show", &stage, stages, IM_ARRAYSIZE(stages))) settings.stage = Stage(stage);
   if (ImGui::Button("Merge")) actions.run(Action::merge);
   ImGui::SameLine();
   float tolerance = float(settings.merge_tolerance);
-  ImGui::SetNextItemWidth(120);
+  set_width_part(0.5f);
   if (ImGui::InputFloat("tolerance", &tolerance, 0.0f, 0.0f, "%.5f", ImGuiInputTextFlags_EnterReturnsTrue))
     settings.merge_tolerance = std::max(0.0f, tolerance);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("0: a thousandth of the scene's size");
   ImGui::Checkbox("subdivide the merged mesh", &settings.should_merge);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("off: the scene's pieces are subdivided each on its own");
-  ImGui::SetNextItemWidth(120);
+  set_width_part(0.4f);
   ImGui::SliderInt("subdivision", &settings.subdivision_levels, 0, 6);
-  ImGui::SameLine();
   int rule = int(settings.rule);
   const char* rules[] = {"classic", "report"};
-  ImGui::SetNextItemWidth(80);
-  if (ImGui::Combo("##rule", &rule, rules, IM_ARRAYSIZE(rules))) settings.rule = SubdivisionRule(rule);
+  set_width_part(0.5f);
+  if (ImGui::Combo("rule", &rule, rules, IM_ARRAYSIZE(rules))) settings.rule = SubdivisionRule(rule);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("smooth-vertex rule: Catmull-Clark's or the 2016 report's");
   int boundary = int(settings.boundary);
   const char* boundaries[] = {to_string(BoundaryMode::none), to_string(BoundaryMode::edge_only),
                               to_string(BoundaryMode::edge_and_corner)};
-  ImGui::SetNextItemWidth(200);
+  set_width_part(0.7f);
   if (ImGui::Combo("border", &boundary, boundaries, IM_ARRAYSIZE(boundaries)))
     settings.boundary = BoundaryMode(boundary);
   if (ImGui::IsItemHovered())
@@ -58,11 +61,11 @@ void draw_stage_section(const ActionRegistry& actions, PipelineSettings& setting
         "none: faces touching the border shape their neighbours but are not shown");
   draw_crease_controls(settings.creases);
   float distance = float(settings.offset_distance);
-  ImGui::SetNextItemWidth(120);
+  set_width_part(0.5f);
   if (ImGui::SliderFloat("offset", &distance, 0.001f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic))
     settings.offset_distance = std::max(distance, 1e-6f);
-  ImGui::SetNextItemWidth(120);
-  ImGui::SliderInt("subdivision after offset", &settings.subdivision_after, 0, 4);
+  set_width_part(0.35f);
+  ImGui::SliderInt("levels after offset", &settings.subdivision_after, 0, 4);
 }
 
 // The marker of edits a slider left without their vertices: kept, hidden, back when the slider returns.
@@ -87,7 +90,7 @@ void draw_sharpness_control(float& sharpness) {
   ImGui::SameLine();
   ImGui::BeginDisabled(is_infinite);
   float weight = std::min(sharpness, infinite_sharpness);
-  ImGui::SetNextItemWidth(90);
+  set_width_part(0.45f);
   if (ImGui::SliderFloat("sharpness", &weight, 0.0f, infinite_sharpness, "%.2f")) sharpness = weight;
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
@@ -95,8 +98,11 @@ void draw_sharpness_control(float& sharpness) {
 }
 
 void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& model) {
-  if (!is_editable(model.settings.stage))
+  if (!is_editable(model.settings.stage)) {
+    ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s is computed: edit on scene or merged", to_string(model.settings.stage));
+    ImGui::PopTextWrapPos();
+  }
   ImGui::BeginDisabled(!model.can_edit);
   if (ImGui::Button("Add polygon")) actions.run(Action::add_polygon);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("through the selected vertices, in click order (Enter)");
@@ -107,9 +113,8 @@ void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& m
     ImGui::SetTooltip("give the selected edges the sharpness, or smooth them if all have it (K)");
   ImGui::SameLine();
   if (ImGui::Button("Zip borders")) actions.run(Action::zip);
-  ImGui::SameLine();
   float penalty = float(model.zipper.triangle_penalty);
-  ImGui::SetNextItemWidth(110);
+  set_width_part(0.45f);
   if (ImGui::SliderFloat("triangle penalty", &penalty, 1.0f, 3.0f, "%.2f"))
     model.zipper.triangle_penalty = penalty;
   draw_sharpness_control(model.sharpness);
@@ -121,13 +126,12 @@ void draw_edit_section(const ActionRegistry& actions, const ControlPanelModel& m
   if (ImGui::Button("Clear temporary")) actions.run(Action::clear_temporary);
   ImGui::EndDisabled();
   if (const Document* document = model.document) {
-    ImGui::Text("%zu temporary, %zu consolidated, %zu deleted", document->temporary_faces().size(),
-                document->consolidated_faces().size(), document->deleted_faces().size());
+    ImGui::TextWrapped("%zu temporary, %zu consolidated, %zu deleted", document->temporary_faces().size(),
+                       document->consolidated_faces().size(), document->deleted_faces().size());
     draw_unresolved(document->unresolved());
   }
   bool is_locked = model.is_parameter_lock_on;
-  if (ImGui::Checkbox("lock generator parameters while editing", &is_locked))
-    actions.run(Action::toggle_parameter_lock);
+  if (ImGui::Checkbox("lock sliders while editing", &is_locked)) actions.run(Action::toggle_parameter_lock);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("on: the sliders do not move while there are edits, so none can lose its vertices");
 }

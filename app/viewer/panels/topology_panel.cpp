@@ -30,8 +30,8 @@ void draw_component_row(std::size_t i, const ComponentTopology& c) {
 void draw_topology_section(const TopologyReport& report, const glm::dvec3& size) {
   ImGui::Text("size %s", size_text(size).c_str());
   ImGui::Text("V %u  E %u  F %u  chi %lld", report.vertices, report.edges, report.faces, report.chi);
-  ImGui::Text("%s, %u borders, %u Möbius edges", report.orientable ? "orientable" : "non-orientable",
-              report.borders, report.mobius_edges);
+  ImGui::TextWrapped("%s, %u borders, %u Möbius edges", report.orientable ? "orientable" : "non-orientable",
+                     report.borders, report.mobius_edges);
   constexpr std::size_t shown_rows = 64;
   // Many parts make a long table: a line that opens it.
   constexpr std::size_t parts_in_a_line = 4;

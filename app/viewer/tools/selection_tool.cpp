@@ -34,14 +34,14 @@ void draw_selected_sharpness(const Selection& selection, const Mesh* shown) {
 bool draw_selection_section(const ActionRegistry& actions, Selection& selection, glm::vec3& instance_color,
                             const Mesh* shown) {
   int mode = int(selection.mode());
-  const char* labels[] = {"vertex", "face", "border (whole)", "border (partial)", "edge", "instance"};
+  const char* labels[] = {"vertex", "face", "border", "part of border", "edge", "instance"};
   for (int i = 0; i < 6; ++i) {
     if (ImGui::RadioButton(labels[i], &mode, i)) selection.set_mode(SelectionMode(i));
-    if (i % 2 == 0) ImGui::SameLine(130);
+    if (i % 2 == 0) ImGui::SameLine(ImGui::GetFontSize() * 8.0f);
   }
   ImGui::NewLine();
-  ImGui::Text("%zu vertices, %zu faces, %zu edges, %zu borders", selection.vertices().size(),
-              selection.faces().size(), selection.edges().size(), selection.borders().size());
+  ImGui::TextWrapped("%zu vertices, %zu faces, %zu edges, %zu borders", selection.vertices().size(),
+                     selection.faces().size(), selection.edges().size(), selection.borders().size());
   draw_selected_sharpness(selection, shown);
   if (ImGui::Button("Clear selection")) actions.run(Action::clear_selection);
   if (selection.mode() != SelectionMode::instance) return false;
