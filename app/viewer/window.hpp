@@ -31,16 +31,14 @@ namespace nome::viewer {
 // One viewer window: a thin loop over its rooms. Each frame reads the input (camera, clicks, keys), lets
 // the script take a step, shows the latest stage, draws the scene through the renderer (GL, or null in
 // tests) and the ImGui panels, and asks the prompts. The rooms, one concern each:
-//   view_controller  camera and mouse         picking         clicks -> selection, overlays
-//   actions          the one table of keys, menu items, buttons and script names
-//   stage_view       stage jobs, picking BVH   session_controller  open, save, edits, autosave
-//   script_runner    script commands           prompts          unsaved changes, recovery
-//   panel_*.cpp      one panel each            window_actions   what each action does here
-//   layout           sidebars, log, viewport   window_panels    the panels in their places
-//   parameter_panel  banks, sliders, filter    window_history   settings and colours as undo steps
-//   undo_history     one history (in session_controller) of edits, slider moves, settings
-//   tools/           the tools (tool_list.cpp): sections, keys, clicks, overlays, script commands
-//   window_tools     the tools asked in their order
+//   view/        camera and mouse, picking, the selection
+//   commands/    the one table of keys, menu items, buttons and script names; the script's runner
+//   session/     stage jobs and picking BVH, open, save, edits, autosave, one undo history
+//   panels/      one panel each (controls, sliders, log, status, menus), the file and prompt dialogs
+//   tools/       the tools (tool_list.cpp): sections, keys, clicks, overlays, script commands
+//   layout       sidebars, pane, log, viewport
+//   window_actions  what each action does here      window_panels  the panels in their places
+//   window_tools    the tools asked in their order  window_history settings and colours as undo steps
 class Window : private ScriptHost {
  public:
   // Needs ImGui initialised (a frame begun before each frame()); the platform and renderer outlive it.

@@ -105,6 +105,14 @@ std::optional<std::filesystem::path> draw_main_menu(const ActionRegistry& action
     draw_view_menu(actions, display, layout);
     ImGui::EndMenu();
   }
+  // Commands the tools add beyond the action table: reachable without their keys.
+  if (!actions.tool_commands().empty() && ImGui::BeginMenu("Tools")) {
+    for (const ToolCommandInfo& command : actions.tool_commands()) {
+      const std::string key = command.key != 0 ? key_label(command.key, command.modifiers) : std::string();
+      if (ImGui::MenuItem(command.description.c_str(), key.c_str())) actions.run_tool_command(command.name);
+    }
+    ImGui::EndMenu();
+  }
   if (ImGui::BeginMenu("Help")) {
     action_item(actions, "Keys and mouse", Action::toggle_help);
     ImGui::EndMenu();
