@@ -107,7 +107,9 @@ void PrintCheckTool::draw_section(ToolContext& context) {
     return;
   }
   draw_verdict(*run, is_current);
+  ImGui::PushTextWrapPos(0.0f);  // the sidebar may be narrow
   ImGui::TextDisabled("red: crossings, magenta: fold-overs, orange: too thin");
+  ImGui::PopTextWrapPos();
   if (const auto place = draw_places(run->check))
     context.view.frame(job_.place_box(*place), {}, context.layout.viewport);
 }

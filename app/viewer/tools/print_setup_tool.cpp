@@ -47,7 +47,9 @@ std::optional<PrintPlacementOptions> draw_print_setup_section(const PrintPlaceme
   } else if (!selected_face) {
     ImGui::TextDisabled("select a face to rest on it");
   }
+  ImGui::PushTextWrapPos(0.0f);  // the sidebar may be narrow
   ImGui::TextDisabled("File > Export and `nome export` apply it; saving keeps it");
+  ImGui::PopTextWrapPos();
   if (!is_changed || edited == setup) return std::nullopt;
   return edited;
 }
