@@ -65,7 +65,7 @@ std::string TextPaneTool::status_text(const ToolContext& context) const {
   const std::optional<scene::SourcePlace> place = selection_statement(context);
   if (!place) return {};
   // "line 7", with the file's name when it is another than the open one.
-  const std::string line = "line " + std::to_string(place->location.line);
+  std::string line = "line " + std::to_string(place->location.line);
   if (pane_.is_in_file(place->file)) return line;
   return std::filesystem::path(place->file).filename().string() + " " + line;
 }
