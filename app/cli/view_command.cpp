@@ -3,7 +3,7 @@
 #include "cli/arguments.hpp"
 #include "cli/commands.hpp"
 #include "nome/io/read_scene.hpp"
-#include "viewer/script.hpp"
+#include "viewer/commands/script.hpp"
 #include "viewer/viewer.hpp"
 
 namespace nome::cli {

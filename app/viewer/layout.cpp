@@ -25,24 +25,24 @@ ScreenLayout arrange(const LayoutSettings& settings, glm::dvec2 window, const La
   const double height = std::max(0.0, window.y - top - chrome.status_height);
   double left = settings.is_left_shown ? settings.left_width * chrome.scale : 0.0;
   double right = settings.is_right_shown ? settings.right_width * chrome.scale : 0.0;
-  double text = settings.is_text_shown ? settings.text_width * chrome.scale : 0.0;
+  double pane = settings.is_pane_shown ? settings.pane_width * chrome.scale : 0.0;
   // A narrow window shrinks the side panels alike so that the model keeps a place.
   const double room = std::max(0.0, window.x - min_viewport_pixels);
-  if (left + right + text > room) {
-    const double shrink = room / (left + right + text);
+  if (left + right + pane > room) {
+    const double shrink = room / (left + right + pane);
     left *= shrink;
     right *= shrink;
-    text *= shrink;
+    pane *= shrink;
   }
   double log = settings.is_log_open ? settings.log_height * chrome.scale : chrome.log_bar_height;
   log = std::min(log, std::max(chrome.log_bar_height, height - min_viewport_pixels));
   ScreenLayout layout;
   layout.left = {{0.0, top}, {left, height}};
   layout.right = {{window.x - right, top}, {right, height}};
-  layout.text = {{left, top}, {text, height}};
-  const double middle = std::max(0.0, window.x - left - text - right);
-  layout.log = {{left + text, top + height - log}, {middle, log}};
-  layout.viewport = {{left + text, top}, {middle, std::max(1.0, height - log)}};
+  layout.pane = {{left, top}, {pane, height}};
+  const double middle = std::max(0.0, window.x - left - pane - right);
+  layout.log = {{left + pane, top + height - log}, {middle, log}};
+  layout.viewport = {{left + pane, top}, {middle, std::max(1.0, height - log)}};
   return layout;
 }
 
@@ -68,11 +68,11 @@ const Field fields[] = {
     {"left_width", &LayoutSettings::left_width},
     {"right_width", &LayoutSettings::right_width},
     {"log_height", &LayoutSettings::log_height},
-    {"text_width", &LayoutSettings::text_width},
+    {"text_width", &LayoutSettings::pane_width},
     {"left_shown", nullptr, &LayoutSettings::is_left_shown},
     {"right_shown", nullptr, &LayoutSettings::is_right_shown},
     {"log_open", nullptr, &LayoutSettings::is_log_open},
-    {"text_shown", nullptr, &LayoutSettings::is_text_shown},
+    {"text_shown", nullptr, &LayoutSettings::is_pane_shown},
     {"dark", nullptr, &LayoutSettings::is_dark},
     {"window_width", nullptr, nullptr, 0},
     {"window_height", nullptr, nullptr, 1},

@@ -22,14 +22,15 @@ struct ScreenRect {
 
 // What the user arranged, remembered between runs in the XDG config folder.
 struct LayoutSettings {
-  double left_width = 330.0;  // window pixels at content scale 1
-  double right_width = 340.0;
+  // Narrow enough that the model has 60 % of a 1280-pixel window; a user's drag is remembered.
+  double left_width = 250.0;  // window pixels at content scale 1
+  double right_width = 250.0;
   double log_height = 140.0;
-  double text_width = 460.0;
+  double pane_width = 460.0;
   bool is_left_shown = true;
-  bool is_text_shown = false;  // the scene text pane, hidden until asked for
+  bool is_pane_shown = false;  // the pane beside the left sidebar (a tool's), hidden until asked for
   bool is_right_shown = true;
-  bool is_log_open = true;  // collapsed: only its title bar
+  bool is_log_open = false;  // collapsed: only its title bar (the status bar shows the newest message)
   bool is_dark = false;
   glm::ivec2 window_size{1280, 800};
 
@@ -45,10 +46,10 @@ struct LayoutChrome {
 };
 
 // The window cut into its panels' places, with the 3D viewport the rectangle between them. A hidden
-// sidebar or text pane has width 0; the text pane stands beside the left sidebar, the log under the
+// sidebar or pane has width 0; the pane (a tool's) stands beside the left sidebar, the log under the
 // viewport.
 struct ScreenLayout {
-  ScreenRect left, right, log, viewport, text;
+  ScreenRect left, right, log, viewport, pane;
 };
 
 // The viewport keeps at least this much of the window's width and height: sidebars and log give way.

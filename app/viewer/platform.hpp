@@ -6,7 +6,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "viewer/actions.hpp"
+#include "viewer/commands/actions.hpp"
 
 namespace nome::viewer {
 

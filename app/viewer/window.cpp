@@ -11,13 +11,33 @@
 #include "render/image.hpp"
 #include "render/rim_segments.hpp"
 #include "render/scene_camera.hpp"
+#include "viewer/tools/tool_list.hpp"
 
 namespace nome::viewer {
 
 Window::Window(Platform& platform, render::SceneRenderer& renderer, const ViewerOptions& options,
                const ViewerStores& stores)
-    : platform_(platform), renderer_(renderer), sessions_(log_, stores) {
+    : platform_(platform),
+      renderer_(renderer),
+      sessions_(log_, stores),
+      tool_context_{log_,
+                    sessions_,
+                    stage_,
+                    selection_,
+                    view_,
+                    actions_,
+                    display_,
+                    layout_settings_,
+                    layout_,
+                    rims_,
+                    platform_,
+                    shown_low_,
+                    shown_high_,
+                    [this] { refresh_selection(); },
+                    [this] { paint_faces(); },
+                    [this] { update_stage(); }} {
   bind_actions();
+  for (std::unique_ptr<Tool>& tool : make_tools()) add_tool(std::move(tool));
   log_.set_echo(options.script.has_value());
   // A scripted session starts from the default layout, so that its pictures and pixels repeat.
   if (!options.script && !stores.layout_file.empty()) {
@@ -59,19 +79,17 @@ bool Window::frame(const InputFrame& input) {
   arrange_layout();
   sessions_.update(platform_.now());
   handle_mouse(input);
-  view_.turn(turntable_.advance(platform_.now()));
   for (const KeyPress& key : input.keys)
     if (actions_.press(key.key, key.modifiers)) break;
   update_stage();
   // The first frames lay out the panels; a screenshot taken then would show them half-built. Each
-  // command sees the result of the one before: the stage and the print check being computed are awaited.
-  if (frames_drawn_ >= 3 && !pending_screenshot_ && !stage_.is_busy() && !print_check_.is_busy() &&
+  // command sees the result of the one before: the stage and busy tools' work are awaited.
+  if (frames_drawn_ >= 3 && !pending_screenshot_ && !stage_.is_busy() && !is_any_tool_busy() &&
       settle_frames_ == 0)
     script_.step(*this, log_);
   if (script_.has_failed()) exit_status_ = 1;
   arrange_layout();
-  apply_section(section_, view_.camera(), 0.5 * (shown_low_ + shown_high_),
-                stage_.shown() && stage_.shown()->stage >= Stage::offset, display_);
+  for (const std::unique_ptr<Tool>& tool : tools_) tool->before_draw(tool_context_);
   render::DisplaySettings shown_display = display_;
   shown_display.shading =
       render::shown_shading(display_.shading, stage_.shown() && stage_.shown()->is_smoothed);
@@ -92,8 +110,10 @@ bool Window::frame(const InputFrame& input) {
 }
 
 bool Window::is_animating() const {
-  return stage_.is_busy() || print_check_.is_busy() || !script_.is_done() || pending_screenshot_ ||
-         view_.is_pressed() || frames_drawn_ < 3 || settle_frames_ > 0 || turntable_.is_on();
+  const bool is_tool_animating =
+      std::any_of(tools_.begin(), tools_.end(), [](const auto& t) { return t->is_animating(); });
+  return stage_.is_busy() || is_tool_animating || !script_.is_done() || pending_screenshot_ ||
+         view_.is_pressed() || frames_drawn_ < 3 || settle_frames_ > 0;
 }
 
 void Window::after_draw() {
@@ -154,7 +174,7 @@ void Window::request_open(const std::filesystem::path& path) {
     drop({path});
     return;
   }
-  if (!sessions_.is_modified() && !text_pane_.is_modified()) {
+  if (!sessions_.is_modified() && !has_unsaved_changes()) {
     open(path);
     return;
   }
@@ -209,7 +229,7 @@ void Window::apply_file_defaults() {
 }
 
 void Window::request_quit() {
-  if (!sessions_.is_modified() && !text_pane_.is_modified()) {
+  if (!sessions_.is_modified() && !has_unsaved_changes()) {
     should_close_ = true;
     return;
   }
@@ -223,7 +243,8 @@ void Window::answer_unsaved(UnsavedAnswer answer) {
   if (answer == UnsavedAnswer::cancel) return;
   if (answer == UnsavedAnswer::save) {
     // A failed save (logged) leaves the changes where they were: nothing is lost.
-    if (text_pane_.is_modified() && !save_text()) return;
+    for (const std::unique_ptr<Tool>& tool : tools_)
+      if (tool->has_unsaved_changes() && !tool->save_changes(tool_context_)) return;
     if (sessions_.is_modified() && (!sessions_.save_logged(std::nullopt) || sessions_.is_modified())) return;
   } else if (question.open) {
     // The user gave the changes up: no recovery file should offer them back.
@@ -265,7 +286,7 @@ void Window::update_stage() {
     // The next pick builds it on the UI thread instead.
     log_.warning("picking structure: " + std::string(e.what()));
   }
-  update_print_check();
+  for (const std::unique_ptr<Tool>& tool : tools_) tool->update(tool_context_);
 }
 
 void Window::show_result(StageResult result) {
@@ -295,8 +316,11 @@ void Window::show_result(StageResult result) {
 
 void Window::refresh_selection() {
   if (const Mesh* mesh = stage_.shown_mesh()) {
+    std::vector<render::CubeMarker> markers;
+    for (const std::unique_ptr<Tool>& tool : tools_)
+      for (const render::CubeMarker& marker : tool->markers()) markers.push_back(marker);
     show_selection(renderer_, *mesh, rims_, selection_, display_.selection_color, display_.rim_color,
-                   print_check_.markers());
+                   markers);
     show_sharp_edges(renderer_, *mesh);
   }
 }

@@ -8,25 +8,22 @@
 
 #include "render/display_settings.hpp"
 #include "render/scene_renderer.hpp"
-#include "viewer/actions.hpp"
-#include "viewer/file_browser.hpp"
+#include "viewer/commands/actions.hpp"
+#include "viewer/commands/script_runner.hpp"
 #include "viewer/layout.hpp"
-#include "viewer/measure_tool.hpp"
 #include "viewer/message_log.hpp"
-#include "viewer/panels.hpp"
-#include "viewer/parameter_panel.hpp"
-#include "viewer/picking.hpp"
+#include "viewer/panels/file_dialog.hpp"
+#include "viewer/panels/panels.hpp"
+#include "viewer/panels/parameter_panel.hpp"
+#include "viewer/panels/prompt_dialog.hpp"
 #include "viewer/platform.hpp"
-#include "viewer/print_check_view.hpp"
-#include "viewer/prompts.hpp"
-#include "viewer/script_runner.hpp"
-#include "viewer/section_panel.hpp"
-#include "viewer/selection.hpp"
-#include "viewer/session_controller.hpp"
-#include "viewer/stage_view.hpp"
-#include "viewer/text_pane.hpp"
-#include "viewer/turntable_mode.hpp"
-#include "viewer/view_controller.hpp"
+#include "viewer/session/session_controller.hpp"
+#include "viewer/session/stage_view.hpp"
+#include "viewer/tools/tool.hpp"
+#include "viewer/tools/tool_context.hpp"
+#include "viewer/view/picking.hpp"
+#include "viewer/view/selection.hpp"
+#include "viewer/view/view_controller.hpp"
 #include "viewer/viewer.hpp"
 
 namespace nome::viewer {
@@ -34,14 +31,14 @@ namespace nome::viewer {
 // One viewer window: a thin loop over its rooms. Each frame reads the input (camera, clicks, keys), lets
 // the script take a step, shows the latest stage, draws the scene through the renderer (GL, or null in
 // tests) and the ImGui panels, and asks the prompts. The rooms, one concern each:
-//   view_controller  camera and mouse         picking         clicks -> selection, overlays
-//   actions          the one table of keys, menu items, buttons and script names
-//   stage_view       stage jobs, picking BVH   session_controller  open, save, edits, autosave
-//   script_runner    script commands           prompts          unsaved changes, recovery
-//   panel_*.cpp      one panel each            window_actions   what each action does here
-//   layout           sidebars, log, viewport   window_panels    the panels in their places
-//   parameter_panel  banks, sliders, filter    window_history   settings and colours as undo steps
-//   undo_history     one history (in session_controller) of edits, slider moves, settings
+//   view/        camera and mouse, picking, the selection
+//   commands/    the one table of keys, menu items, buttons and script names; the script's runner
+//   session/     stage jobs and picking BVH, open, save, edits, autosave, one undo history
+//   panels/      one panel each (controls, sliders, log, status, menus), the file and prompt dialogs
+//   tools/       the tools (tool_list.cpp): sections, keys, clicks, overlays, script commands
+//   layout       sidebars, pane, log, viewport
+//   window_actions  what each action does here      window_panels  the panels in their places
+//   window_tools    the tools asked in their order  window_history settings and colours as undo steps
 class Window : private ScriptHost {
  public:
   // Needs ImGui initialised (a frame begun before each frame()); the platform and renderer outlive it.
@@ -78,14 +75,18 @@ class Window : private ScriptHost {
   const Selection& selection() const { return selection_; }
   const SessionController& sessions() const { return sessions_; }
   const StageResult* shown() const { return stage_.shown(); }
-  const PrintCheckView& print_check() const { return print_check_; }
   const render::Camera& camera() const { return view_.camera(); }
   const render::DisplaySettings& display() const { return display_; }
   const PanelVisibility& panels() const { return panels_; }
-  bool is_turntable_on() const { return turntable_.is_on(); }
-  const MeasureTool& measure() const { return measure_; }
-  const SectionState& section() const { return section_; }
-  const TextPane& text_pane() const { return text_pane_; }
+  // The first tool of this type, if the window has one.
+  template <typename T>
+  const T* find_tool() const {
+    for (const auto& tool : tools_)
+      if (const T* found = dynamic_cast<const T*>(tool.get())) return found;
+    return nullptr;
+  }
+  // Takes a tool after those of tool_list.cpp: its commands are bound and it is asked from now on.
+  void add_tool(std::unique_ptr<Tool> tool);
   const LayoutSettings& layout_settings() const { return layout_settings_; }
   // Where the panels and the viewport are this frame, and what the last frame drew where.
   const ScreenLayout& layout() const { return layout_; }
@@ -94,7 +95,6 @@ class Window : private ScriptHost {
  private:
   // window_actions.cpp: what each action does here
   void bind_actions();
-  void bind_workbench_actions();
   void bind_file_actions();
   void bind_view_actions();
   void open_browser(Action action);
@@ -109,25 +109,16 @@ class Window : private ScriptHost {
   void refresh_selection();
   void show_rim_lines(RimLines lines);
   void frame_all();
-  // window_print_check.cpp
-  void bind_print_check_actions();
-  void update_print_check();
-  void paint_faces();
-  void draw_print_check_section();
   void draw_prompts();
-  // window_text.cpp: the scene text pane
-  void bind_text_actions();
-  bool apply_text();
-  bool save_text();
-  void sync_text_pane();
-  // The statement that made the selected face or vertex (the last clicked), on the scene or merged stage.
-  std::optional<scene::SourcePlace> selection_statement() const;
-  // "line 7" (with the file's name when it is another than the open one); empty for none.
-  std::string statement_text(const std::optional<scene::SourcePlace>& place) const;
-  // Shows a place of the open scene's text in the pane (a click on a located message in the log).
+  // window_tools.cpp: the tools asked in their order
+  void paint_faces();
+  bool has_unsaved_changes() const;
+  bool is_any_tool_busy() const;
+  void draw_tool_sections(ToolSide side);
+  void draw_tool_pane();
+  // Shows a place of a located message the user clicked in the log.
   void show_place(const scene::SourcePlace& place);
-  void set_text(const std::filesystem::path& path) override;
-  bool click_log(int back) override;
+  bool run_tool_script(const ScriptCommand& command) override;
   // window_history.cpp
   struct ViewState {
     PipelineSettings settings;
@@ -145,7 +136,6 @@ class Window : private ScriptHost {
   void draw_sidebars();
   void draw_status();
   void draw_browser();
-  void draw_text_pane();
   double take_scroll(ScrolledPanel panel);
   // The sliders the selected vertices and faces depend on.
   std::vector<Index> selection_parameters(const scene::Scene& scene) const;
@@ -153,9 +143,7 @@ class Window : private ScriptHost {
   void print_state() override;
   void scroll(ScrolledPanel panel, double pixels) override;
   // ScriptHost (window_actions.cpp)
-  void set_mode(SelectionMode mode) override { selection_.set_mode(mode); }
   void click(glm::dvec2 pixel) override;
-  bool color_instances(glm::vec3 color) override;
   bool double_click(glm::dvec2 pixel) override;
   void answer_unsaved(UnsavedAnswer answer) override;
   bool press_key(const std::string& label) override { return actions_.press(label); }
@@ -179,7 +167,6 @@ class Window : private ScriptHost {
   MessageLog log_;
   SessionController sessions_;
   StageView stage_;
-  PrintCheckView print_check_;
   ViewController view_;
   Selection selection_;
   ActionRegistry actions_;
@@ -190,7 +177,6 @@ class Window : private ScriptHost {
 
   render::DisplaySettings display_;
   EditColors edit_colors_;
-  glm::vec3 instance_color_{0.9f, 0.45f, 0.1f};
   ZipperOptions zipper_options_;
   float sharpness_ = infinite_sharpness;  // the weight K gives the selected edges (the Edit section's)
   RimLines rim_lines_;                    // the scene's, drawn over every stage and framed with the mesh
@@ -198,16 +184,14 @@ class Window : private ScriptHost {
   PickableRims rims_;                     // rim_lines_ numbered after the shown mesh's vertices
   glm::dvec3 shown_size_{0.0};            // the shown stage's bounding box
   PanelVisibility panels_;
-  TurntableMode turntable_;
-  MeasureTool measure_;
-  SectionState section_;
-  TextPane text_pane_;
   glm::dvec3 shown_low_{0.0}, shown_high_{0.0};  // the shown stage's bounding box
   ParameterPanelState parameters_;
 
   LayoutSettings layout_settings_;
   std::filesystem::path layout_file_;  // none for a scripted session, which starts from the defaults
   ScreenLayout layout_;
+  ToolContext tool_context_;
+  std::vector<std::unique_ptr<Tool>> tools_;
   LayoutReport report_;
   bool is_layout_known_ = false;
   bool is_framing_pending_ = false;  // framing waits for the first layout

@@ -11,7 +11,6 @@
 #include "nome/io/obj.hpp"
 #include "nome/io/ply.hpp"
 #include "nome/io/stl.hpp"
-#include "nome/ops/print_placement.hpp"
 #include "nome/query/pick.hpp"
 #include "viewer/window.hpp"
 
@@ -37,14 +36,6 @@ ActionRegistry::Handler always(F f) {
 }
 
 }  // namespace
-
-// The workbench's keys: turntable, measuring, section.
-void Window::bind_workbench_actions() {
-  actions_.bind(Action::toggle_turntable, always([this] { turntable_.toggle(platform_.now()); }));
-  actions_.bind(Action::measure_distance, always([this] { measure_.toggle(MeasureMode::distance); }));
-  actions_.bind(Action::measure_wall, always([this] { measure_.toggle(MeasureMode::wall); }));
-  actions_.bind(Action::toggle_section, always([this] { section_.is_on = !section_.is_on; }));
-}
 
 // Opening and saving files.
 void Window::bind_file_actions() {
@@ -105,7 +96,6 @@ void Window::bind_actions() {
   bind_file_actions();
   actions_.bind(Action::quit, always([this] { request_quit(); }));
   bind_view_actions();
-  bind_workbench_actions();
   actions_.bind(Action::clear_selection, always([this] {
                   selection_.clear();
                   refresh_selection();
@@ -126,8 +116,6 @@ void Window::bind_actions() {
         log_.info(std::string("generator parameters ") +
                   (sessions_.is_parameter_lock_on() ? "locked while the document has edits" : "free"));
       }));
-  bind_print_check_actions();
-  bind_text_actions();
   for (Action action : {Action::add_polygon, Action::accept, Action::clear_temporary, Action::delete_faces,
                         Action::zip, Action::toggle_sharp, Action::undo, Action::redo})
     actions_.bind(action, [this, action] { return edit(action); });
@@ -199,33 +187,16 @@ void Window::print_state() {
        << " parts | selection: " << selection_.vertices().size() << " vertices, " << selection_.faces().size()
        << " faces, " << selection_.borders().size() << " borders, " << selection_.instances().size()
        << " instances | faces: " << shown->parts.scene << " scene, " << shown->parts.consolidated
-       << " consolidated, " << shown->parts.temporary << " temporary | "
-       << text_pane_.state_text(layout_settings_.is_text_shown);
+       << " consolidated, " << shown->parts.temporary << " temporary";
+  for (const std::unique_ptr<Tool>& tool : tools_)
+    if (const std::string text = tool->state_text(tool_context_); !text.empty()) line << " | " << text;
   log_.info(line.str());
 }
 
 void Window::click(glm::dvec2 pixel) {
-  const StageResult* shown = stage_.shown();
-  if (!shown) return;
-  if (measure_.mode() != MeasureMode::off) {
-    log_.info(measure_.click(*shown->mesh, stage_.picking_bvh(),
-                             ray_through_pixel(view_.projection(layout_.viewport), pixel)));
-    return;
-  }
-  const ScreenProjection projection = view_.projection(layout_.viewport);
-  const std::string hint =
-      selection_.mode() == SelectionMode::instance
-          ? select_instance(selection_, *shown, stage_.picking_bvh(), sessions_.scene(), projection, pixel)
-          : select_at(selection_, *shown, stage_.picking_bvh(), rims_, projection, pixel);
-  if (!hint.empty()) log_.info(hint);
-  refresh_selection();
-}
-
-bool Window::color_instances(glm::vec3 color) {
-  instance_color_ = color;
-  if (!sessions_.color_instances(selection_.instances(), color)) return false;
-  refresh_selection();
-  return true;
+  if (!stage_.shown()) return;
+  for (const std::unique_ptr<Tool>& tool : tools_)
+    if (tool->click(tool_context_, pixel)) return;
 }
 
 bool Window::double_click(glm::dvec2 pixel) {
@@ -253,10 +224,10 @@ void Window::export_mesh(const std::filesystem::path& path) {
   const Mesh* mesh = stage_.shown_mesh();
   if (!mesh) throw InvalidInputError("export: nothing is shown");
   const std::string ext = lower_extension(path);
-  // The scene's print preparation, as `nome export` applies it.
+  // What a tool makes of the shown stage for export (a placing for print, as `nome export` applies it).
   std::optional<Mesh> placed;
-  if (const scene::Scene* scene = sessions_.scene(); scene && scene->print_setup())
-    placed = placed_for_print(*mesh, *scene->print_setup());
+  for (const std::unique_ptr<Tool>& tool : tools_)
+    if (!placed) placed = tool->exported(tool_context_, *mesh);
   if (placed) mesh = &*placed;
   if (ext == ".obj")
     write_obj(path, *mesh);

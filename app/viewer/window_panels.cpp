@@ -4,7 +4,6 @@
 
 #include <imgui.h>
 
-#include "viewer/print_setup_panel.hpp"
 #include "viewer/window.hpp"
 
 // The panels in their places: the style for the screen, the layout of the sidebars, the log and the
@@ -95,14 +94,14 @@ void Window::draw_panels() {
                          sessions_.can_undo(), sessions_.can_redo()};
   if (const auto chosen = draw_main_menu(actions_, menu, display_, layout_settings_)) request_open(*chosen);
   draw_sidebars();
-  draw_text_pane();
-  measure_.draw_overlay(view_.projection(layout_.viewport));
+  draw_tool_pane();
+  for (const std::unique_ptr<Tool>& tool : tools_) tool->draw_overlay(tool_context_);
   if (const auto place =
           draw_log_panel(log_, layout_.log, layout_settings_.is_log_open, take_scroll(ScrolledPanel::log)))
     show_place(*place);
   report_.panels.push_back({"log", layout_.log});
   draw_status();
-  if (panels_.is_help_shown) draw_help_overlay(panels_.is_help_shown);
+  if (panels_.is_help_shown) draw_help_overlay(actions_, panels_.is_help_shown);
   if (stage_.is_busy() && stage_.seconds_running() >= 0.03)
     draw_progress(stage_.seconds_running(), stage_.progress());
   draw_browser();
@@ -114,11 +113,10 @@ void Window::draw_sidebars() {
   if (layout_settings_.is_left_shown) {
     report_.panels.push_back({"controls", layout_.left});
     if (begin_docked_panel("Controls", layout_.left, &width, take_scroll(ScrolledPanel::controls))) {
+      draw_tool_sections(ToolSide::left);
       const ControlPanelChanges changes = draw_control_panel(
-          actions_, {selection_, stage_.settings(), zipper_options_, display_, edit_colors_,
-                     sessions_.document(), can_edit(), sessions_.is_parameter_lock_on(), sif_pairing(),
-                     instance_color_, sharpness_, stage_.shown_mesh()});
-      if (changes.is_instance_color_applied) color_instances(instance_color_);
+          actions_, {stage_.settings(), zipper_options_, display_, edit_colors_, sessions_.document(),
+                     can_edit(), sessions_.is_parameter_lock_on(), sif_pairing(), sharpness_});
       if (changes.is_selection_changed) refresh_selection();
       if (changes.is_edit_color_changed) paint_faces();
     }
@@ -133,17 +131,7 @@ void Window::draw_sidebars() {
     if (const StageResult* shown = stage_.shown())
       if (ImGui::CollapsingHeader("Topology", ImGuiTreeNodeFlags_DefaultOpen))
         draw_topology_section(shown->topology, shown_size_);
-    draw_print_check_section();
-    if (const scene::Scene* scene = sessions_.scene();
-        scene && ImGui::CollapsingHeader("Print preparation")) {
-      const std::optional<Index> face =
-          selection_.faces().size() == 1 ? std::optional(selection_.faces().front()) : std::nullopt;
-      if (const auto changed =
-              draw_print_setup_section(scene->print_setup().value_or(PrintPlacementOptions{}), face))
-        sessions_.set_print_setup(*changed);
-    }
-    if (ImGui::CollapsingHeader("Measure")) measure_.draw_section();
-    if (ImGui::CollapsingHeader("Section")) draw_section_panel(section_, shown_low_, shown_high_);
+    draw_tool_sections(ToolSide::right);
     if (const scene::Scene* scene = sessions_.scene()) {
       const bool is_locked = sessions_.are_parameters_locked();
       if (is_locked) ImGui::TextDisabled("locked while editing (Controls > Edit)");
@@ -159,22 +147,17 @@ void Window::draw_sidebars() {
   sessions_.move_sliders(moves.moves, moves.continues);
 }
 
-void Window::draw_text_pane() {
-  sync_text_pane();
-  text_pane_.set_statement(selection_statement());
-  if (!layout_settings_.is_text_shown) return;
-  report_.panels.push_back({"text", layout_.text});
+void Window::draw_tool_pane() {
+  const auto tool =
+      std::find_if(tools_.begin(), tools_.end(), [](const auto& t) { return !t->pane_title().empty(); });
+  if (!layout_settings_.is_pane_shown || tool == tools_.end()) return;
+  report_.panels.push_back({"pane", layout_.pane});
   double width = 0.0;
-  TextPaneRequest request;
-  if (begin_docked_panel("Scene text", layout_.text, &width)) request = text_pane_.draw();
+  if (begin_docked_panel((*tool)->pane_title().c_str(), layout_.pane, &width))
+    (*tool)->draw_pane(tool_context_);
   ImGui::End();
-  layout_settings_.text_width =
-      dragged_width(width, layout_.text.size.x, layout_settings_.text_width, platform_.content_scale());
-  if (request.loads_from_disk) text_pane_.load_from_disk();
-  if (request.save)
-    save_text();
-  else if (request.apply)
-    apply_text();
+  layout_settings_.pane_width =
+      dragged_width(width, layout_.pane.size.x, layout_settings_.pane_width, platform_.content_scale());
 }
 
 void Window::draw_status() {
@@ -186,13 +169,12 @@ void Window::draw_status() {
                         shown->stage,
                         shown->mesh->num_vertices(),
                         shown->mesh->num_faces(),
-                        selection_.mode(),
                         shown_size_,
-                        {},
-                        statement_text(selection_statement())};
+                        {}};
   if (status)
-    for (const std::string& path : selection_.instances())
-      status->instances += (status->instances.empty() ? "" : ", ") + path;
+    for (const std::unique_ptr<Tool>& tool : tools_)
+      if (std::string note = tool->status_text(tool_context_); !note.empty())
+        status->notes.push_back(std::move(note));
   draw_status_bar(status, log_);
 }
 

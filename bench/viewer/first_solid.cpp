@@ -6,8 +6,8 @@
 
 #include "slider_frames.hpp"
 #include "support/new_process.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_pipeline.hpp"
 
 namespace nome::bench {
 namespace {

@@ -18,8 +18,8 @@
 #include "render/offscreen_context.hpp"
 #include "render/scene_renderer.hpp"
 #include "slider_frames.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_pipeline.hpp"
 
 namespace {
 

@@ -11,9 +11,9 @@
 #include "render/framebuffer.hpp"
 #include "render/gl.hpp"
 #include "render/scene_renderer.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_pipeline.hpp"
-#include "viewer/stage_view.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_pipeline.hpp"
+#include "viewer/session/stage_view.hpp"
 
 namespace nome::bench {
 namespace {

@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "app/viewer_support.hpp"
-#include "viewer/autosave.hpp"
-#include "viewer/session.hpp"
+#include "viewer/session/autosave.hpp"
+#include "viewer/session/session.hpp"
 
 using namespace nome;
 using nome::viewer::Autosave;

@@ -17,7 +17,7 @@
 #include "render/offscreen_context.hpp"
 #include "render/scene_renderer.hpp"
 #include "viewer/platform.hpp"
-#include "viewer/session_controller.hpp"
+#include "viewer/session/session_controller.hpp"
 #include "viewer/viewer.hpp"
 
 struct ImGuiContext;

@@ -10,8 +10,8 @@
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "render/render_support.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_pipeline.hpp"
 
 using namespace nome;
 using nome::test::run_window;

@@ -11,9 +11,9 @@
 #include "nome/mesh/topology_report.hpp"
 #include "render/render_support.hpp"
 #include "support/shared_examples.hpp"
-#include "viewer/picking.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_pipeline.hpp"
+#include "viewer/view/picking.hpp"
 
 using namespace nome;
 using nome::test::click_line;

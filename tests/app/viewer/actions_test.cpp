@@ -6,7 +6,7 @@
 #define GLFW_INCLUDE_NONE  // GL comes from glad (render/gl.hpp)
 #include <GLFW/glfw3.h>
 
-#include "viewer/actions.hpp"
+#include "viewer/commands/actions.hpp"
 #include "viewer/message_log.hpp"
 
 using namespace nome::viewer;

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "app/cli_support.hpp"
-#include "viewer/autosave.hpp"
-#include "viewer/session.hpp"
+#include "viewer/session/autosave.hpp"
+#include "viewer/session/session.hpp"
 
 using namespace nome;
 using nome::viewer::Autosave;

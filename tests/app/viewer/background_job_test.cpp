@@ -3,7 +3,7 @@
 #include <atomic>
 #include <stdexcept>
 
-#include "viewer/background_job.hpp"
+#include "viewer/session/background_job.hpp"
 
 using nome::viewer::BackgroundJob;
 using namespace std::chrono_literals;

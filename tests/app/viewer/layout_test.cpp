@@ -43,22 +43,22 @@ std::vector<std::pair<std::string, ScreenRect>> layout_lines(const std::string& 
 TEST_CASE("the scene text pane stands beside the controls, and the viewport and log give way", "[app]") {
   const viewer::LayoutChrome chrome{20.0, 24.0, 30.0, 1.0};
   viewer::LayoutSettings settings;
-  CHECK_FALSE(settings.is_text_shown);
-  CHECK(viewer::arrange(settings, {1600.0, 900.0}, chrome).text.size.x == 0.0);
-  settings.is_text_shown = true;
+  CHECK_FALSE(settings.is_pane_shown);
+  CHECK(viewer::arrange(settings, {1600.0, 900.0}, chrome).pane.size.x == 0.0);
+  settings.is_pane_shown = true;
   const viewer::ScreenLayout a = viewer::arrange(settings, {1600.0, 900.0}, chrome);
-  CHECK(a.text.origin == glm::dvec2(settings.left_width, 20.0));
-  CHECK(a.text.size.x == settings.text_width);
-  CHECK(a.text.max().y == Approx(900.0 - 24.0));
-  CHECK(a.viewport.origin.x == Approx(a.text.max().x));
+  CHECK(a.pane.origin == glm::dvec2(settings.left_width, 20.0));
+  CHECK(a.pane.size.x == settings.pane_width);
+  CHECK(a.pane.max().y == Approx(900.0 - 24.0));
+  CHECK(a.viewport.origin.x == Approx(a.pane.max().x));
   CHECK(a.viewport.max().x == Approx(1600.0 - settings.right_width));
   CHECK(a.log.origin.x == Approx(a.viewport.origin.x));
   CHECK(a.log.size.x == Approx(a.viewport.size.x));
   // Tab hides the sidebars, not the pane: the pane and the model share the window.
   settings.is_left_shown = settings.is_right_shown = false;
   const viewer::ScreenLayout b = viewer::arrange(settings, {1280.0, 800.0}, chrome);
-  CHECK(b.text.origin.x == 0.0);
-  CHECK(b.viewport.size.x == Approx(1280.0 - settings.text_width));
+  CHECK(b.pane.origin.x == 0.0);
+  CHECK(b.viewport.size.x == Approx(1280.0 - settings.pane_width));
 }
 
 TEST_CASE("the viewport is the rectangle between the sidebars, above the log", "[app]") {
@@ -234,4 +234,29 @@ TEST_CASE("a sidebar dragged by its corner keeps the new width, which the viewpo
   CHECK(viewer.window().layout_settings().left_width == Approx(left.size.x + 80.0).margin(2.0));
   CHECK(viewer.window().layout().viewport.origin.x == Approx(left.size.x + 80.0).margin(2.0));
   CHECK(viewer.window().layout().left.size.y == left.size.y);  // the height stays the layout's
+}
+
+TEST_CASE("the default layout gives the model most of the width; the log opens from its status line",
+          "[app]") {
+  auto viewport_of = [](const std::string& size, const std::string& script) {
+    const std::string dir = nome::test::private_scratch_dir("layout_default_" + size);
+    const auto r = nome::test::run_window(std::string(NOME_SOURCE_DIR) + "/assets/mobius_band.nome --size " +
+                                          size + " --script " + nome::test::write_script(dir, script));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    std::vector<ScreenRect> viewports;
+    for (const auto& [name, rect] : layout_lines(r.err))
+      if (name == "viewport") viewports.push_back(rect);
+    return viewports;
+  };
+  // 780 of 1280 pixels (61 %); 524 of 1024 (51 %), where the sidebars keep their width.
+  const auto wide = viewport_of("1280x800", "layout\nkey L\nlayout\nquit\n");
+  REQUIRE(wide.size() == 2);
+  CHECK(wide[0].size.x >= 0.6 * 1280.0);
+  CHECK(wide[0].size.x == Approx(780.0));
+  // The log, a status line by default, opens with L (View > Log open) and takes room from the model.
+  CHECK(wide[1].size.y < wide[0].size.y - 100.0);
+  const auto narrow = viewport_of("1024x700", "layout\nquit\n");
+  REQUIRE(narrow.size() == 1);
+  CHECK(narrow[0].size.x == Approx(524.0));
 }

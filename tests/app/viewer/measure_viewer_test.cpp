@@ -7,6 +7,7 @@
 #include <GLFW/glfw3.h>
 
 #include "app/viewer_support.hpp"
+#include "viewer/tools/measure_tool.hpp"
 #include "viewer/window.hpp"
 
 using namespace nome;
@@ -54,9 +55,9 @@ TEST_CASE("measuring in the viewer: Shift+M gives the wall of the offset box, M 
   REQUIRE(is_solid());
 
   measure_key(viewer, GLFW_KEY_M, viewer::KeyModifier::shift);
-  REQUIRE(viewer.window().measure().mode() == viewer::MeasureMode::wall);
+  REQUIRE(viewer.window().find_tool<viewer::MeasureTool>()->mode() == viewer::MeasureMode::wall);
   measure_click(viewer, {640, 400});
-  const auto& wall = viewer.window().measure().last();
+  const auto& wall = viewer.window().find_tool<viewer::MeasureTool>()->last();
   REQUIRE(wall);
   CHECK(wall->is_wall);
   // The viewer subdivides the box before the offset (a rounded box): its wall is the slab, 2d, to a few
@@ -66,16 +67,16 @@ TEST_CASE("measuring in the viewer: Shift+M gives the wall of the offset box, M 
   CHECK(viewer.window().selection().is_empty());  // measuring does not select
 
   measure_key(viewer, GLFW_KEY_M, viewer::KeyModifier::none);
-  REQUIRE(viewer.window().measure().mode() == viewer::MeasureMode::distance);
+  REQUIRE(viewer.window().find_tool<viewer::MeasureTool>()->mode() == viewer::MeasureMode::distance);
   measure_click(viewer, {600, 380});
-  CHECK(viewer.window().measure().first_point());
+  CHECK(viewer.window().find_tool<viewer::MeasureTool>()->first_point());
   measure_click(viewer, {690, 420});
-  const auto& distance = viewer.window().measure().last();
+  const auto& distance = viewer.window().find_tool<viewer::MeasureTool>()->last();
   REQUIRE(distance);
   CHECK_FALSE(distance->is_wall);
   CHECK(distance->length == Approx(glm::distance(distance->from, distance->to)));
   CHECK(distance->length > 0.1);
   CHECK_THAT(viewer.messages(), Catch::Contains("distance ") && Catch::Contains(" mm"));
   measure_key(viewer, GLFW_KEY_M, viewer::KeyModifier::none);
-  CHECK(viewer.window().measure().mode() == viewer::MeasureMode::off);
+  CHECK(viewer.window().find_tool<viewer::MeasureTool>()->mode() == viewer::MeasureMode::off);
 }

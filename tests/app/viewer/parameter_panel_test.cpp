@@ -1,8 +1,8 @@
 #include <catch2/catch.hpp>
 
 #include "app/viewer_support.hpp"
-#include "viewer/parameter_panel.hpp"
-#include "viewer/session.hpp"
+#include "viewer/panels/parameter_panel.hpp"
+#include "viewer/session/session.hpp"
 
 using namespace nome;
 

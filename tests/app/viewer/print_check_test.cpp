@@ -10,7 +10,8 @@
 #include "nome/ops/subdivide.hpp"
 #include "render/image.hpp"
 #include "support/shapes.hpp"
-#include "viewer/print_check_view.hpp"
+#include "viewer/tools/print_check_job.hpp"
+#include "viewer/tools/print_check_tool.hpp"
 #include "viewer/window.hpp"
 
 using namespace nome;
@@ -96,7 +97,7 @@ TEST_CASE("the viewer's print check marks a torus offset past its minor radius a
                                 nome::test::TestRenderer::gl);
   CHECK(viewer.run() == 0);
   CHECK_THAT(viewer.messages(), Catch::Contains("print check: not printable"));
-  const viewer::PrintCheckRun* run = viewer.window().print_check().last();
+  const viewer::PrintCheckRun* run = viewer.window().find_tool<viewer::PrintCheckTool>()->job().last();
   REQUIRE(run);
   CHECK(!run->check.fold_over_faces.empty());
   CHECK(!run->check.is_printable());
@@ -117,7 +118,7 @@ TEST_CASE("the viewer checks the Klein bottle after an offset change once it res
   nome::test::TestViewer viewer(print_check_options(dir, nome::test::assets + "klein_bottle.obj", script), {},
                                 nome::test::TestRenderer::gl);
   CHECK(viewer.run() == 0);
-  const viewer::PrintCheckRun* run = viewer.window().print_check().last();
+  const viewer::PrintCheckRun* run = viewer.window().find_tool<viewer::PrintCheckTool>()->job().last();
   REQUIRE(run);
   CHECK(run->check.offset_distance == 0.03);
   CHECK(run->check.crossings.curves > 0);

@@ -5,7 +5,7 @@
 #include "app/viewer_support.hpp"
 #include "nome/error.hpp"
 #include "nome/io/stl.hpp"
-#include "viewer/session.hpp"
+#include "viewer/session/session.hpp"
 
 using namespace nome;
 

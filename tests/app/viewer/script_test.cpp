@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "nome/error.hpp"
-#include "viewer/script.hpp"
+#include "viewer/commands/script.hpp"
 
 using nome::viewer::parse_script;
 using Kind = nome::viewer::ScriptCommand::Kind;

@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 
 #include "app/viewer_support.hpp"
+#include "viewer/tools/section_tool.hpp"
 #include "viewer/window.hpp"
 
 using namespace nome;
@@ -25,7 +26,7 @@ TEST_CASE("C cuts the view with a section plane through the middle, filled on a 
   viewer::InputFrame press;
   press.keys.push_back({GLFW_KEY_C, viewer::KeyModifier::none});
   viewer.frame(press);
-  REQUIRE(viewer.window().section().is_on);
+  REQUIRE(viewer.window().find_tool<viewer::SectionTool>()->state().is_on);
   viewer.frame();
   const render::DisplaySettings& display = viewer.window().display();
   // Perpendicular to z through the middle of the solid (the band is symmetric about z = 0).

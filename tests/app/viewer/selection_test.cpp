@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "support/shapes.hpp"
-#include "viewer/selection.hpp"
+#include "viewer/view/selection.hpp"
 
 using namespace nome;
 using nome::viewer::Selection;

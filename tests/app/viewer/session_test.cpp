@@ -6,7 +6,7 @@
 #include "app/cli_support.hpp"
 #include "nome/error.hpp"
 #include "support/shared_examples.hpp"
-#include "viewer/session.hpp"
+#include "viewer/session/session.hpp"
 
 using namespace nome;
 using nome::viewer::Session;

@@ -6,8 +6,8 @@
 #include "app/viewer_support.hpp"
 #include "support/missing_point_scene.hpp"
 #include "viewer/message_log.hpp"
-#include "viewer/session_controller.hpp"
-#include "viewer/source_text.hpp"
+#include "viewer/session/session_controller.hpp"
+#include "viewer/session/source_text.hpp"
 
 using namespace nome;
 using nome::scene::SourceLocation;

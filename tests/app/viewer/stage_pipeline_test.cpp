@@ -11,8 +11,8 @@
 #include "nome/ops/offset_normals.hpp"
 #include "support/same_report.hpp"
 #include "support/shapes.hpp"
-#include "viewer/session.hpp"
-#include "viewer/stage_pipeline.hpp"
+#include "viewer/session/session.hpp"
+#include "viewer/session/stage_pipeline.hpp"
 
 using namespace nome;
 using nome::viewer::StagePipeline;

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "support/shapes.hpp"
-#include "viewer/stage_view.hpp"
+#include "viewer/session/stage_view.hpp"
 
 using namespace nome;
 using namespace std::chrono_literals;

@@ -8,6 +8,7 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/mesh/glue_faces.hpp"
 #include "support/placed_scene.hpp"
+#include "viewer/tools/text_pane_tool.hpp"
 #include "viewer/window.hpp"
 
 using namespace nome;
@@ -147,8 +148,8 @@ TEST_CASE("applying a good edit changes the geometry, and saving writes the text
     CHECK(entry.path().extension() != ".tmp");
   // The watcher took the save for the pane's own: no reload over the user's state.
   CHECK_THAT(log, !Catch::Contains("reloaded"));
-  CHECK(viewer.window().text_pane().text() == good);
-  CHECK_FALSE(viewer.window().text_pane().is_modified());
+  CHECK(viewer.window().find_tool<viewer::TextPaneTool>()->pane().text() == good);
+  CHECK_FALSE(viewer.window().find_tool<viewer::TextPaneTool>()->pane().is_modified());
 }
 
 TEST_CASE("a change on disk reaches a clean pane, and a modified pane keeps the user's text", "[app]") {
@@ -169,7 +170,7 @@ TEST_CASE("a change on disk reaches a clean pane, and a modified pane keeps the 
     if (is_modified) options.script = test::write_script(dir, "text-set " + dir + "/mine.nome\n");
     test::TestViewer viewer(options);
     for (int i = 0; i < 10; ++i) viewer.frame();
-    const viewer::TextPane& pane = viewer.window().text_pane();
+    const viewer::TextPane& pane = viewer.window().find_tool<viewer::TextPaneTool>()->pane();
     REQUIRE(pane.text() == (is_modified ? mine : placed_scene));
     touch(viewer, theirs);
     INFO(viewer.messages());

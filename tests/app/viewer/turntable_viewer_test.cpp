@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 
 #include "app/viewer_support.hpp"
+#include "viewer/tools/turntable_tool.hpp"
 #include "viewer/window.hpp"
 
 using namespace nome;
@@ -19,7 +20,7 @@ TEST_CASE("the viewer's turntable (T) turns the view about the vertical axis unt
   viewer::InputFrame press;
   press.keys.push_back({GLFW_KEY_T, viewer::KeyModifier::none});
   viewer.frame(press);
-  REQUIRE(viewer.window().is_turntable_on());
+  REQUIRE(viewer.window().find_tool<viewer::TurntableTool>()->is_on());
   CHECK(viewer.window().is_animating());
   const glm::dvec3 eye = viewer.window().camera().eye() - viewer.window().camera().target;
   // A second of frames (each frame moves the test clock a sixtieth of a second): a twelfth of a turn,
@@ -30,7 +31,7 @@ TEST_CASE("the viewer's turntable (T) turns the view about the vertical axis unt
   const double angle = std::atan2(turned.x, turned.z) - std::atan2(eye.x, eye.z);
   CHECK(std::remainder(angle, 2 * M_PI) == Approx(M_PI / 6).epsilon(0.05));
   viewer.frame(press);
-  CHECK_FALSE(viewer.window().is_turntable_on());
+  CHECK_FALSE(viewer.window().find_tool<viewer::TurntableTool>()->is_on());
   const glm::dvec3 stopped = viewer.window().camera().eye();
   viewer.frame();
   CHECK(viewer.window().camera().eye() == stopped);

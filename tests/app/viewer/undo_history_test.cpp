@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "app/viewer_support.hpp"
-#include "viewer/session_controller.hpp"
+#include "viewer/session/session_controller.hpp"
 #include "viewer/window.hpp"
 
 using namespace nome;
