@@ -10,7 +10,7 @@ namespace {
 Piece evaluate_cartesian_surface(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   constexpr std::array<std::string_view, 2> variables{"x", "y"};
-  const std::vector<FunctionString> f = read_functions(c, decl, {"func"}, variables);
+  const std::vector<CompiledExpression> f = read_functions(c, decl, {"func"}, variables);
   const SampleRange x = sample_range(c, a, 0, 4, "x");
   const SampleRange y = sample_range(c, a, 2, 5, "y");
   Piece piece;
@@ -34,6 +34,7 @@ StatementKind cartesian_statement() {
                                 .end_keyword = "endgencartesiansurf",
                                 .signature = "func [f(x,y)] (x_min x_max y_min y_max x_segs y_segs)",
                                 .argument_count = 6,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_cartesian_surface,
                                 .example = "func [x*y-2x] (-1 1 -1 1 4 3)"});
 }

@@ -6,10 +6,10 @@
 
 namespace nome::scene {
 
-std::vector<FunctionString> read_functions(const DefinitionContext& context, Index decl,
-                                           std::initializer_list<std::string_view> keywords,
-                                           std::span<const std::string_view> variables) {
-  std::vector<FunctionString> result;
+std::vector<CompiledExpression> read_functions(const DefinitionContext& context, Index decl,
+                                               std::initializer_list<std::string_view> keywords,
+                                               std::span<const std::string_view> variables) {
+  std::vector<CompiledExpression> result;
   for (const FunctionText* f : generator_functions(context, decl, keywords))
     result.emplace_back(f->text, variables, f->location);
   return result;

@@ -6,14 +6,14 @@
 
 #include "nome/scene/statement_kinds.hpp"
 #include "scene/definition_context.hpp"
-#include "scene/generators/function_string.hpp"
+#include "scene/expression_compiler.hpp"
 
 namespace nome::scene {
 
 // The function texts of generator `decl` under `keywords`, read over `variables`.
-std::vector<FunctionString> read_functions(const DefinitionContext& context, Index decl,
-                                           std::initializer_list<std::string_view> keywords,
-                                           std::span<const std::string_view> variables);
+std::vector<CompiledExpression> read_functions(const DefinitionContext& context, Index decl,
+                                               std::initializer_list<std::string_view> keywords,
+                                               std::span<const std::string_view> variables);
 
 // A sample range of a function surface: `segs` segments from `min` to `max`.
 struct SampleRange {
