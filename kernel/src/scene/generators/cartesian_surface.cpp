@@ -20,8 +20,8 @@ Piece evaluate_cartesian_surface(DefinitionContext& c, Index decl) {
   // Faces turn from +x to +y: they face up.
   add_surface_grid(piece, grid, [&](int i, int j) {
     const std::array<double, 2> at{x.at(i), y.at(j)};
-    const double z =
-        finite_value(c, decl, f[0](at), "x = " + format_number(at[0]) + ", y = " + format_number(at[1]));
+    const double z = finite_value(
+        c, decl, f[0](at), [&] { return "x = " + format_number(at[0]) + ", y = " + format_number(at[1]); });
     return Vec3(at[0], at[1], z);
   });
   return piece;

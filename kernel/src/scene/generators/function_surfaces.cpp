@@ -24,14 +24,10 @@ SampleRange sample_range(DefinitionContext& context, const std::vector<Value>& a
   return r;
 }
 
-double finite_value(const DefinitionContext& context, Index decl, double value, std::string_view where) {
-  if (!std::isfinite(value)) {
-    const GeneratorDecl& g = context.ast().generators[decl];
-    throw EvaluationError(
-        g.functions.empty() ? g.name.location : g.functions.front().location,
-        "the function of '" + g.name.text + "' has no finite value at " + std::string(where));
-  }
-  return value;
+void throw_not_finite(const DefinitionContext& context, Index decl, std::string_view where) {
+  const GeneratorDecl& g = context.ast().generators[decl];
+  throw EvaluationError(g.functions.empty() ? g.name.location : g.functions.front().location,
+                        "the function of '" + g.name.text + "' has no finite value at " + std::string(where));
 }
 
 }  // namespace nome::scene

@@ -120,9 +120,9 @@ Piece evaluate_implicit_surface(DefinitionContext& c, Index decl) {
   for (Index s = 0; s < values.size(); ++s) {
     const Vec3 p = box.position(s);
     const std::array<double, 3> at{p.x, p.y, p.z};
-    values[s] = finite_value(
-        c, decl, f[0](at),
-        "x = " + format_number(p.x) + ", y = " + format_number(p.y) + ", z = " + format_number(p.z));
+    values[s] = finite_value(c, decl, f[0](at), [&] {
+      return "x = " + format_number(p.x) + ", y = " + format_number(p.y) + ", z = " + format_number(p.z);
+    });
   }
   Piece piece;
   Contour contour(box, values, piece);

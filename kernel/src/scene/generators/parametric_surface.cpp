@@ -21,7 +21,7 @@ Piece evaluate_parametric_surface(DefinitionContext& c, Index decl) {
   grid.along = v.segs;
   add_surface_grid(piece, grid, [&](int i, int j) {
     const std::array<double, 2> at{u.at(i), v.at(j)};
-    const std::string where = "u = " + format_number(at[0]) + ", v = " + format_number(at[1]);
+    const auto where = [&] { return "u = " + format_number(at[0]) + ", v = " + format_number(at[1]); };
     return Vec3(finite_value(c, decl, f[0](at), where), finite_value(c, decl, f[1](at), where),
                 finite_value(c, decl, f[2](at), where));
   });
