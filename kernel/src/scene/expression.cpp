@@ -1,5 +1,6 @@
 #include "nome/scene/expression.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <numbers>
@@ -7,19 +8,20 @@
 namespace nome::scene {
 namespace {
 
-struct FunctionInfo {
-  const char* name;
-  Function function;
-  int arity;
-};
-
-constexpr FunctionInfo functions[] = {
-    {"sin", Function::sin, 1},     {"cos", Function::cos, 1},   {"tan", Function::tan, 1},
-    {"asin", Function::asin, 1},   {"acos", Function::acos, 1}, {"atan", Function::atan, 1},
-    {"atan2", Function::atan2, 2}, {"sqrt", Function::sqrt, 1}, {"abs", Function::abs, 1},
-    {"pow", Function::pow, 2},     {"exp", Function::exp, 1},   {"log", Function::log, 1},
-    {"floor", Function::floor, 1}, {"ceil", Function::ceil, 1}, {"min", Function::min, 2},
-    {"max", Function::max, 2},
+constexpr FunctionSignature functions[] = {
+    {"sin", Function::sin, 1, 1, 1},     {"cos", Function::cos, 1, 1, 1},
+    {"tan", Function::tan, 1, 1, 1},     {"asin", Function::asin, 1, 1, 1},
+    {"acos", Function::acos, 1, 1, 1},   {"atan", Function::atan, 1, 1, 1},
+    {"atan2", Function::atan2, 2, 2, 2}, {"sinh", Function::sinh, 0, 1, 1},
+    {"cosh", Function::cosh, 0, 1, 1},   {"tanh", Function::tanh, 0, 1, 1},
+    {"sqrt", Function::sqrt, 1, 1, 1},   {"abs", Function::abs, 1, 1, 1},
+    {"exp", Function::exp, 1, 1, 1},     {"log", Function::log, 1, 1, 1},
+    {"log10", Function::log10, 0, 1, 1}, {"floor", Function::floor, 1, 1, 1},
+    {"ceil", Function::ceil, 1, 1, 1},   {"round", Function::round, 0, 1, 1},
+    {"sgn", Function::sgn, 0, 1, 1},     {"pow", Function::pow, 2, 2, 2},
+    {"hypot", Function::hypot, 0, 2, 2}, {"min", Function::min, 2, 1, 0},
+    {"max", Function::max, 2, 1, 0},     {"avg", Function::avg, 0, 1, 0},
+    {"sum", Function::sum, 0, 1, 0},
 };
 
 const char* operator_text(ExprOp op) {
@@ -53,42 +55,10 @@ const char* operator_text(ExprOp op) {
   }
 }
 
-double apply(Function f, double a, double b) {
-  switch (f) {
-    case Function::sin:
-      return std::sin(a);
-    case Function::cos:
-      return std::cos(a);
-    case Function::tan:
-      return std::tan(a);
-    case Function::asin:
-      return std::asin(a);
-    case Function::acos:
-      return std::acos(a);
-    case Function::atan:
-      return std::atan(a);
-    case Function::atan2:
-      return std::atan2(a, b);
-    case Function::sqrt:
-      return std::sqrt(a);
-    case Function::abs:
-      return std::abs(a);
-    case Function::pow:
-      return std::pow(a, b);
-    case Function::exp:
-      return std::exp(a);
-    case Function::log:
-      return std::log(a);
-    case Function::floor:
-      return std::floor(a);
-    case Function::ceil:
-      return std::ceil(a);
-    case Function::min:
-      return std::min(a, b);
-    case Function::max:
-      return std::max(a, b);
-  }
-  return 0;
+double sum(std::span<const double> a) {
+  double s = 0;
+  for (double x : a) s += x;
+  return s;
 }
 
 }  // namespace
@@ -98,26 +68,75 @@ ExprId ExpressionPool::add(ExprNode node) {
   return static_cast<ExprId>(nodes_.size() - 1);
 }
 
-bool find_function(const std::string& name, Function& function, int& arity) {
-  for (const FunctionInfo& f : functions)
-    if (name == f.name) {
-      function = f.function;
-      arity = f.arity;
-      return true;
-    }
-  return false;
+const FunctionSignature* find_function(std::string_view name) {
+  for (const FunctionSignature& f : functions)
+    if (name == f.name) return &f;
+  return nullptr;
 }
 
 const char* function_name(Function function) {
-  for (const FunctionInfo& f : functions)
+  for (const FunctionSignature& f : functions)
     if (f.function == function) return f.name;
   return "?";
 }
 
-namespace {
+double apply_function(Function f, std::span<const double> a) {
+  switch (f) {
+    case Function::sin:
+      return std::sin(a[0]);
+    case Function::cos:
+      return std::cos(a[0]);
+    case Function::tan:
+      return std::tan(a[0]);
+    case Function::asin:
+      return std::asin(a[0]);
+    case Function::acos:
+      return std::acos(a[0]);
+    case Function::atan:
+      return std::atan(a[0]);
+    case Function::atan2:
+      return std::atan2(a[0], a[1]);
+    case Function::sqrt:
+      return std::sqrt(a[0]);
+    case Function::abs:
+      return std::abs(a[0]);
+    case Function::pow:
+      return std::pow(a[0], a[1]);
+    case Function::exp:
+      return std::exp(a[0]);
+    case Function::log:
+      return std::log(a[0]);
+    case Function::floor:
+      return std::floor(a[0]);
+    case Function::ceil:
+      return std::ceil(a[0]);
+    case Function::min:
+      return *std::min_element(a.begin(), a.end());
+    case Function::max:
+      return *std::max_element(a.begin(), a.end());
+    case Function::sinh:
+      return std::sinh(a[0]);
+    case Function::cosh:
+      return std::cosh(a[0]);
+    case Function::tanh:
+      return std::tanh(a[0]);
+    case Function::log10:
+      return std::log10(a[0]);
+    case Function::round:
+      return std::round(a[0]);
+    case Function::sgn:
+      return double((a[0] > 0) - (a[0] < 0));
+    case Function::hypot:
+      return std::hypot(a[0], a[1]);
+    case Function::avg:
+      return sum(a) / double(a.size());
+    case Function::sum:
+      return sum(a);
+  }
+  return 0;
+}
 
-// An arithmetic or comparison operator on its two evaluated operands.
-double binary(ExprOp op, double a, double b) {
+double apply_operator(ExprOp op, double a, double b) {
   switch (op) {
     case ExprOp::add:
       return a + b;
@@ -143,12 +162,14 @@ double binary(ExprOp op, double a, double b) {
       return a == b;
     case ExprOp::not_equal:
       return a != b;
+    case ExprOp::logical_and:
+      return a != 0 && b != 0;
+    case ExprOp::logical_or:
+      return a != 0 || b != 0;
     default:
       return 0;
   }
 }
-
-}  // namespace
 
 double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> parameters,
                 std::vector<Index>* reads) {
@@ -169,7 +190,9 @@ double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> p
     case ExprOp::call: {
       const double a = arg(0);
       const double b = n.args[1] == no_index ? 0.0 : arg(1);
-      const double result = apply(n.function, a, b);
+      const double both[2] = {a, b};
+      const double result =
+          apply_function(n.function, std::span<const double>(both, n.args[1] == no_index ? 1 : 2));
       if (!std::isfinite(result))
         throw EvaluationError(n.location, std::string(function_name(n.function)) + "(" + format_number(a) +
                                               (n.args[1] == no_index ? "" : ", " + format_number(b)) +
@@ -182,7 +205,7 @@ double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> p
   const double a = arg(0), b = arg(1);
   if (b == 0 && (n.op == ExprOp::divide || n.op == ExprOp::modulo))
     throw EvaluationError(n.location, std::string("division by zero in '") + operator_text(n.op) + "'");
-  const double result = binary(n.op, a, b);
+  const double result = apply_operator(n.op, a, b);
   if (!std::isfinite(result))
     throw EvaluationError(n.location,
                           std::string("the result of '") + operator_text(n.op) + "' is not finite");

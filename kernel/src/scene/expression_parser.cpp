@@ -208,15 +208,15 @@ ExprId StatementParser::primary() {
 }
 
 ExprId StatementParser::call(const Token& t) {
-  Function f{};
-  int arity = 0;
-  if (!find_function(t.text, f, arity)) {
+  const FunctionSignature* f = find_function(t.text);
+  if (!f || f->arity == 0) {
     diagnostics_.error(t.location,
                        "unknown function '" + t.text + "'" +
                            did_you_mean(t.text, {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sqrt",
                                                  "abs", "pow", "exp", "log", "floor", "ceil", "min", "max"}));
     throw SyntaxError{};
   }
+  const int arity = f->arity;
   take();
   take();
   ExprId args[2] = {no_index, no_index};
@@ -235,7 +235,7 @@ ExprId StatementParser::call(const Token& t) {
     throw SyntaxError{};
   }
   const ExprId id = node(ExprOp::call, t.location, args[0], args[1]);
-  ast_->expressions.node(id).function = f;
+  ast_->expressions.node(id).function = f->function;
   return id;
 }
 

@@ -32,57 +32,22 @@ void StatementParser::note_dialect(Dialect dialect, const std::string& cue, Sour
   ast_->dialect = {dialect, cue + " at " + diagnostics_.file() + ":" + location_text(at)};
 }
 
-// Statements only the successor (JIPCAD) has: one of them decides a file's dialect.
-bool is_successor_keyword(std::string_view word) {
-  static constexpr std::string_view words[] = {"include",
-                                               "subdivision",
-                                               "offset",
-                                               "camera",
-                                               "light",
-                                               "window",
-                                               "viewport",
-                                               "frontcolor",
-                                               "backcolor",
-                                               "backgroundcolor",
-                                               "background",
-                                               "backface",
-                                               "sphere",
-                                               "ellipsoid",
-                                               "cylinder",
-                                               "cone",
-                                               "disk",
-                                               "torus",
-                                               "torusknot",
-                                               "helix",
-                                               "spiral",
-                                               "hyperboloid",
-                                               "dupin",
-                                               "gencartesiansurf",
-                                               "genparametricsurf",
-                                               "genimplicitsurf",
-                                               "beziercurve",
-                                               "bspline",
-                                               "sweep",
-                                               "sweepmorph",
-                                               "morphvisualizer",
-                                               "controlpoint"};
-  return std::find(std::begin(words), std::end(words), word) != std::end(words);
-}
-
 // Every statement is a row of statement_kinds(): its keyword picks the row that parses it.
 void StatementParser::top_level_statement() {
   const Token t = peek();
   statement_end_ = {};
   const std::optional<Index> kind = t.kind == TokenKind::word ? find_statement_kind(t.text) : std::nullopt;
-  if (is_slf_ && !(kind && statement_kinds()[*kind].is_slf)) {
+  if (is_slf_ && !(kind && statement_kinds()[*kind].dialect == StatementDialect::slide)) {
     if (t.kind != TokenKind::word) fail(t, "a statement (" + statement_keyword_list(true) + ")");
     diagnostics_.error(t.location, "not supported yet: " + t.text);
     skip_unsupported(t.text);
     return;
   }
   if (!kind) fail(t, "a statement (" + statement_keyword_list() + ")");
-  if (is_successor_keyword(t.text)) note_dialect(Dialect::jipcad, "'" + t.text + "'", t.location);
-  statement_kinds()[*kind].parse(*this, *kind);
+  const StatementKind& row = statement_kinds()[*kind];
+  if (row.dialect == StatementDialect::successor)
+    note_dialect(Dialect::jipcad, "'" + t.text + "'", t.location);
+  row.parse(*this, *kind);
 }
 
 // .slf: skips an unsupported statement: to its `endWORD`, or over a `{ ... }` block (tclinit).

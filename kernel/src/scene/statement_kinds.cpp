@@ -1,7 +1,8 @@
 // The one table of the .nome language's statements. Each row is made by its statement's own file (its
-// keywords, argument shape, parser, writer and evaluator); this file only lists them. To add a generator:
-// write generators/NAME.cpp (its geometry, its evaluator and NAME_statement() returning its row), declare
-// NAME_statement() below and add it to the table; then its section in docs/language.md and its tests.
+// keywords, the dialects it belongs to, argument shape, parser, writer and evaluator); this file only lists
+// them. To add a generator: write generators/NAME.cpp (its geometry, its evaluator and NAME_statement()
+// returning its row), declare NAME_statement() below and add it to the table; then its section in
+// docs/language.md and its tests.
 #include "nome/scene/statement_kinds.hpp"
 
 #include <algorithm>
@@ -60,10 +61,13 @@ StatementKind sweep_morph_statement();
 StatementKind morph_visualizer_statement();
 StatementKind ribbon_statement();
 
-std::span<const StatementKind> statement_kinds() {
+namespace {
+
+// The built-in rows, then any added ones (AddedStatementKind).
+std::vector<StatementKind>& table() {
   // In the order error messages list the keywords and the writer writes the statements (any order
   // reads back: names are resolved after parsing).
-  static const std::vector<StatementKind> table = {
+  static std::vector<StatementKind> rows = {
       bank_statement(),          // sliders
       surface_statement(),       // a colour
       point_statement(),         // a named position
@@ -104,7 +108,7 @@ std::span<const StatementKind> statement_kinds() {
       light_statement(), window_statement(), viewport_statement(), frontcolor_statement(),
       backcolor_statement(), backgroundcolor_statement(), backface_statement(),
 
-      // Curves and sweeps (issue 15)
+      // Curves and sweeps
       control_point_statement(),     // a point that shapes a sweep's cross-section
       bezier_curve_statement(),      // curve: a rim line, a sweep's path or cross-section
       bspline_statement(),           // curve: uniform B-spline
@@ -113,7 +117,21 @@ std::span<const StatementKind> statement_kinds() {
       morph_visualizer_statement(),  // one of a sweep's cross-sections
       ribbon_statement(),            // a band along a rim line (report 6.3's rim ribbon)
   };
-  return table;
+  return rows;
+}
+
+}  // namespace
+
+std::span<const StatementKind> statement_kinds() {
+  return table();
+}
+
+AddedStatementKind::AddedStatementKind(StatementKind kind) {
+  table().push_back(kind);
+}
+
+AddedStatementKind::~AddedStatementKind() {
+  table().pop_back();
 }
 
 std::optional<Index> find_statement_kind(std::string_view keyword) {
@@ -127,7 +145,8 @@ std::optional<Index> find_statement_kind(std::string_view keyword) {
 std::string statement_keyword_list(bool is_slf) {
   std::string list;
   for (const StatementKind& k : statement_kinds())
-    if (!is_slf || k.is_slf) list += (list.empty() ? "" : ", ") + std::string(k.keyword);
+    if (!is_slf || k.dialect == StatementDialect::slide)
+      list += (list.empty() ? "" : ", ") + std::string(k.keyword);
   return list;
 }
 

@@ -114,7 +114,5 @@ class StatementParser {
 };
 
 bool is_top_level_keyword(const Token& t);
-// A statement only NOME's successor (JIPCAD) has: it decides a text's dialect.
-bool is_successor_keyword(std::string_view word);
 
 }  // namespace nome::scene

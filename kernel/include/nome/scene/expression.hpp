@@ -2,6 +2,7 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "nome/error.hpp"
@@ -29,7 +30,13 @@ enum class ExprOp {
   greater_equal,
   equal,
   not_equal,
-  call
+  call,
+  // Only in JIPCAD's bracketed functions (expression_compiler.hpp):
+  variable,
+  logical_not,
+  logical_and,
+  logical_or,
+  condition
 };
 
 enum class Function {
@@ -48,7 +55,17 @@ enum class Function {
   floor,
   ceil,
   min,
-  max
+  max,
+  // Only in JIPCAD's bracketed functions:
+  sinh,
+  cosh,
+  tanh,
+  log10,
+  round,
+  sgn,
+  hypot,
+  avg,
+  sum
 };
 
 // One node of an expression tree; children are ids into the same pool.
@@ -105,8 +122,22 @@ std::string to_source(const ExpressionPool& pool, const Value& value);
 // The shortest text that reads back as exactly `x`.
 std::string format_number(double x);
 
-// The function of a name (`sin`, `atan2`, ...) and its argument count; false if it is no function.
-bool find_function(const std::string& name, Function& function, int& arity);
+// A function by name, with its argument counts: in `{expr ...}` exactly `arity` (0: not there); in JIPCAD's
+// bracketed functions from `min_args` to `max_args` (0: any count).
+struct FunctionSignature {
+  const char* name;
+  Function function;
+  int arity;
+  int min_args, max_args;
+};
+// The function of a name (`sin`, `atan2`, ...), or null.
+const FunctionSignature* find_function(std::string_view name);
 const char* function_name(Function function);
+
+// The value of a function at its arguments (radians); NaN or infinite where it is undefined.
+double apply_function(Function function, std::span<const double> args);
+// The value of a binary operator (add to not_equal, logical_and, logical_or): comparisons and logic give 1
+// or 0, `%` is the floating remainder.
+double apply_operator(ExprOp op, double a, double b);
 
 }  // namespace nome::scene

@@ -25,6 +25,14 @@ struct DeclaredName {
   Index decl;
 };
 
+// The texts a statement belongs to. Both .nome dialects read the statements of either (`--dialect 2016`
+// reads a sphere too), so one the successor alone has tells a file's dialect: the first such decides it.
+enum class StatementDialect {
+  slide,      // SLIDE's subset read from .slf files, and every .nome file
+  nome,       // every .nome file, the 2016 report's or the successor's
+  successor,  // JIPCAD's: it makes a .nome file the successor's; a .slf file refuses it
+};
+
 // One top-level statement of the .nome language: how it is parsed, saved and, for a definition that makes
 // geometry, evaluated. The parser, the writer and the scene read this table only, so that adding a
 // generator is its evaluator file and one row (see statement_kinds.cpp).
@@ -36,7 +44,7 @@ struct StatementKind {
   std::string_view signature = {};
   std::size_t argument_count = 0;
   std::size_t alternative_argument_count = 0;
-  bool is_slf = false;  // part of the SLIDE subset read from .slf files
+  StatementDialect dialect = StatementDialect::nome;
   // Reads the statement at the parser's position (its keyword not yet taken) into the parser's AST.
   void (*parse)(StatementParser& parser, Index kind) = nullptr;
   // Writes every statement of this kind (the writer runs the rows in table order).
@@ -69,5 +77,21 @@ std::span<const StatementKind> statement_kinds();
 std::optional<Index> find_statement_kind(std::string_view keyword);
 // `bank, surface, point, ...`: the keywords of the rows, comma separated (the SLIDE subset if `is_slf`).
 std::string statement_keyword_list(bool is_slf = false);
+
+// A row added after the built-in ones for as long as this lives: a statement kept outside the kernel is its
+// own file and this one line. Added and removed in nested order, while no text is being read.
+class AddedStatementKind {
+ public:
+  explicit AddedStatementKind(StatementKind kind);
+  ~AddedStatementKind();
+  AddedStatementKind(const AddedStatementKind&) = delete;
+  AddedStatementKind& operator=(const AddedStatementKind&) = delete;
+};
+
+// A generator's row completed with what all generators share: `keyword NAME (arguments) end_keyword`
+// parsed with the row's argument counts and signature, saved as written, named in the definitions.
+StatementKind with_generator_syntax(StatementKind kind);
+// The values of generator `decl`'s arguments now, each slider read recorded (its evaluator's numbers).
+std::vector<double> generator_numbers(DefinitionContext& context, Index decl);
 
 }  // namespace nome::scene

@@ -45,6 +45,7 @@ void vertex_lists_bezier_curve(const DefinitionScope& scope, Index decl,
 StatementKind bezier_curve_statement() {
   return with_curve_syntax({.keyword = "beziercurve",
                             .end_keyword = "endbeziercurve",
+                            .dialect = StatementDialect::successor,
                             .vertex_lists = vertex_lists_bezier_curve,
                             .sample = sample_bezier_curve,
                             .example = "(p0 p1 p2) segs 4"});

@@ -100,6 +100,7 @@ void vertex_lists_bspline(const DefinitionScope& scope, Index decl,
 StatementKind bspline_statement() {
   return with_curve_syntax({.keyword = "bspline",
                             .end_keyword = "endbspline",
+                            .dialect = StatementDialect::successor,
                             .vertex_lists = vertex_lists_bspline,
                             .sample = sample_bspline,
                             .example = "order 3 (p0 p1 p2 p3) segs 6"});

@@ -34,7 +34,7 @@ void vertex_lists_face(const DefinitionScope& scope, Index decl, std::vector<con
 StatementKind face_statement() {
   return {.keyword = "face",
           .end_keyword = "endface",
-          .is_slf = true,
+          .dialect = StatementDialect::slide,
           .parse = parse_face,
           .save = save_face,
           .declare = declare_face,

@@ -55,7 +55,7 @@ void vertex_lists_object(const DefinitionScope& scope, Index decl,
 StatementKind object_statement() {
   return {.keyword = "object",
           .end_keyword = "endobject",
-          .is_slf = true,
+          .dialect = StatementDialect::slide,
           .parse = parse_object,
           .save = save_object,
           .declare = declare_object,

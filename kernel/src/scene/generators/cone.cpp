@@ -34,6 +34,7 @@ StatementKind cone_statement() {
                                 .end_keyword = "endcone",
                                 .signature = "(radius height hgt_max theta_max theta_segs [botcap] [topcap])",
                                 .argument_count = 5,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_cone,
                                 .example = "(1 2 1 360 6 botcap)"});
 }

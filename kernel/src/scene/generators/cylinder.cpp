@@ -69,6 +69,7 @@ StatementKind cylinder_statement() {
                                 .end_keyword = "endcylinder",
                                 .signature = "(radius height theta_max theta_segs [botcap] [topcap])",
                                 .argument_count = 4,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_cylinder,
                                 .example = "(1 2 360 6 botcap topcap)"});
 }

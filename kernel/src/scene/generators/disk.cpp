@@ -44,6 +44,7 @@ StatementKind disk_statement() {
                                 .end_keyword = "enddisk",
                                 .signature = "(radius theta_max theta_segs)",
                                 .argument_count = 3,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_disk,
                                 .example = "(1 270 6)"});
 }

@@ -61,6 +61,7 @@ StatementKind dupin_statement() {
                                 .end_keyword = "enddupin",
                                 .signature = "(a b c d u v segs)",
                                 .argument_count = 7,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_dupin,
                                 .example = "(1 0.98 0.2 0.5 2 2 6)"});
 }

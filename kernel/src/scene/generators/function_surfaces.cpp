@@ -6,10 +6,10 @@
 
 namespace nome::scene {
 
-std::vector<FunctionString> read_functions(const DefinitionContext& context, Index decl,
-                                           std::initializer_list<std::string_view> keywords,
-                                           std::span<const std::string_view> variables) {
-  std::vector<FunctionString> result;
+std::vector<CompiledExpression> read_functions(const DefinitionContext& context, Index decl,
+                                               std::initializer_list<std::string_view> keywords,
+                                               std::span<const std::string_view> variables) {
+  std::vector<CompiledExpression> result;
   for (const FunctionText* f : generator_functions(context, decl, keywords))
     result.emplace_back(f->text, variables, f->location);
   return result;
@@ -24,14 +24,10 @@ SampleRange sample_range(DefinitionContext& context, const std::vector<Value>& a
   return r;
 }
 
-double finite_value(const DefinitionContext& context, Index decl, double value, std::string_view where) {
-  if (!std::isfinite(value)) {
-    const GeneratorDecl& g = context.ast().generators[decl];
-    throw EvaluationError(
-        g.functions.empty() ? g.name.location : g.functions.front().location,
-        "the function of '" + g.name.text + "' has no finite value at " + std::string(where));
-  }
-  return value;
+void throw_not_finite(const DefinitionContext& context, Index decl, std::string_view where) {
+  const GeneratorDecl& g = context.ast().generators[decl];
+  throw EvaluationError(g.functions.empty() ? g.name.location : g.functions.front().location,
+                        "the function of '" + g.name.text + "' has no finite value at " + std::string(where));
 }
 
 }  // namespace nome::scene

@@ -102,6 +102,12 @@ const std::vector<Value>& generator_arguments(const DefinitionContext& context, 
   return context.ast().generators[decl].args;
 }
 
+std::vector<double> generator_numbers(DefinitionContext& context, Index decl) {
+  std::vector<double> numbers;
+  for (const Value& v : generator_arguments(context, decl)) numbers.push_back(context.number(v));
+  return numbers;
+}
+
 Index ring(Piece& piece, int n, double radius, double z, const char* prefix) {
   const Index first = piece.soup.num_vertices();
   for (int i = 0; i < n; ++i) {

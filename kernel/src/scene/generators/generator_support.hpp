@@ -9,10 +9,6 @@
 
 namespace nome::scene {
 
-// A generator's row completed with what all generators share: `keyword NAME (arguments) end_keyword`
-// parsed with the row's argument counts and signature, saved as written, named in the definitions.
-StatementKind with_generator_syntax(StatementKind kind);
-
 // The arguments of generator `decl`, as written.
 const std::vector<Value>& generator_arguments(const DefinitionContext& context, Index decl);
 

@@ -37,6 +37,7 @@ StatementKind helix_statement() {
                                 .end_keyword = "endhelix",
                                 .signature = "(radius rise theta_max segs)",
                                 .argument_count = 4,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_helix,
                                 .example = "(1 0.2 720 24)"});
 }

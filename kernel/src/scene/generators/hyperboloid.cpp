@@ -139,6 +139,7 @@ StatementKind hyperboloid_statement() {
                                 .end_keyword = "endhyperboloid",
                                 .signature = "(segs a b c sheet theta)",
                                 .argument_count = 6,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_hyperboloid,
                                 .example = "(8 1 1 2 0 2)"});
 }

@@ -111,7 +111,7 @@ class Contour {
 Piece evaluate_implicit_surface(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   constexpr std::array<std::string_view, 3> variables{"x", "y", "z"};
-  const std::vector<FunctionString> f = read_functions(c, decl, {"func"}, variables);
+  const std::vector<CompiledExpression> f = read_functions(c, decl, {"func"}, variables);
   const Box box{sample_range(c, a, 0, 6, "x"), sample_range(c, a, 2, 7, "y"), sample_range(c, a, 4, 8, "z")};
   const double samples = double(box.nx()) * box.ny() * (box.z.segs + 1);
   if (samples > 8e6)
@@ -120,9 +120,9 @@ Piece evaluate_implicit_surface(DefinitionContext& c, Index decl) {
   for (Index s = 0; s < values.size(); ++s) {
     const Vec3 p = box.position(s);
     const std::array<double, 3> at{p.x, p.y, p.z};
-    values[s] = finite_value(
-        c, decl, f[0](at),
-        "x = " + format_number(p.x) + ", y = " + format_number(p.y) + ", z = " + format_number(p.z));
+    values[s] = finite_value(c, decl, f[0](at), [&] {
+      return "x = " + format_number(p.x) + ", y = " + format_number(p.y) + ", z = " + format_number(p.z);
+    });
   }
   Piece piece;
   Contour contour(box, values, piece);
@@ -140,6 +140,7 @@ StatementKind implicit_statement() {
        .end_keyword = "endgenimplicitsurf",
        .signature = "func [f(x,y,z)] (x_min x_max y_min y_max z_min z_max x_segs y_segs z_segs)",
        .argument_count = 9,
+       .dialect = StatementDialect::successor,
        .evaluate = evaluate_implicit_surface,
        .example = "func [x^2+y^2+z^2-1] (-1.5 1.5 -1.5 1.5 -1.5 1.5 3 3 3)"});
 }

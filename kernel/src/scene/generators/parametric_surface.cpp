@@ -12,7 +12,7 @@ namespace {
 Piece evaluate_parametric_surface(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   constexpr std::array<std::string_view, 2> variables{"u", "v"};
-  const std::vector<FunctionString> f = read_functions(c, decl, {"funcX", "funcY", "funcZ"}, variables);
+  const std::vector<CompiledExpression> f = read_functions(c, decl, {"funcX", "funcY", "funcZ"}, variables);
   const SampleRange u = sample_range(c, a, 0, 4, "u");
   const SampleRange v = sample_range(c, a, 2, 5, "v");
   Piece piece;
@@ -21,7 +21,7 @@ Piece evaluate_parametric_surface(DefinitionContext& c, Index decl) {
   grid.along = v.segs;
   add_surface_grid(piece, grid, [&](int i, int j) {
     const std::array<double, 2> at{u.at(i), v.at(j)};
-    const std::string where = "u = " + format_number(at[0]) + ", v = " + format_number(at[1]);
+    const auto where = [&] { return "u = " + format_number(at[0]) + ", v = " + format_number(at[1]); };
     return Vec3(finite_value(c, decl, f[0](at), where), finite_value(c, decl, f[1](at), where),
                 finite_value(c, decl, f[2](at), where));
   });
@@ -36,6 +36,7 @@ StatementKind parametric_statement() {
        .end_keyword = "endgenparametricsurf",
        .signature = "funcX [x(u,v)] funcY [y(u,v)] funcZ [z(u,v)] (u_min u_max v_min v_max u_segs v_segs)",
        .argument_count = 6,
+       .dialect = StatementDialect::successor,
        .evaluate = evaluate_parametric_surface,
        .example = "funcX [u] funcY [v] funcZ [sin(u)*cos(v)] (0 3 0 2 4 3)"});
 }

@@ -166,6 +166,7 @@ StatementKind sphere_statement() {
                                 .end_keyword = "endsphere",
                                 .signature = "(radius theta_max phi_min phi_max theta_segs phi_segs)",
                                 .argument_count = 6,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_sphere,
                                 .example = "(1 360 -90 90 8 4)"});
 }
@@ -178,6 +179,7 @@ StatementKind ellipsoid_statement() {
        .end_keyword = "endellipsoid",
        .signature = "(radius_x radius_y long_max latt_min latt_max segs_long segs_latt)",
        .argument_count = 7,
+       .dialect = StatementDialect::successor,
        .evaluate = evaluate_ellipsoid,
        .example = "(2 1 360 -90 90 8 4)"});
 }

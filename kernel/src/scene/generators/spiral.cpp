@@ -38,6 +38,7 @@ StatementKind spiral_statement() {
                                 .end_keyword = "endspiral",
                                 .signature = "(rate angle segs)",
                                 .argument_count = 3,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_spiral,
                                 .example = "(1 1080 36)"});
 }

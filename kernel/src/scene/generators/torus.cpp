@@ -72,6 +72,7 @@ StatementKind torus_statement() {
        .signature = "(rad_maj rad_min theta_max phi_min phi_max segs_theta segs_phi)",
        .argument_count = 7,
        .alternative_argument_count = 6,
+       .dialect = StatementDialect::successor,
        .evaluate = evaluate_torus,
        .example = "(2 0.5 360 0 360 8 6)"});
 }

@@ -95,6 +95,7 @@ StatementKind torus_knot_statement() {
                                 .end_keyword = "endtorusknot",
                                 .signature = "(symm turns rad_maj rad_min rad_tube segs_circ segs_sweep)",
                                 .argument_count = 7,
+                                .dialect = StatementDialect::successor,
                                 .evaluate = evaluate_torus_knot,
                                 .example = "(3 2 2 1 0.2 6 48)"});
 }

@@ -52,6 +52,7 @@ void save_control_point(SceneWriter& writer, Index) {
 StatementKind control_point_statement() {
   return {.keyword = "controlpoint",
           .end_keyword = "endcontrolpoint",
+          .dialect = StatementDialect::successor,
           .parse = parse_control_point,
           .save = save_control_point};
 }

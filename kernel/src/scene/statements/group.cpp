@@ -41,7 +41,7 @@ void declare_group(const SceneAst& ast, Index, std::vector<DeclaredName>& out) {
 StatementKind group_statement() {
   return {.keyword = "group",
           .end_keyword = "endgroup",
-          .is_slf = true,
+          .dialect = StatementDialect::slide,
           .parse = parse_group,
           .save = save_group,
           .declare = declare_group};

@@ -85,7 +85,11 @@ void save_include(SceneWriter&, Index) {}
 }  // namespace
 
 StatementKind include_statement() {
-  return {.keyword = "include", .end_keyword = "endinclude", .parse = parse_include, .save = save_include};
+  return {.keyword = "include",
+          .end_keyword = "endinclude",
+          .dialect = StatementDialect::successor,
+          .parse = parse_include,
+          .save = save_include};
 }
 
 }  // namespace nome::scene

@@ -21,7 +21,7 @@ void save_instance(SceneWriter& writer, Index) {
 StatementKind instance_statement() {
   return {.keyword = "instance",
           .end_keyword = "endinstance",
-          .is_slf = true,
+          .dialect = StatementDialect::slide,
           .parse = parse_instance,
           .save = save_instance};
 }

@@ -27,7 +27,7 @@ void save_point(SceneWriter& writer, Index) {
 StatementKind point_statement() {
   return {.keyword = "point",
           .end_keyword = "endpoint",
-          .is_slf = true,
+          .dialect = StatementDialect::slide,
           .parse = parse_point,
           .save = save_point};
 }

@@ -92,8 +92,11 @@ void save_render_statements(SceneWriter& writer, Index kind) {
 }
 
 StatementKind block(std::string_view keyword, std::string_view end_keyword) {
-  return {
-      .keyword = keyword, .end_keyword = end_keyword, .parse = parse_block, .save = save_render_statements};
+  return {.keyword = keyword,
+          .end_keyword = end_keyword,
+          .dialect = StatementDialect::successor,
+          .parse = parse_block,
+          .save = save_render_statements};
 }
 
 StatementKind color(std::string_view keyword, std::string_view end_keyword,
@@ -101,6 +104,7 @@ StatementKind color(std::string_view keyword, std::string_view end_keyword,
   return {.keyword = keyword,
           .end_keyword = end_keyword,
           .alternative_end_keyword = alternative_end_keyword,
+          .dialect = StatementDialect::successor,
           .parse = parse_color,
           .save = save_render_statements};
 }

@@ -106,12 +106,17 @@ void save_offset(SceneWriter& writer, Index) {
 StatementKind subdivision_statement() {
   return {.keyword = "subdivision",
           .end_keyword = "endsubdivision",
+          .dialect = StatementDialect::successor,
           .parse = parse_subdivision,
           .save = save_subdivision};
 }
 
 StatementKind offset_statement() {
-  return {.keyword = "offset", .end_keyword = "endoffset", .parse = parse_offset, .save = save_offset};
+  return {.keyword = "offset",
+          .end_keyword = "endoffset",
+          .dialect = StatementDialect::successor,
+          .parse = parse_offset,
+          .save = save_offset};
 }
 
 }  // namespace nome::scene

@@ -32,7 +32,7 @@ void save_surface(SceneWriter& writer, Index) {
 StatementKind surface_statement() {
   return {.keyword = "surface",
           .end_keyword = "endsurface",
-          .is_slf = true,
+          .dialect = StatementDialect::slide,
           .parse = parse_surface,
           .save = save_surface};
 }

@@ -61,6 +61,7 @@ Piece evaluate_morph_visualizer(DefinitionContext& context, Index decl) {
 StatementKind morph_visualizer_statement() {
   return {.keyword = "morphvisualizer",
           .end_keyword = "endmorphvisualizer",
+          .dialect = StatementDialect::successor,
           .parse = parse_morph_visualizer,
           .save = save_morph_visualizer,
           .declare = declare_morph_visualizer,
