@@ -34,8 +34,9 @@ deps:
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
 	fi
 
+# A unity build, as the test build below: a fresh clone's first picture in about half the compile time.
 release: deps
-	cmake -S . -B $(RELEASE) -DCMAKE_BUILD_TYPE=Release -DNOME_TESTS=OFF >/dev/null
+	cmake -S . -B $(RELEASE) -DCMAKE_BUILD_TYPE=Release -DNOME_TESTS=OFF -DCMAKE_UNITY_BUILD=ON >/dev/null
 	cmake --build $(RELEASE) -j$(JOBS)
 
 run: release
@@ -151,7 +152,7 @@ format: deps
 
 # clang-tidy with the checked-in .clang-tidy over the kernel and the app (not part of `make test`: it
 # takes longer than the build and is not clean yet).
-LINT_FILES ?= $(filter kernel/src/% app/%,$(filter %.cpp,$(SOURCES)))
+LINT_FILES ?= $(filter kernel/% app/%,$(filter %.cpp,$(SOURCES)))
 lint: deps
 	cmake -S . -B build/lint -DCMAKE_BUILD_TYPE=Debug -DNOME_TESTS=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >/dev/null
 	clang-tidy -p build/lint --quiet $(LINT_FILES)

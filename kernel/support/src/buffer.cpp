@@ -1,4 +1,4 @@
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 
 #include <sys/mman.h>
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 
 namespace nome {
 

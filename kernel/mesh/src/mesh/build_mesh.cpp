@@ -9,7 +9,7 @@
 #include "mesh/sharpness.hpp"
 #include "nome/error.hpp"
 #include "nome/mesh/mesh.hpp"
-#include "query/union_find.hpp"
+#include "support/union_find.hpp"
 
 namespace nome {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/packed_normal.hpp"
-#include "ops/parallel_for.hpp"
+#include "support/parallel_for.hpp"
 
 namespace nome::normal_passes {
 

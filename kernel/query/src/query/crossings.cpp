@@ -4,7 +4,7 @@
 #include <tuple>
 
 #include "query/run_parts.hpp"
-#include "query/union_find.hpp"
+#include "support/union_find.hpp"
 
 namespace nome {
 namespace {

@@ -4,7 +4,7 @@
 #include <glm/vec2.hpp>
 
 #include "nome/mesh/normals.hpp"
-#include "ops/parallel_for.hpp"
+#include "support/parallel_for.hpp"
 
 namespace nome {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "ops/parallel_for.hpp"
+#include "support/parallel_for.hpp"
 
 namespace nome {
 namespace {

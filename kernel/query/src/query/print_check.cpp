@@ -7,7 +7,7 @@
 #include "nome/error.hpp"
 #include "nome/mesh/normals.hpp"
 #include "nome/query/fold_overs.hpp"
-#include "query/union_find.hpp"
+#include "support/union_find.hpp"
 
 namespace nome {
 namespace {

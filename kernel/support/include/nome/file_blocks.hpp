@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 
 namespace nome {
 

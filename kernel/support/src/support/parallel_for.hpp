@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "nome/mesh/types.hpp"
+#include "nome/index.hpp"
 #include "nome/worker_pool.hpp"
 
 namespace nome {

@@ -3,7 +3,7 @@
 #include <numeric>
 #include <vector>
 
-#include "nome/mesh/types.hpp"
+#include "nome/index.hpp"
 
 namespace nome {
 

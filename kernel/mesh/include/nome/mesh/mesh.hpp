@@ -9,7 +9,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 #include "nome/mesh/polygon_soup.hpp"
 #include "nome/mesh/types.hpp"
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 #include "nome/mesh/names.hpp"
 #include "nome/mesh/soup_grid.hpp"
 #include "nome/mesh/types.hpp"

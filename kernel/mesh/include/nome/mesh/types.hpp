@@ -1,15 +1,10 @@
 #pragma once
 
-#include <cstdint>
-#include <limits>
-
 #include <glm/vec3.hpp>
 
-namespace nome {
+#include "nome/index.hpp"
 
-// 32-bit ids into contiguous arrays; `no_index` marks an absent element (a boundary edge's missing face).
-using Index = std::uint32_t;
-inline constexpr Index no_index = std::numeric_limits<Index>::max();
+namespace nome {
 
 using Vec3 = glm::dvec3;
 using Color = glm::vec3;

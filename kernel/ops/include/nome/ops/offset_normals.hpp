@@ -1,6 +1,6 @@
 #pragma once
 
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/normals.hpp"
 #include "nome/mesh/packed_normal.hpp"

@@ -3,7 +3,7 @@
 #include <span>
 #include <vector>
 
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 #include "nome/mesh/mesh.hpp"
 
 namespace nome {

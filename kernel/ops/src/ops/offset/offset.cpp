@@ -8,8 +8,8 @@
 #include "nome/error.hpp"
 #include "nome/mesh/face_orientation.hpp"
 #include "nome/mesh/normals.hpp"
-#include "ops/offset_input.hpp"
-#include "ops/parallel_for.hpp"
+#include "ops/offset/offset_input.hpp"
+#include "support/parallel_for.hpp"
 
 namespace nome {
 namespace {

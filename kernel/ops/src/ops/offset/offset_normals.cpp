@@ -4,7 +4,7 @@
 #include <string>
 
 #include "nome/error.hpp"
-#include "ops/parallel_for.hpp"
+#include "support/parallel_for.hpp"
 
 namespace nome {
 

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "nome/error.hpp"
-#include "ops/offset_input.hpp"
+#include "ops/offset/offset_input.hpp"
 
 namespace nome {
 

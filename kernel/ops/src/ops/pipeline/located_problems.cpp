@@ -1,4 +1,4 @@
-#include "ops/located_problems.hpp"
+#include "ops/pipeline/located_problems.hpp"
 
 #include <algorithm>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "ops/merge_stage.hpp"
+#include "ops/pipeline/merge_stage.hpp"
 
 namespace nome {
 

@@ -6,7 +6,7 @@
 
 #include "nome/ops/merge.hpp"
 #include "nome/ops/pipeline.hpp"
-#include "ops/solid_stages.hpp"
+#include "ops/pipeline/solid_stages.hpp"
 
 namespace nome {
 

@@ -7,9 +7,9 @@
 #include "nome/error.hpp"
 #include "nome/ops/offset.hpp"
 #include "nome/ops/subdivided_report.hpp"
-#include "ops/merge_stage.hpp"
-#include "ops/scene_stage.hpp"
-#include "ops/solid_stages.hpp"
+#include "ops/pipeline/merge_stage.hpp"
+#include "ops/pipeline/scene_stage.hpp"
+#include "ops/pipeline/solid_stages.hpp"
 
 namespace nome {
 namespace {

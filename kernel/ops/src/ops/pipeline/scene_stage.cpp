@@ -1,11 +1,11 @@
-#include "ops/scene_stage.hpp"
+#include "ops/pipeline/scene_stage.hpp"
 
 #include <algorithm>
 #include <optional>
 
 #include "nome/error.hpp"
 #include "nome/mesh/glue_faces.hpp"
-#include "ops/located_problems.hpp"
+#include "ops/pipeline/located_problems.hpp"
 
 namespace nome {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "nome/mesh/mesh.hpp"
 #include "nome/ops/pipeline_input.hpp"
-#include "ops/solid_stages.hpp"
+#include "ops/pipeline/solid_stages.hpp"
 
 namespace nome {
 

@@ -1,4 +1,4 @@
-#include "ops/solid_stages.hpp"
+#include "ops/pipeline/solid_stages.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "ops/base_tiles.hpp"
+#include "ops/subdivision/base_tiles.hpp"
 
 #include <algorithm>
 

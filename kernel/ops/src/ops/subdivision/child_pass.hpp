@@ -6,7 +6,7 @@
 
 #include <type_traits>
 
-#include "ops/refinement_level.hpp"
+#include "ops/subdivision/refinement_level.hpp"
 
 namespace nome {
 

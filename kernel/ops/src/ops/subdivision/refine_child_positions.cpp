@@ -1,8 +1,8 @@
 #include <algorithm>
 
-#include "ops/base_tiles.hpp"
-#include "ops/parallel_for.hpp"
-#include "ops/tile_steps.hpp"
+#include "ops/subdivision/base_tiles.hpp"
+#include "ops/subdivision/tile_steps.hpp"
+#include "support/parallel_for.hpp"
 
 namespace nome {
 

@@ -1,5 +1,5 @@
-#include "ops/parallel_for.hpp"
-#include "ops/refinement_level.hpp"
+#include "ops/subdivision/refinement_level.hpp"
+#include "support/parallel_for.hpp"
 
 namespace nome {
 

@@ -1,9 +1,9 @@
 #include <array>
 #include <vector>
 
-#include "ops/crease_rules.hpp"
-#include "ops/parallel_for.hpp"
-#include "ops/sharp_level.hpp"
+#include "ops/subdivision/crease_rules.hpp"
+#include "ops/subdivision/sharp_level.hpp"
+#include "support/parallel_for.hpp"
 
 namespace nome {
 namespace {

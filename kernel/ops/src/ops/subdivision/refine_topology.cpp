@@ -5,8 +5,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "ops/parallel_for.hpp"
-#include "ops/refinement_level.hpp"
+#include "ops/subdivision/refinement_level.hpp"
+#include "support/parallel_for.hpp"
 
 namespace nome {
 namespace {

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/ops/subdivide.hpp"
 

@@ -1,8 +1,8 @@
-#include "ops/sharp_level.hpp"
+#include "ops/subdivision/sharp_level.hpp"
 
 #include <algorithm>
 
-#include "ops/crease_rules.hpp"
+#include "ops/subdivision/crease_rules.hpp"
 
 namespace nome {
 namespace {

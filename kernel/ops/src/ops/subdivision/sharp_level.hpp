@@ -11,7 +11,7 @@
 
 #include "nome/ops/crease_options.hpp"
 #include "nome/ops/subdivide.hpp"
-#include "ops/refinement_level.hpp"
+#include "ops/subdivision/refinement_level.hpp"
 
 namespace nome {
 

@@ -5,9 +5,9 @@
 
 #include "nome/error.hpp"
 #include "nome/mesh/glue_faces.hpp"
-#include "ops/base_tiles.hpp"
-#include "ops/refinement_level.hpp"
-#include "ops/sharp_level.hpp"
+#include "ops/subdivision/base_tiles.hpp"
+#include "ops/subdivision/refinement_level.hpp"
+#include "ops/subdivision/sharp_level.hpp"
 
 namespace nome {
 namespace {

@@ -1,4 +1,4 @@
-#include "ops/tile_steps.hpp"
+#include "ops/subdivision/tile_steps.hpp"
 
 namespace nome {
 // Named as well as anonymous: a unity build puts other files' anonymous namespaces beside this one.

@@ -5,7 +5,7 @@
 // and, where the CPU has them, in AVX2 ones (a position in one register, a lane to spare): the same sums in
 // the same order, so the same bits.
 
-#include "ops/child_pass.hpp"
+#include "ops/subdivision/child_pass.hpp"
 
 namespace nome {
 

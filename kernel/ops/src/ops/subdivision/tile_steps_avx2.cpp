@@ -1,4 +1,4 @@
-#include "ops/tile_steps.hpp"
+#include "ops/subdivision/tile_steps.hpp"
 
 #include "nome/assert.hpp"
 

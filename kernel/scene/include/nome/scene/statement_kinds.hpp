@@ -12,7 +12,7 @@
 
 namespace nome::scene {
 
-// Internal to the kernel (kernel/src/scene/): the parser, the writer and the evaluators' view of a scene.
+// Internal to the kernel (kernel/scene/src/): the parser, the writer and the evaluators' view of a scene.
 class StatementParser;
 class SceneWriter;
 class DefinitionScope;
