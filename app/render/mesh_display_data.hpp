@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/mesh/packed_normal.hpp"
 #include "render/bounding_box.hpp"

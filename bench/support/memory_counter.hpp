@@ -3,7 +3,7 @@
 #include <cstddef>
 
 // Resident bytes and their peak, from /proc/self/status: the kernel's big arrays are pages mapped for
-// them (nome/mesh/buffer.hpp), which no operator new sees.
+// them (nome/buffer.hpp), which no operator new sees.
 namespace nome::bench {
 
 // Starts a new peak measurement from the bytes resident now.

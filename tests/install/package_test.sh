@@ -24,7 +24,9 @@ for path in ./usr/bin/nome ./usr/share/nome/shaders/mesh.vert ./usr/share/applic
 done
 ! grep -q "^./usr/include/" "$root/contents.txt" || fail "headers belong in nome-dev"
 dpkg-deb --info "$dev" | grep -qx " Package: nome-dev" || fail "nome-dev package name"
-dpkg-deb --contents "$dev" | grep -q "/libnome_kernel\.a$" || fail "nome-dev lacks the kernel library"
+for layer in support mesh ops query scene io edit; do
+  dpkg-deb --contents "$dev" | grep -q "/libnome_$layer\.a$" || fail "nome-dev lacks the kernel's $layer library"
+done
 dpkg-deb --contents "$dev" | grep -q "/cmake/Nome/NomeConfig\.cmake$" || fail "nome-dev lacks the CMake package"
 
 dpkg-deb -x "$runtime" "$root/tree"

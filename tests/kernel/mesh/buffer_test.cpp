@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "nome/mesh/buffer.hpp"
+#include "nome/buffer.hpp"
 
 using nome::Buffer;
 

@@ -1,0 +1,2 @@
+// A scene source including an io header: io is above scene, so this must not compile.
+#include "nome/io/obj.hpp"
