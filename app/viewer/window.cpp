@@ -292,11 +292,8 @@ void Window::update_stage() {
 void Window::show_result(StageResult result) {
   const Mesh* old = stage_.shown_mesh();
   const Mesh& mesh = *result.mesh;
-  // Results that share their display topology share their connectivity: no comparison of arrays.
-  const bool is_same_topology =
-      old && (stage_.shown()->display.topology == result.display.topology ||
-              (old->num_vertices() == mesh.num_vertices() && old->face_offsets() == mesh.face_offsets() &&
-               old->corner_vertices() == mesh.corner_vertices()));
+  // Results that share their display topology share their connectivity (the pipeline's change signal).
+  const bool is_same_topology = old && stage_.shown()->display.topology == result.display.topology;
   if (!is_same_topology && !selection_.is_empty()) {
     selection_.clear();
     log_.info("selection cleared: the displayed mesh changed its connectivity");

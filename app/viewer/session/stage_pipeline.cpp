@@ -36,16 +36,7 @@ std::optional<StageResult> StagePipeline::run(const SceneInput& input, const Pip
                                               std::stop_token stop) {
   std::lock_guard lock(mutex_);
   if (stop.stop_requested()) return std::nullopt;
-  if (input_version_ != input.topology_version) {
-    input_version_.reset();  // until the pipeline has taken it
-    PipelineInput next = *input.polygons;
-    next.soup.positions = *input.positions;
-    pipeline_.replace_input(std::move(next));
-    input_version_ = input.topology_version;
-  } else if (input_positions_ != input.positions) {
-    pipeline_.move_input_vertices(*input.positions);
-  }
-  input_positions_ = input.positions;
+  feed_.feed(pipeline_, input);
   return run_stages(settings, stop);
 }
 
@@ -53,8 +44,7 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
                                               std::stop_token stop) {
   std::lock_guard lock(mutex_);
   if (stop.stop_requested()) return std::nullopt;
-  input_version_.reset();
-  input_positions_.reset();
+  feed_.forget();
   pipeline_.set_input(input);
   return run_stages(settings, stop);
 }

@@ -16,6 +16,7 @@
 #include "nome/ops/pipeline.hpp"
 #include "nome/query/border_lookup.hpp"
 #include "render/mesh_display_data.hpp"
+#include "viewer/session/scene_input_feed.hpp"
 #include "viewer/session/session.hpp"
 
 namespace nome::viewer {
@@ -88,9 +89,7 @@ class StagePipeline {
   // Copies the result lent to the last new topology's StageResult; done once the flag is set.
   std::jthread copy_thread_;
   std::shared_ptr<std::atomic<bool>> copy_done_;
-  // The scene input the pipeline holds: its topology version and positions (none: take the next whole).
-  std::optional<std::uint64_t> input_version_;
-  std::shared_ptr<const Buffer<Vec3>> input_positions_;
+  SceneInputFeed feed_;
   // What results of the last one's topology share.
   struct Shared {
     std::shared_ptr<const render::DisplayTopology> display;

@@ -19,13 +19,13 @@ PipelineSettings checked_settings(PipelineSettings settings) {
 // A copy of the surface the offset thickens (the subdivided stage) for these settings, from the check's
 // own pipeline: running the stage pipeline to another stage would drop the offset it caches for the next
 // slider move. None when a newer check was asked for before it began.
-std::shared_ptr<const Mesh> surface_to_check(CheckPipeline& check, const PipelineInput& input,
+std::shared_ptr<const Mesh> surface_to_check(CheckPipeline& check, const SceneInput& input,
                                              const PipelineSettings& settings, std::stop_token stop) {
   std::lock_guard lock(check.mutex);
   if (stop.stop_requested()) return nullptr;
   PipelineSettings surface = settings;
   surface.stage = Stage::subdivided;
-  check.pipeline.set_input(input);
+  check.feed.feed(check.pipeline, input);
   return std::make_shared<const Mesh>(check.pipeline.run(surface));
 }
 
@@ -81,7 +81,7 @@ void PrintCheckView::request(const Session& session, const PipelineSettings& set
     std::lock_guard lock(progress_->mutex);
     progress_->fraction = 0.0;
   }
-  job_.submit([pipeline = pipeline_, input = session.pipeline_input(), version = session.version(),
+  job_.submit([pipeline = pipeline_, input = session.scene_input(), version = session.version(),
                settings = checked_settings(settings), wall = min_wall,
                progress = progress_](std::stop_token stop) -> std::optional<PrintCheckRun> {
     const auto start = std::chrono::steady_clock::now();

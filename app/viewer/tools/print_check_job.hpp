@@ -12,6 +12,7 @@
 #include "nome/query/print_check.hpp"
 #include "render/cube_set.hpp"
 #include "viewer/session/background_job.hpp"
+#include "viewer/session/scene_input_feed.hpp"
 #include "viewer/session/session.hpp"
 #include "viewer/session/stage_view.hpp"
 #include "viewer/tools/tool.hpp"
@@ -22,6 +23,7 @@ namespace nome::viewer {
 struct CheckPipeline {
   std::mutex mutex;
   Pipeline pipeline;
+  SceneInputFeed feed;
 };
 
 // One finished print check, and what it was run on.
