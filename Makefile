@@ -58,7 +58,7 @@ test-build: deps gltf-validator
 	  "-DNOME_SANITIZE_SKIP=alignment;null" >/dev/null
 	cmake --build $(TESTDIR) -j$(JOBS)
 
-# A test case that cannot find ../shared, llvmpipe or node fails under CI (`CI` set); elsewhere it skips,
+# A test case that cannot find the shared examples, llvmpipe or node fails under CI (`CI` set); elsewhere it skips,
 # writes why to the skip log and is counted here.
 test: format-check test-build
 	@rm -f $(TESTDIR)/skipped_tests.log

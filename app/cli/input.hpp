@@ -11,7 +11,7 @@
 
 namespace nome::cli {
 
-// The options every command that reads geometry shares (DESIGN.md, "The command line").
+// The options every command that reads geometry shares.
 std::vector<OptionSpec> input_options();
 
 // Parses a --stage value (UsageError for an unknown one).

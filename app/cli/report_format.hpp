@@ -6,7 +6,7 @@
 
 namespace nome::cli {
 
-// The report as one JSON object (keys fixed by the CLI contract in DESIGN.md).
+// The report as one JSON object (its keys are the command line's contract: scripts read them).
 std::string report_json(const TopologyReport& report);
 // The report as aligned text for people.
 std::string report_text(const TopologyReport& report);

@@ -55,7 +55,7 @@ void on_drop(GLFWwindow*, int count, const char** paths) {
 }
 
 // glfwTerminate() unloads Mesa's *_dri.so; the sanitizer's leak check then cannot name the driver's
-// frames and reports its caches as leaks (GL_NOTES.md). Keeping the driver loaded to the end avoids that.
+// frames and reports its caches as leaks. Keeping the driver loaded to the end avoids that.
 int keep_driver_loaded(dl_phdr_info* info, size_t, void*) {
   const std::string_view name = info->dlpi_name ? info->dlpi_name : "";
   if (name.ends_with("_dri.so")) dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
@@ -100,7 +100,7 @@ GLFWwindow* open_window(const ViewerOptions& options) {
 }
 
 void start_imgui(GLFWwindow* window) {
-  // Our callbacks go in before ImGui's so that ImGui chains them (GL_NOTES.md).
+  // Our callbacks go in before ImGui's so that ImGui chains them.
   glfwSetDropCallback(window, on_drop);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();

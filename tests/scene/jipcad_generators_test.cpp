@@ -1,4 +1,4 @@
-// JIPCAD's generators (issue 15, item 2): topology, names and argument checks, on our own texts and on
+// JIPCAD's generators: topology, names and argument checks, on our own texts and on
 // JIPCAD's example files where they parse.
 #include <catch2/catch.hpp>
 
@@ -191,7 +191,7 @@ TEST_CASE("geom__standard_sphere.nom is closed with chi 2", "[scene]") {
 }
 
 TEST_CASE("geom__torusknot.nom's statements: a closed orientable tube of chi 0, slider-driven", "[scene]") {
-  // The file's bank is written with JIPCAD's `list` and `$bank.name` (the dialect work of issue 15); these
+  // The file's bank is written with JIPCAD's `list` and `$bank.name` (the successor's dialect); these
   // are its statements in the 2016 spelling.
   const Scene s = Scene::from_text(
       "bank knot_slider\n set symm 1 -5 5 1\n set turns 1 -5 5 1\n set maj_rad 10 0 100 1\n"

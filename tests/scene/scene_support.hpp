@@ -7,7 +7,7 @@
 
 namespace nome::test {
 
-// assets/ (the report's examples and ours) and ../shared/examples/original/ (files of the original
+// assets/ (the report's examples and ours) and the shared examples' original/ folder (files of the original
 // programs, written by others: tests that read them need NOME_NEEDS_SHARED_EXAMPLES).
 std::string assets_dir();
 std::string originals_dir();

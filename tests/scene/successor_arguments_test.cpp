@@ -141,7 +141,7 @@ TEST_CASE("succ: JIPCAD's hyperboloid reads (segs a b c sheet theta), by its clo
                      succ_hyperboloid_point(1.5, 0.5, 2, 7, i, j - 2, 1)) < 1e-12);
     }
   CHECK(one.combined_soup().num_faces() == 7 * 4);
-  // The issue's two sheets, half a turn: 40 columns at 0, 1/40 pi, ..., 39/40 pi (JIPCAD's sampling stops
+  // Two sheets, half a turn: 40 columns at 0, 1/40 pi, ..., 39/40 pi (JIPCAD's sampling stops
   // a step short of theta pi); each sheet from its apex at z = +-1 to +-3.
   const Scene two =
       Scene::from_text("hyperboloid h (40 1 1 3 1 1) endhyperboloid\ninstance i h endinstance\n", "t.nom",
@@ -158,11 +158,11 @@ TEST_CASE("succ: JIPCAD's hyperboloid reads (segs a b c sheet theta), by its clo
     CHECK(succ_gap(two, "i_bottom_v" + std::to_string(i) + "_1",
                    succ_hyperboloid_point(1, 1, 1, 40, i, -2, -1)) < 1e-12);
   }
-  // The issue's `(40 1 1 3 0 2)`, refused before, is a whole one-sheeted turn.
-  const Scene issue =
+  // `(40 1 1 3 0 2)`, refused before, is a whole one-sheeted turn.
+  const Scene whole =
       Scene::from_text("hyperboloid h (40 1 1 3 0 2) endhyperboloid\ninstance i h endinstance\n", "t.nom",
                        {.dialect = Dialect::jipcad});
-  CHECK(succ_gap(issue, "i_v10_6", succ_hyperboloid_point(1, 1, 2, 40, 10, 3, 1)) < 1e-12);
+  CHECK(succ_gap(whole, "i_v10_6", succ_hyperboloid_point(1, 1, 2, 40, 10, 3, 1)) < 1e-12);
 }
 
 TEST_CASE("succ: a hyperboloid only NOME3's older order can mean is refused with a message that says so",

@@ -6,7 +6,8 @@
 
 namespace nome::test {
 
-// The example files written by others (`../shared/examples/<folder>/` beside the checkout; CI has it):
+// The example files written by others (the `shared` folder's examples/<folder>/ beside the checkout; CI
+// has it):
 // they are read from there, never copied into the project.
 std::string shared_examples_dir(const std::string& folder);
 bool has_shared_examples(const std::string& folder);

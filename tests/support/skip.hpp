@@ -7,7 +7,7 @@
 namespace nome::test {
 
 // Whether a test that cannot find what it needs fails instead of skipping: under CI (`CI` set) nothing
-// may pass silently for want of ../shared, llvmpipe or node.
+// may pass silently for want of the shared examples, llvmpipe or node.
 bool skips_fail();
 
 // Appends the reason to the file NOME_SKIP_LOG names (ctest sets it; `make test` counts its lines).

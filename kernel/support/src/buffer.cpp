@@ -22,13 +22,9 @@ std::size_t rounded_size(std::size_t bytes) {
 
 // Big blocks come straight from mmap, so that kept memory can be cut, joined and moved to
 // where a new block needs it (munmap and mremap work on pages, not on what malloc handed out).
-// They are not marked for transparent huge pages: on these VMs a command's fresh memory is memory the
-// guest has handed back to the host (free page reporting, which gives back free blocks of 2 MB and more),
-// and huge pages are cut from exactly those blocks. Measured in new processes after a pause: 800 MB
-// touched took 2.1-2.6 s on huge pages and 0.45-0.5 s on 4 KB pages, 3 GB 9.5-10.2 s against 6.2-6.6 s;
-// the offset of the level-5 torus as a Mesh 2.4-2.6 s against 0.75-1.5 s, the viewer's first offset
-// solid 3.7-4.1 s against 2.2 s. Huge pages win only for memory used again (the level-6 torus refined into
-// kept blocks: 55-72 ms against 83 ms; no difference for a slider tick at a million faces).
+// They are not marked for transparent huge pages: on virtual machines that hand free memory back to the
+// host, a fresh huge page is cut from memory the host must give again, several times slower to fault in
+// than small pages; huge pages pay off only for memory used again, which the kept blocks below give.
 char* map_block(std::size_t rounded) {
   const std::size_t mapped = rounded + block_unit;
   void* raw = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -43,10 +39,9 @@ char* map_block(std::size_t rounded) {
 }
 
 // Freed big blocks kept for later allocations of any size, once a program asked for it
-// (keep_freed_buffers). On these machines 256 MB of never touched pages cost 441 ms to fault in, the same
-// pages moved from kept blocks 12 ms, and pages the system hands back out after a munmap 22 ms; a kept
-// block that only a request of its own size could take stayed resident unused (68 MB more at the peak of
-// exporting a subdivided torus's offset). A request takes the smallest kept range that holds it, or else
+// (keep_freed_buffers). Faulting in never touched pages costs far more than moving warm pages from kept
+// blocks; a kept block that only a request of its own size could take would stay resident unused, so a
+// request takes the smallest kept range that holds it, or else
 // moves kept ranges, largest first, into a fresh block with mremap (the pages move, warm, without a
 // copy); what they do not cover stays fresh.
 struct BlockCache {

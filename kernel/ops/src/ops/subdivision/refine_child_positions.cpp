@@ -39,8 +39,7 @@ void refine_child_positions_by_tile(const Refinement::Level& g, const BaseTiles&
   const Index per_tile = std::max<Index>(1, g.num_faces() / std::max<Index>(1, base_faces));  // G faces
   // About 2^10 faces of G a tile: what a tile reads and rewrites then fits in half of a 1 MB L2 cache, and
   // its index ranges are long enough for the hardware prefetchers (one base face a tile was 20 % slower).
-  // On two threads 2^11 was 20 % slower (level-6 torus: 20.2 against 16.5 ms, runs taken in turn), on one
-  // 2 % faster; 2^9 was no faster on two and 5 % slower on one.
+  // Larger tiles leave two threads unevenly loaded, smaller ones cost more per tile than they save.
   const Index tile = std::max<Index>(1, (Index(1) << 10) / per_tile);
   const auto tiles_from = [&](Index begin, Index end) {
     ReadyCorners ready{tiles.face_corners[begin] << corner_shift, 0};

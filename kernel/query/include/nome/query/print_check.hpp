@@ -31,7 +31,7 @@ struct PrintPlace {
   Index size = 0;               // faces (fold-over, crossing) or vertices (near miss) in the place
 };
 
-// What the print check found on a surface (DESIGN.md "Printing"), the three kinds kept apart.
+// What the print check found on a surface, the three kinds kept apart.
 struct PrintCheck {
   double offset_distance = 0.0;
   double min_wall = 0.0;
@@ -45,7 +45,7 @@ struct PrintCheck {
   bool is_printable() const { return fold_over_faces.empty() && near_misses.empty(); }
 };
 
-// Checks whether the offset of `surface` by options.offset_distance prints as meant (issue 17): faces the
+// Checks whether the offset of `surface` by options.offset_distance prints as meant: faces the
 // offset turns over, curves where distant parts of the surface cross, and places where two sheets come
 // closer than the minimum wall away from crossings. Uses the picking BVH and up to options.threads
 // threads. Throws InvalidInputError for a negative or non-finite distance or wall.

@@ -47,7 +47,7 @@ std::vector<RayHit> sorted_unique_hits(std::vector<RayHit> hits);
 
 // A bounding volume hierarchy over the triangles a mesh is drawn with (display_triangles, shared with the
 // renderer, so a pick lands on the triangle the user sees), for CPU picking. Built over the triangles sorted
-// by Morton code (a linear BVH, Karras 2012): a million triangles in well under the 300 ms budget.
+// by Morton code (a linear BVH, Karras 2012): fast enough to build on every new topology.
 // It copies the positions it needs, so it stays valid while the mesh it came from changes or dies;
 // rebuild it when the displayed geometry changes.
 class TriangleBvh {
