@@ -1,5 +1,5 @@
-// OpenSubdiv as the referee: its own Catmark regression shapes (the shared examples' opensubdiv/ folder), refined
-// by its Far::TopologyRefiner (uniform) and by ours, compared face by face in OpenSubdiv's refinement
+// OpenSubdiv as the referee: its own Catmark regression shapes (the shared examples' opensubdiv/ folder),
+// refined by its Far::TopologyRefiner (uniform) and by ours, compared face by face in OpenSubdiv's refinement
 // order: both number the child faces of a parent face as the parent's corners go; a child quad's corners
 // run the same way in both but start elsewhere (ours at the parent corner's vertex point), so each face is
 // compared at its best turn, which also says how its own children correspond.
