@@ -97,8 +97,8 @@ TEST_CASE("funnel cube walkthrough: three rim vertices become a consolidated pol
   CHECK_THAT(r.err, Catch::Contains("add-polygon: "));
   CHECK_THAT(r.err, Catch::Contains("accept: "));
   const scene::Scene saved = read_scene(dir + "/saved.nome");
-  REQUIRE(saved.consolidated_faces().size() == 1);
-  const auto& face = saved.consolidated_faces()[0];
+  REQUIRE(saved.edits().consolidated.size() == 1);
+  const auto& face = saved.edits().consolidated[0];
   REQUIRE(face.size() == 3);
   std::vector<std::string> clicked;
   for (std::size_t i : triple) clicked.push_back(mesh.vertex_names()[rim[i].first]);
@@ -359,9 +359,9 @@ TEST_CASE(
   INFO(r.err);
   REQUIRE(r.status == 0);
   const scene::Scene saved = read_scene(dir + "/saved.nome");
-  REQUIRE(saved.consolidated_faces().size() == polygons.size());
+  REQUIRE(saved.edits().consolidated.size() == polygons.size());
   for (std::size_t f = 0; f < polygons.size(); ++f) {
-    const auto& got = saved.consolidated_faces()[f];
+    const auto& got = saved.edits().consolidated[f];
     REQUIRE(got.size() == polygons[f].size());
     for (std::size_t i = 0; i < got.size(); ++i)
       CHECK(saved.resolve_vertex_name(got[i]) == saved.resolve_vertex_name(polygons[f][i]));

@@ -48,13 +48,21 @@ TEST_CASE("saving every example and reading it back gives the same geometry", "[
 }
 
 TEST_CASE("an edited scene saves its slider values, consolidated faces and deletions", "[scene]") {
-  Scene s = test::load_scene_file(test::assets_dir() + "funnel_cube.nome");
+  // Edits by any unique suffix, dotted or not: the deletions are saved by full name, the consolidated
+  // faces as written.
+  const std::string text =
+      test::read_text(test::assets_dir() + "funnel_cube.nome") +
+      "consolidate\n"
+      "  consolidateface vertex fun3_hc3 endvertex vertex fun5_hc3 endvertex vertex fun2_hc5 "
+      "endvertex endconsolidateface\n"
+      "  consolidateface vertex fun3_hc3 endvertex vertex fun2_hc5 endvertex vertex fun2_hc6 "
+      "endvertex vertex fun3_hc2 endvertex endconsolidateface\n"
+      "endconsolidate\n"
+      "delete face fun1_f0 endface face cf.fun6.f3 endface enddelete\n";
+  Scene s = Scene::from_text(text, "funnel_cube.nome");
   s.set_parameter(*s.find_parameter("fp_ro"), 0.5);
   s.set_parameter(*s.find_parameter("fp_z"), -1.1);
-  s.set_consolidated_faces(
-      {{"fun3_hc3", "fun5_hc3", "fun2_hc5"}, {"fun3_hc3", "fun2_hc5", "fun2_hc6", "fun3_hc2"}});
-  s.set_deleted_faces({"fun1_f0", "cf.fun6.f3"});
-  CHECK(s.deleted_faces() == std::vector<std::string>{"cf_fun1_f0", "cf_fun6_f3"});
+  CHECK(s.edits().deleted == std::vector<std::string>{"cf_fun1_f0", "cf_fun6_f3"});
   REQUIRE(s.instances().size() == 2);
   CHECK(s.instances()[0].geometry.soup.num_faces() == 46);
   CHECK(s.instances()[1].name == "consolidatemesh");
@@ -65,22 +73,64 @@ TEST_CASE("an edited scene saves its slider values, consolidated faces and delet
   const Scene back = read_scene(dir + "/edited.nome");
   check_same_geometry(s, back);
   CHECK(back.parameters()[*back.find_parameter("fp_z")].value == -1.1);
-  CHECK(back.consolidated_faces().size() == 2);
-  const std::string text = scene::to_nome_text(s);
-  CHECK_THAT(text, Catch::Contains("    set z -1.1 -1.5 -0.1 0.1\n"));
-  CHECK_THAT(text, Catch::Contains("delete\n    face cf_fun1_f0 endface\n"));
-  CHECK_THAT(text, Catch::Contains("consolidate\n    consolidateface\n        vertex fun3_hc3 endvertex\n"));
-  CHECK_THAT(text, Catch::Contains("translate (0 0 {expr $fp_z}) rotate (1 0 0) (180)"));
+  CHECK(back.edits().consolidated.size() == 2);
+  const std::string saved = scene::to_nome_text(s);
+  CHECK_THAT(saved, Catch::Contains("    set z -1.1 -1.5 -0.1 0.1\n"));
+  CHECK_THAT(saved, Catch::Contains("delete\n    face cf_fun1_f0 endface\n"));
+  CHECK_THAT(saved, Catch::Contains("consolidate\n    consolidateface\n        vertex fun3_hc3 endvertex\n"));
+  CHECK_THAT(saved, Catch::Contains("translate (0 0 {expr $fp_z}) rotate (1 0 0) (180)"));
 }
 
-TEST_CASE("unknown names in the editing data are refused with candidates", "[scene]") {
-  Scene s = test::load_scene_file(test::assets_dir() + "funnel_cube.nome");
-  CHECK_THROWS_WITH(s.set_deleted_faces({"fun1_f9"}),
-                    Catch::Contains("unknown face 'fun1_f9' (did you mean"));
-  CHECK_THROWS_WITH(s.set_consolidated_faces({{"hc3", "fun5_hc3", "fun2_hc5"}}),
-                    Catch::Contains("ambiguous vertex name 'hc3': 6 candidates: cf_fun1_hc3"));
-  CHECK(s.instances().size() == 1);
-  CHECK(s.deleted_faces().empty());
+TEST_CASE("unknown names in the editing data are refused with candidates, shown or kept by an editor",
+          "[scene]") {
+  const std::string cube = test::read_text(test::assets_dir() + "funnel_cube.nome");
+  for (const bool shows_edits : {true, false}) {
+    INFO("shows_edits " << shows_edits);
+    const scene::SceneOptions options{.shows_edits = shows_edits};
+    CHECK_THROWS_WITH(Scene::from_text(cube + "delete face fun1_f9 endface enddelete\n", "t.nome", options),
+                      Catch::Contains("unknown face 'fun1_f9' (did you mean"));
+    CHECK_THROWS_WITH(
+        Scene::from_text(cube + "consolidate consolidateface vertex hc3 endvertex vertex fun5_hc3 "
+                                "endvertex vertex fun2_hc5 endvertex endconsolidateface endconsolidate\n",
+                         "t.nome", options),
+        Catch::Contains("ambiguous vertex name 'hc3': 6 candidates: cf_fun1_hc3"));
+  }
+}
+
+TEST_CASE("a scene read for an editor resolves its edits to full names, shows none and hands them over",
+          "[scene]") {
+  const std::string text = test::read_text(test::assets_dir() + "funnel_cube.nome") +
+                           "consolidate consolidateface vertex fun3.hc3 endvertex vertex fun5_hc3 endvertex "
+                           "vertex fun2_hc5 endvertex endconsolidateface endconsolidate\n"
+                           "delete face fun1_f0 endface enddelete\n"
+                           "sharpedges 2 (fun1_bc1 fun1_bc2) endsharpedges\n";
+  const Scene shown = Scene::from_text(text, "t.nome");
+  const std::uint64_t evaluations = scene::scene_evaluation_count();
+  Scene kept = Scene::from_text(text, "t.nome", {.shows_edits = false});
+  CHECK(scene::scene_evaluation_count() == evaluations + 1);
+  REQUIRE(kept.instances().size() == 1);
+  CHECK(kept.instances()[0].geometry.soup.num_faces() == 48);
+  CHECK(kept.combined_soup().sharp_edges.empty());
+  CHECK(shown.instances().size() == 2);
+  CHECK(shown.instances()[0].geometry.soup.num_faces() == 47);
+  CHECK(shown.combined_soup().sharp_edges.size() == 1);
+
+  const scene::SceneEdits edits = kept.take_edits();
+  CHECK(scene::scene_evaluation_count() == evaluations + 1);
+  CHECK(edits.consolidated ==
+        std::vector<std::vector<std::string>>{{"cf_fun3_hc3", "cf_fun5_hc3", "cf_fun2_hc5"}});
+  CHECK(edits.deleted == std::vector<std::string>{"cf_fun1_f0"});
+  CHECK(edits.sharp == std::vector<NamedSharpEdge>{{"cf_fun1_bc1", "cf_fun1_bc2", 2.0f}});
+  CHECK(kept.edits().empty());
+  CHECK(kept.ast().consolidated_faces.empty());
+  CHECK(kept.ast().deleted_faces.empty());
+  CHECK(kept.ast().sharp_edges.empty());
+  // The scene that showed them hands over the same, evaluated again without the consolidated mesh.
+  Scene was_shown = shown;
+  CHECK(was_shown.take_edits().consolidated == edits.consolidated);
+  CHECK(was_shown.instances().size() == 1);
+  CHECK(was_shown.instances()[0].geometry.soup.num_faces() == 48);
+  CHECK(scene::to_nome_text(was_shown) == scene::to_nome_text(kept));
 }
 
 TEST_CASE(".anom files apply saved slider values and a working mesh to an open scene", "[scene]") {
@@ -91,7 +141,7 @@ TEST_CASE(".anom files apply saved slider values and a working mesh to an open s
   CHECK(s.parameters()[*s.find_parameter("tp3_x")].value == -2);
   REQUIRE(s.instances().size() == 2);
   CHECK(s.instances()[1].geometry.soup.num_faces() == 8);
-  CHECK(s.consolidated_faces()[0] == std::vector<std::string>{"t1_lc5", "t1_lc4", "t5_lc4", "t5_lc5"});
+  CHECK(s.edits().consolidated[0] == std::vector<std::string>{"t1_lc5", "t1_lc4", "t5_lc4", "t5_lc5"});
   CHECK_THROWS_WITH(s.apply_anom("savedparameter tp9_n 8 endsavedparameter\n", "bad.anom"),
                     Catch::Contains("bad.anom:1:16: unknown parameter 'tp9_n' (did you mean tp1_n"));
 }

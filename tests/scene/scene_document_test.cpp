@@ -4,7 +4,6 @@
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
-#include "nome/scene/save_nome.hpp"
 #include "scene/scene_support.hpp"
 #include "support/funnel_cube_scene.hpp"
 
@@ -71,7 +70,7 @@ TEST_CASE("the consolidated mesh is saved into the scene and read back", "[scene
       SceneDocument::from_scene(scene::Scene::from_text(test::funnel_cube_scene, "cube.nome"));
   close_corner(doc);
   REQUIRE(doc.edits().delete_faces({doc.edits().scene_geometry().face_names[0]}).applied);
-  const std::string text = scene::to_nome_text(doc.scene_for_saving());
+  const std::string text = doc.saved_text();
   const SceneDocument reread = SceneDocument::from_scene(scene::Scene::from_text(text, "saved.nome"));
   CHECK(reread.edits().consolidated_faces().size() == 4);
   CHECK(reread.edits().deleted_faces() == doc.edits().deleted_faces());
@@ -95,9 +94,9 @@ TEST_CASE("lowering a slider hides the edits on vanished vertices, raising it br
   const std::vector<UnresolvedEdit> gone = doc.edits().unresolved();
   CHECK(gone.size() == 3);  // the faces through fun2_hc5 or fun2_hc6
   std::vector<std::string> left_out;
-  const scene::Scene saved = doc.scene_for_saving(&left_out);
+  const scene::SceneEdits saved = doc.saved_edits(&left_out);
   CHECK(left_out.size() == 3);
-  CHECK(saved.consolidated_faces().size() == 1);
+  CHECK(saved.consolidated.size() == 1);
 
   doc.set_parameter(*n, 8);
   CHECK(doc.edits().unresolved().empty());

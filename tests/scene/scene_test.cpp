@@ -212,5 +212,5 @@ TEST_CASE("sharp marks a chain of edges, delete removes faces by name", "[scene]
   CHECK(soup.num_faces() == 1);
   CHECK(soup.num_vertices() == 4);      // e and f, used only by the deleted face, are gone
   CHECK(soup.sharp_edges.size() == 1);  // with the sharp edge b-e
-  CHECK(s.deleted_faces() == std::vector<std::string>{"i_q2"});
+  CHECK(s.edits().deleted == std::vector<std::string>{"i_q2"});
 }

@@ -4,7 +4,6 @@
 
 #include "nome/edit/scene_document.hpp"
 #include "nome/ops/pipeline.hpp"
-#include "nome/scene/save_nome.hpp"
 #include "scene/scene_support.hpp"
 
 using namespace nome;
@@ -62,7 +61,7 @@ TEST_CASE("an edge marked sharp as an edit is undone, refused where it cannot be
 TEST_CASE("sharp edges marked as edits are saved as sharpedges and read back", "[scene]") {
   SceneDocument doc = SceneDocument::from_scene(scene::Scene::from_text(sharp_cube_text, "t.nome"));
   REQUIRE(doc.edits().set_sharp({{"k_f", "k_g"}, {"k_h", "k_g"}}, infinite_sharpness).applied);
-  const std::string saved = scene::to_nome_text(doc.scene_for_saving());
+  const std::string saved = doc.saved_text();
   CHECK_THAT(saved, Catch::Contains("sharpedges\n    (k_f k_g)\n    (k_g k_h)\nendsharpedges\n"));
   const SceneDocument back = SceneDocument::from_scene(scene::Scene::from_text(saved, "saved.nome"));
   CHECK(back.edits().sharp_edges() == doc.edits().sharp_edges());
@@ -87,7 +86,7 @@ TEST_CASE(
   CHECK(edits.set_sharp({{"k_f", "k_g"}, {"k_g", "k_h"}}, 2.5f).message == "2 edges given sharpness 2.5");
   const SceneDocument text = SceneDocument::from_scene(scene::Scene::from_text(weighted, "t.nome"));
   CHECK(sharp_subdivided(doc, 3) == sharp_subdivided(text, 3));
-  const std::string saved = scene::to_nome_text(doc.scene_for_saving());
+  const std::string saved = doc.saved_text();
   CHECK_THAT(saved, Catch::Contains("sharpedges\n    2.5 (k_f k_g)\n    2.5 (k_g k_h)\nendsharpedges\n"));
   const SceneDocument back = SceneDocument::from_scene(scene::Scene::from_text(saved, "saved.nome"));
   CHECK(back.edits().sharp_edges() == edits.sharp_edges());

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "nome/scene/save_nome.hpp"
 #include "viewer/session/session.hpp"
 
 namespace nome::viewer {
@@ -66,7 +65,7 @@ void Autosave::update(const Session& session, double now) {
   written_edits_ = session.accepted_edits();
   std::error_code ec;
   std::filesystem::create_directories(folder_, ec);
-  scene::write_nome(session.saved_scene(), file);
+  session.write_copy(file);
 }
 
 void Autosave::discard(const std::filesystem::path& document) {

@@ -13,6 +13,9 @@
 namespace nome::viewer {
 namespace {
 
+// The document keeps the file's edits: the scene is evaluated without them, once.
+const scene::SceneOptions for_document{.shows_edits = false};
+
 std::string name_of(const std::vector<std::string>& names, Index i, const char* kind) {
   if (i >= names.size() || names[i].empty())
     throw InvalidInputError(std::string("the displayed ") + kind + " " + std::to_string(i) + " has no name");
@@ -25,7 +28,7 @@ Session Session::open(const std::filesystem::path& path, bool pair_sif_triangles
   Session session;
   session.path_ = path;
   session.pair_sif_triangles_ = pair_sif_triangles;
-  session.document_ = is_scene_file(path) ? SceneDocument::from_scene(read_scene(path))
+  session.document_ = is_scene_file(path) ? SceneDocument::from_scene(read_scene(path, for_document))
                                           : SceneDocument::from_polygons(session.read_flat());
   session.update_input();
   return session;
@@ -165,7 +168,7 @@ void Session::set_print_setup(std::optional<PrintPlacementOptions> setup) {
 
 void Session::save(const std::filesystem::path& path) {
   std::vector<std::string> left_out;
-  const scene::Scene saved = document_.scene_for_saving(&left_out);
+  const scene::SceneEdits edits = document_.saved_edits(&left_out);
   if (!left_out.empty()) {
     std::string names;
     for (const std::string& name : left_out) names += (names.empty() ? "" : ", ") + name;
@@ -173,7 +176,7 @@ void Session::save(const std::filesystem::path& path) {
                             " edits whose vertices or faces are gone at the current slider values (" + names +
                             "): move the sliders back until they show, or delete them, then save");
   }
-  scene::write_nome(saved, path);
+  scene::write_nome(*scene(), edits, path);
   path_ = path;
   is_modified_ = false;
 }
@@ -196,7 +199,7 @@ void Session::reload() {
 void Session::reload_text(std::string_view text) {
   if (!scene())
     throw InvalidInputError(path_.filename().string() + " is not a scene: its text is not evaluated");
-  document_.reload(read_scene_text(text, path_));
+  document_.reload(read_scene_text(text, path_, for_document));
   update_input();
 }
 

@@ -80,8 +80,10 @@ class Session {
   // accepted edit's vertices or face are gone at the current slider values the file could not hold it:
   // saving is refused (InvalidInputError naming those edits), nothing is written and the edits stay.
   void save(const std::filesystem::path& path);
-  // The scene as save() writes it. Throws InvalidInputError for flat geometry.
-  scene::Scene saved_scene() const { return document_.scene_for_saving(); }
+  // Writes the scene as save() does, atomically, to another file that does not become the session's (a
+  // recovery file), leaving out any edits save() would refuse for. Throws InvalidInputError for flat
+  // geometry.
+  void write_copy(const std::filesystem::path& path) const { document_.save(path); }
 
   // Edits of report 7.3.3, on vertices and faces of `displayed` (the scene or merged stage). Each returns
   // what happened; a refused edit changes nothing.

@@ -1,10 +1,12 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "app/cli_support.hpp"
 #include "viewer/session/autosave.hpp"
@@ -114,6 +116,37 @@ TEST_CASE("a recovery file newer than its document is offered, and restoring it 
   CHECK_FALSE(autosave.pending_recovery(document));
   autosave.discard(document);
   CHECK_FALSE(fs::exists(recovery));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("opening, restoring and reloading evaluate the scene once; saving and autosaving not at all",
+          "[app]") {
+  const fs::path dir = nome::test::private_scratch_dir("autosave_evaluations");
+  const fs::path document = dir / "funnel.nome";
+  std::ofstream(document) << funnel_scene << "delete face i_f1 endface enddelete\n";
+  std::uint64_t evaluations = scene::scene_evaluation_count();
+  Session session = Session::open(document);
+  CHECK(scene::scene_evaluation_count() == evaluations + 1);
+  CHECK(session.document().deleted_faces() == std::vector<std::string>{"i_f1"});
+  CHECK(session.polygons().num_faces() == 3);
+
+  session.set_parameter("b_h", 1.5);
+  delete_first_face(session);
+  Autosave autosave(dir / "state");
+  evaluations = scene::scene_evaluation_count();
+  autosave.update(session, 0.0);
+  session.save(dir / "saved.nome");
+  CHECK(scene::scene_evaluation_count() == evaluations);
+  const fs::path recovery = autosave.recovery_file(document);
+  REQUIRE(fs::exists(recovery));
+
+  const Session restored = Session::restore(document, recovery);
+  CHECK(scene::scene_evaluation_count() == evaluations + 1);
+  CHECK(restored.document().deleted_faces().size() == 2);
+  CHECK(restored.polygons().num_faces() == 2);
+  session.reload();
+  CHECK(scene::scene_evaluation_count() == evaluations + 2);
+  CHECK(session.document().deleted_faces().size() == 2);
   fs::remove_all(dir);
 }
 

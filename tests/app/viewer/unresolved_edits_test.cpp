@@ -60,6 +60,6 @@ TEST_CASE(
 
   // What was saved once the slider came back holds the edit, and reads back with it.
   const scene::Scene back = read_scene(dir + "/back.nome");
-  REQUIRE(back.consolidated_faces().size() == 1);
-  CHECK(back.consolidated_faces()[0] == std::vector<std::string>{"a_hc5", "b_hc5", "b_hc4"});
+  REQUIRE(back.edits().consolidated.size() == 1);
+  CHECK(back.edits().consolidated[0] == std::vector<std::string>{"a_hc5", "b_hc5", "b_hc4"});
 }

@@ -24,18 +24,10 @@ SceneDocument SceneDocument::from_polygons(PolygonSoup soup) {
 }
 
 void SceneDocument::set_scene(scene::Scene scene) {
-  // Edits name vertices by their full hierarchical names; a file may give any unique suffix.
-  std::vector<std::vector<std::string>> consolidated = scene.consolidated_faces();
-  for (std::vector<std::string>& face : consolidated)
-    for (std::string& name : face) name = scene.resolve_vertex_name(name);
-  std::vector<std::string> deleted = scene.deleted_faces();
-  std::vector<NamedSharpEdge> sharp = scene.sharp_edits();
-  scene.set_consolidated_faces({});
-  scene.set_deleted_faces({});
-  scene.set_sharp_edits({});
+  scene::SceneEdits edits = scene.take_edits();
   scene_.emplace(std::move(scene));
   document_.set_scene_geometry(scene_->combined_soup());
-  document_.load_edits(consolidated, std::move(deleted), std::move(sharp));
+  document_.load_edits(edits.consolidated, std::move(edits.deleted), std::move(edits.sharp));
 }
 
 void SceneDocument::set_print_setup(std::optional<PrintPlacementOptions> setup) {
@@ -80,18 +72,17 @@ void SceneDocument::set_instance_surface(const std::string& path, const std::opt
 void SceneDocument::apply_anom(std::string_view text, const std::string& file) {
   if (!scene_)
     throw InvalidInputError(file + ": an .anom file applies to an open scene: open its .nome first");
-  // The .anom's working mesh replaces the consolidated faces; the deletions stay.
-  scene::Scene next = *scene_;
-  next.apply_anom(text, file);
-  std::vector<std::string> deleted = document_.deleted_faces();
-  std::vector<NamedSharpEdge> sharp = document_.sharp_edges();
-  set_scene(std::move(next));
-  std::vector<std::vector<std::string>> consolidated;
-  for (const EditedFace& face : document_.consolidated_faces()) consolidated.push_back(face.vertices);
-  document_.load_edits(consolidated, std::move(deleted), std::move(sharp));
+  // The .anom's working mesh replaces the consolidated faces; the deletions stay. The scene, evaluated
+  // again with the .anom's slider values, resolves the working mesh and hands it over.
+  scene_->apply_anom(text, file);
+  const scene::SceneEdits working = scene_->take_edits();
+  document_.set_scene_geometry(scene_->combined_soup());
+  document_.load_edits(working.consolidated, document_.deleted_faces(), document_.sharp_edges());
 }
 
 void SceneDocument::reload(scene::Scene fresh) {
+  // The file's own edits are those the document holds already.
+  fresh.take_edits();
   if (scene_) {
     // The user's slider values survive an edit of the text (where the slider is still there and in range).
     for (const scene::Parameter& p : scene_->parameters()) {
@@ -101,10 +92,6 @@ void SceneDocument::reload(scene::Scene fresh) {
       if (p.value != q.value && p.value >= q.min && p.value <= q.max) fresh.set_parameter(*id, p.value);
     }
   }
-  // The file's own edits are those the document holds already.
-  fresh.set_consolidated_faces({});
-  fresh.set_deleted_faces({});
-  fresh.set_sharp_edits({});
   scene_.emplace(std::move(fresh));
   document_.set_scene_geometry(scene_->combined_soup());
 }
@@ -120,7 +107,7 @@ FaceParts SceneDocument::face_parts(const PipelineInput& input) const {
   return parts;
 }
 
-scene::Scene SceneDocument::scene_for_saving(std::vector<std::string>* left_out) const {
+scene::SceneEdits SceneDocument::saved_edits(std::vector<std::string>* left_out) const {
   if (!scene_)
     throw InvalidInputError("save: only scene files are saved as .nome (export writes .obj and .stl)");
   std::vector<std::string> unresolved, skipped;
@@ -130,27 +117,26 @@ scene::Scene SceneDocument::scene_for_saving(std::vector<std::string>* left_out)
     if (is_gone) skipped.push_back(name);
     return !is_gone;
   };
-  std::vector<std::vector<std::string>> consolidated;
+  scene::SceneEdits edits;
   for (const EditedFace& face : document_.consolidated_faces())
-    if (keep(face.name)) consolidated.push_back(face.vertices);
-  std::vector<std::string> deleted;
+    if (keep(face.name)) edits.consolidated.push_back(face.vertices);
   for (const std::string& name : document_.deleted_faces())
-    if (keep(name)) deleted.push_back(name);
-  std::vector<NamedSharpEdge> sharp;
+    if (keep(name)) edits.deleted.push_back(name);
   for (const NamedSharpEdge& e : document_.sharp_edges())
-    if (keep("sharp (" + e.a + ", " + e.b + ")")) sharp.push_back(e);
+    if (keep("sharp (" + e.a + ", " + e.b + ")")) edits.sharp.push_back(e);
   if (left_out) *left_out = std::move(skipped);
-
-  scene::Scene out = *scene_;
-  out.set_consolidated_faces(std::move(consolidated));
-  out.set_deleted_faces(std::move(deleted));
-  out.set_sharp_edits(sharp);
-  return out;
+  return edits;
 }
 
-std::vector<std::string> SceneDocument::save(const std::filesystem::path& path) {
+std::string SceneDocument::saved_text(std::vector<std::string>* left_out) const {
+  const scene::SceneEdits edits = saved_edits(left_out);
+  return scene::to_nome_text(*scene_, edits);
+}
+
+std::vector<std::string> SceneDocument::save(const std::filesystem::path& path) const {
   std::vector<std::string> left_out;
-  scene::write_nome(scene_for_saving(&left_out), path);
+  const scene::SceneEdits edits = saved_edits(&left_out);
+  scene::write_nome(*scene_, edits, path);
   return left_out;
 }
 

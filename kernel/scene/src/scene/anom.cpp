@@ -36,12 +36,6 @@ void Scene::apply_anom(std::string_view text, const std::string& file) {
   if (!anom.working_mesh.empty()) {
     next.ast_.consolidated_faces = anom.working_mesh;
     next.consolidated_file_ = file;
-    next.consolidated_.clear();
-    for (const NamedFace& f : anom.working_mesh) {
-      std::vector<std::string> face;
-      for (const Name& n : f.vertices) face.push_back(n.text);
-      next.consolidated_.push_back(std::move(face));
-    }
   }
   next.is_vertex_index_current_ = false;
   next.build(errors);

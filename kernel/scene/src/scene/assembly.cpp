@@ -86,7 +86,8 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
 }  // namespace
 
 void Scene::assemble(Index top) {
-  const std::unordered_set<std::string> deleted(deleted_.begin(), deleted_.end());
+  const std::vector<std::string>& shown = shown_deletions();
+  const std::unordered_set<std::string> deleted(shown.begin(), shown.end());
   Piece out;
   bool has_color = false;
   for (const Placement& p : placements_)

@@ -47,7 +47,7 @@ void Scene::expand_roots(std::vector<Diagnostic>& errors) {
     instances_.push_back({decl.name.text, {}, 0, 0});
     expand(decl, no_index, i, no_index, Index(instances_.size() - 1), stack, errors);
   }
-  if (!consolidated_.empty()) {
+  if (options_.shows_edits && !ast_.consolidated_faces.empty()) {
     // The consolidated mesh is shown where it was made, like the 2016 program did.
     Placement p;
     p.path = consolidated_mesh_name;

@@ -55,13 +55,21 @@ void SceneWriter::instance(const InstanceDecl& i, const char* indent) {
   out_ << " endinstance\n";
 }
 
+std::string to_nome_text(const Scene& scene, const SceneEdits& edits) {
+  return SceneWriter(scene, edits).run();
+}
+
 std::string to_nome_text(const Scene& scene) {
-  return SceneWriter(scene).run();
+  return to_nome_text(scene, scene.edits());
+}
+
+void write_nome(const Scene& scene, const SceneEdits& edits, const std::filesystem::path& path) {
+  const std::string text = to_nome_text(scene, edits);
+  write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
 void write_nome(const Scene& scene, const std::filesystem::path& path) {
-  const std::string text = to_nome_text(scene);
-  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+  write_nome(scene, scene.edits(), path);
 }
 
 }  // namespace nome::scene

@@ -1,8 +1,9 @@
-// A scene from its text: the sliders, the names of definitions, then expansion and evaluation; and the
-// edits that change it afterwards (slider moves, consolidated and deleted faces).
+// A scene from its text: the sliders, the names of definitions, then expansion and evaluation; the
+// slider moves that change it afterwards; and the file's edits handed over to an editor.
 #include "nome/scene/scene.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "nome/scene/parser.hpp"
@@ -10,6 +11,15 @@
 #include "scene/index_sets.hpp"
 
 namespace nome::scene {
+namespace {
+
+std::atomic<std::uint64_t> scenes_evaluated{0};
+
+}  // namespace
+
+std::uint64_t scene_evaluation_count() {
+  return scenes_evaluated.load(std::memory_order_relaxed);
+}
 
 Diagnostic Scene::located(SourceLocation at, std::string message) const {
   return {Severity::error, ast_.file, at, std::move(message)};
@@ -42,11 +52,6 @@ Scene Scene::from_ast(SceneAst ast, std::vector<Diagnostic> warnings, const Scen
   std::vector<Diagnostic> errors;
   scene.register_parameters(errors);
   scene.define_names(errors);
-  for (const auto& face : scene.ast_.consolidated_faces) {
-    std::vector<std::string> names;
-    for (const Name& n : face.vertices) names.push_back(n.text);
-    scene.consolidated_.push_back(std::move(names));
-  }
   if (errors.empty()) scene.check_settings(errors);
   if (errors.empty()) scene.build(errors);
   if (!errors.empty()) throw SceneError(std::move(errors));
@@ -170,6 +175,7 @@ void Scene::rename_repeated_instances(std::vector<InstanceDecl>& instances) {
 }
 
 void Scene::build(std::vector<Diagnostic>& errors) {
+  scenes_evaluated.fetch_add(1, std::memory_order_relaxed);
   placements_.clear();
   instances_.clear();
   expand_roots(errors);
@@ -179,8 +185,9 @@ void Scene::build(std::vector<Diagnostic>& errors) {
     if (is_leaf(placements_[i])) leaves.push_back(i);
   if (const auto over = evaluate_all(leaves, errors)) throw BudgetError(*over);
   if (!errors.empty()) return;
-  deleted_ = resolve_deleted(ast_.deleted_faces, errors);
+  edits_.deleted = resolve_deleted(ast_.deleted_faces, errors);
   resolve_sharp_edits(errors);
+  resolve_consolidated(errors);
   assemble_all();
   resolve_text_sharps(errors);
 }
@@ -261,7 +268,7 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
   for (const auto& [i, previous] : moved) tops.push_back(placements_[i].top);
   sort_unique(tops);
   for (Index t : tops) {
-    if (deleted_.empty() && !std::binary_search(remade_tops.begin(), remade_tops.end(), t))
+    if (shown_deletions().empty() && !std::binary_search(remade_tops.begin(), remade_tops.end(), t))
       assemble_positions(t);
     else
       assemble(t);
@@ -269,44 +276,39 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
   return tops;
 }
 
-void Scene::set_consolidated_faces(std::vector<std::vector<std::string>> faces) {
-  std::vector<NamedFace> named;
-  for (const auto& face : faces) {
-    NamedFace f;
-    for (const std::string& n : face) f.vertices.push_back({normalize_name(n), {}});
-    named.push_back(std::move(f));
+const std::vector<std::string>& Scene::shown_deletions() const {
+  static const std::vector<std::string> none;
+  return options_.shows_edits ? edits_.deleted : none;
+}
+
+const std::vector<NamedSharpEdge>& Scene::shown_sharp_edits() const {
+  static const std::vector<NamedSharpEdge> none;
+  return options_.shows_edits ? edits_.sharp : none;
+}
+
+SceneEdits Scene::take_edits() {
+  SceneEdits taken = edits_;
+  const bool shows_consolidated = options_.shows_edits && !taken.consolidated.empty();
+  if (options_.shows_edits)
+    for (std::vector<std::string>& face : taken.consolidated)
+      for (std::string& name : face) name = resolve_vertex_name(name);
+  const bool shows_deletions = !shown_deletions().empty();
+  edits_ = {};
+  ast_.consolidated_faces.clear();
+  ast_.deleted_faces.clear();
+  ast_.sharp_edges.clear();
+  consolidated_file_.clear();
+  options_.shows_edits = false;
+  if (shows_consolidated) {
+    // The consolidated mesh was a placement of its own, which other placements may name.
+    std::vector<Diagnostic> errors;
+    is_vertex_index_current_ = false;
+    build(errors);
+    if (!errors.empty()) throw SceneError(std::move(errors));
+  } else if (shows_deletions) {
+    assemble_all();
   }
-  Scene next = *this;
-  next.ast_.consolidated_faces = std::move(named);
-  next.consolidated_ = std::move(faces);
-  next.consolidated_file_.clear();
-  std::vector<Diagnostic> errors;
-  next.is_vertex_index_current_ = false;
-  next.build(errors);
-  if (!errors.empty()) throw SceneError(std::move(errors));
-  *this = std::move(next);
-}
-
-void Scene::set_sharp_edits(const std::vector<NamedSharpEdge>& edges) {
-  Scene next = *this;
-  next.ast_.sharp_edges.clear();
-  for (const NamedSharpEdge& e : edges)
-    next.ast_.sharp_edges.push_back({{{{normalize_name(e.a), {}}, {normalize_name(e.b), {}}}, {}}, e.weight});
-  std::vector<Diagnostic> errors;
-  next.resolve_sharp_edits(errors);
-  if (!errors.empty()) throw SceneError(std::move(errors));
-  *this = std::move(next);
-}
-
-void Scene::set_deleted_faces(std::vector<std::string> faces) {
-  std::vector<Name> names;
-  for (const std::string& f : faces) names.push_back({normalize_name(f), {}});
-  std::vector<Diagnostic> errors;
-  std::vector<std::string> resolved = resolve_deleted(names, errors);
-  if (!errors.empty()) throw SceneError(std::move(errors));
-  ast_.deleted_faces = std::move(names);
-  deleted_ = std::move(resolved);
-  assemble_all();
+  return taken;
 }
 
 }  // namespace nome::scene

@@ -129,7 +129,8 @@ void Scene::resolve_text_sharps(std::vector<Diagnostic>& errors) {
 }
 
 void Scene::add_sharpness(PolygonSoup& soup) const {
-  if (text_sharps_.empty() && sharp_edits_.empty()) return;
+  const std::vector<NamedSharpEdge>& sharp_edits = shown_sharp_edits();
+  if (text_sharps_.empty() && sharp_edits.empty()) return;
   const NamedEdges named(soup);
   for (const TextSharp& t : text_sharps_) {
     const SharpDecl& s = ast_.sharps[t.decl];
@@ -137,7 +138,7 @@ void Scene::add_sharpness(PolygonSoup& soup) const {
     mark_text_sharp(soup, named, t.vertices,
                     t.placement == no_index ? nullptr : &placements_[t.placement].world.soup, weight);
   }
-  for (const NamedSharpEdge& e : sharp_edits_) named.mark(soup, e.a, e.b, e.weight);
+  for (const NamedSharpEdge& e : sharp_edits) named.mark(soup, e.a, e.b, e.weight);
 }
 
 }  // namespace nome::scene

@@ -8,16 +8,19 @@
 
 namespace nome::scene {
 
-// The .nome text of a scene being written: each row of statement_kinds() writes its statements here.
+// The .nome text of a scene being written: each row of statement_kinds() writes its statements here,
+// the editing statements from `edits` (the scene's own, or those an editor keeps).
 class SceneWriter {
  public:
-  explicit SceneWriter(const Scene& scene) : scene_(scene), ast_(scene.ast()) {}
+  SceneWriter(const Scene& scene, const SceneEdits& edits)
+      : scene_(scene), ast_(scene.ast()), edits_(edits) {}
 
   // The whole text: every row's statements in table order.
   std::string run();
 
   const Scene& scene() const { return scene_; }
   const SceneAst& ast() const { return ast_; }
+  const SceneEdits& edits() const { return edits_; }
   std::ostream& out() { return out_; }
 
   // `v0 v1 ...` as written (expressions as `{expr ...}`).
@@ -29,6 +32,7 @@ class SceneWriter {
  private:
   const Scene& scene_;
   const SceneAst& ast_;
+  const SceneEdits& edits_;
   std::ostringstream out_;
 };
 

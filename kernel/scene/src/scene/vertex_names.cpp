@@ -79,14 +79,32 @@ std::vector<Index> Scene::parameters_of_vertex(const std::string& name) const {
 }
 
 void Scene::resolve_sharp_edits(std::vector<Diagnostic>& errors) {
-  sharp_edits_.clear();
+  edits_.sharp.clear();
   for (const SharpEdgeDecl& edge : ast_.sharp_edges) {
     const VertexRef* a = lookup_vertex(edge.edge.vertices[0], errors);
     const VertexRef* b = lookup_vertex(edge.edge.vertices[1], errors);
     if (a && b)
-      sharp_edits_.push_back({placements_[a->placement].world.soup.vertex_names[a->vertex],
+      edits_.sharp.push_back({placements_[a->placement].world.soup.vertex_names[a->vertex],
                               placements_[b->placement].world.soup.vertex_names[b->vertex], edge.weight});
   }
+}
+
+void Scene::resolve_consolidated(std::vector<Diagnostic>& errors) {
+  edits_.consolidated.clear();
+  const size_t first_error = errors.size();
+  for (const NamedFace& face : ast_.consolidated_faces) {
+    std::vector<std::string> names;
+    for (const Name& n : face.vertices) {
+      if (options_.shows_edits)
+        names.push_back(n.text);
+      else if (const VertexRef* ref = lookup_vertex(n, errors))
+        names.push_back(placements_[ref->placement].world.soup.vertex_names[ref->vertex]);
+    }
+    edits_.consolidated.push_back(std::move(names));
+  }
+  // The names are located in the file that gave them: the scene, or an .anom file's working mesh.
+  if (!consolidated_file_.empty())
+    for (size_t e = first_error; e < errors.size(); ++e) errors[e].file = consolidated_file_;
 }
 
 // Faces are deleted by a unique suffix of their hierarchical names too.

@@ -22,13 +22,16 @@ struct FaceParts {
 };
 
 // The one model of what a user edits: a parametric scene (or the polygons of a flat file) and the edits
-// over it (report 7.3.3: temporary and consolidated faces, deleted faces, undo and redo). The scene is
-// evaluated without its editing data; the consolidated faces and deletions read from a file live in the
-// edits, name the scene's vertices and faces, follow the sliders by name and go back into the scene when
-// it is saved. Edits whose vertices a slider removed are kept (unresolved) and come back with them.
+// over it (report 7.3.3: temporary and consolidated faces, deleted faces, sharp edges, undo and redo).
+// The edits have one owner, the Document: the consolidated faces, deletions and sharp edges a file holds
+// move into it when the scene is taken over, name the scene's vertices and faces, and follow the sliders
+// by name; the scene is evaluated without them. Saving writes the scene's statements and slider values and
+// the Document's edits as text, copying and evaluating nothing. Edits whose vertices a slider removed are
+// kept (unresolved) and come back with them.
 class SceneDocument {
  public:
-  // Takes over the scene's consolidated faces and deletions (as read from a saved .nome file).
+  // Takes over the scene's edits (Scene::take_edits): read with SceneOptions::shows_edits false, the
+  // scene is not evaluated again.
   static SceneDocument from_scene(scene::Scene scene);
   // The polygons of a flat file (.obj .stl .sif); unnamed vertices and faces get the names their lines
   // give them (`v12`, `f3`), for the edits to refer to.
@@ -59,7 +62,8 @@ class SceneDocument {
   // the consolidated faces). Throws InvalidInputError for flat geometry, SceneError (nothing changes)
   // when its names or values do not fit the scene.
   void apply_anom(std::string_view text, const std::string& file);
-  // The file read again, keeping the edits and (where still in range) the slider values.
+  // The file read again (best with SceneOptions::shows_edits false), keeping the edits and (where still
+  // in range) the slider values.
   void reload(scene::Scene fresh);
   void reload(PolygonSoup polygons);
 
@@ -72,13 +76,16 @@ class SceneDocument {
   std::uint64_t input_topology_version() const { return document_.input_topology_version(); }
   FaceParts face_parts(const PipelineInput& input) const;
 
-  // The scene carrying the consolidated faces and deletions, for scene::write_nome. Edits whose vertices
-  // or faces are gone at the current slider values cannot be written: they are listed in `left_out`
-  // (face names). Throws InvalidInputError for flat geometry.
-  scene::Scene scene_for_saving(std::vector<std::string>* left_out = nullptr) const;
-  // Writes scene_for_saving as .nome, atomically (the temporary faces, not accepted, are not written);
-  // the edits and their undo history stay as they are. Returns the edits left out.
-  std::vector<std::string> save(const std::filesystem::path& path);
+  // The edits a saved file holds: the consolidated faces, deletions and sharp edges (the temporary faces,
+  // not accepted, are not saved). Edits whose vertices or faces are gone at the current slider values
+  // cannot be written: they are listed in `left_out` (face names). Throws InvalidInputError for flat
+  // geometry.
+  scene::SceneEdits saved_edits(std::vector<std::string>* left_out = nullptr) const;
+  // The .nome text of the scene with saved_edits() (scene::to_nome_text).
+  std::string saved_text(std::vector<std::string>* left_out = nullptr) const;
+  // Writes saved_text, atomically; the edits and their undo history stay as they are. Returns the edits
+  // left out.
+  std::vector<std::string> save(const std::filesystem::path& path) const;
 
  private:
   void set_scene(scene::Scene scene);

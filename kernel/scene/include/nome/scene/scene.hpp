@@ -15,6 +15,7 @@
 #include "nome/ops/pipeline_settings.hpp"
 #include "nome/scene/ast.hpp"
 #include "nome/scene/piece.hpp"
+#include "nome/scene/scene_edits.hpp"
 
 namespace nome::scene {
 
@@ -100,7 +101,15 @@ struct SceneOptions {
   bool force = false;
   std::optional<Dialect> dialect =
       std::nullopt;  // `--dialect`: read the text in this spelling whatever it says
+  // False for an editor that keeps the file's edits itself (SceneDocument): the scene resolves them (an
+  // unknown or ambiguous name is an error) but its geometry does not show them, and take_edits() hands
+  // them over without evaluating anything again.
+  bool shows_edits = true;
 };
+
+// How many times a scene has been evaluated whole (read, or made again for an .anom file), in this
+// process: tests check that saving evaluates nothing and loading evaluates once.
+std::uint64_t scene_evaluation_count();
 
 // An evaluated scene (report sections 3 and 6): the parsed text, the slider values, and the geometry of
 // every top-level instance, kept up to date incrementally. Every instance statement of the expanded
@@ -150,20 +159,15 @@ class Scene {
   // topology_version changed).
   Buffer<Vec3> combined_positions() const;
 
-  // The editing model's data (report 7.3.3): faces added by the user, given by the hierarchical names of
-  // their vertices (the consolidated mesh, instantiable as `consolidatemesh`), and deleted faces by name.
-  // Setting either resolves the names (SceneError listing unknown or ambiguous ones) and re-evaluates.
-  const std::vector<std::vector<std::string>>& consolidated_faces() const { return consolidated_; }
-  void set_consolidated_faces(std::vector<std::vector<std::string>> faces);
-  const std::vector<std::string>& deleted_faces() const { return deleted_; }
-  void set_deleted_faces(std::vector<std::string> faces);
-
-  // Edges marked sharp in the viewer (`sharpedges [w] (a b) ... endsharpedges`) as full vertex-name pairs
-  // with their weights; combined_soup() marks those that are edges of its faces, after the text's own
-  // `sharp` statements. Setting them resolves the names (SceneError listing unknown or ambiguous ones;
-  // nothing changes then).
-  const std::vector<NamedSharpEdge>& sharp_edits() const { return sharp_edits_; }
-  void set_sharp_edits(const std::vector<NamedSharpEdge>& edges);
+  // The file's editing data (SceneEdits): the consolidated faces by their vertices' names as written
+  // (full names when SceneOptions::shows_edits is false), the deleted faces and the sharp edits by full
+  // names. combined_soup() shows them, the consolidated faces as the instance `consolidatemesh`, unless
+  // shows_edits is false.
+  const SceneEdits& edits() const { return edits_; }
+  // Hands the edits over to an editor, their vertex names in full: the scene then holds and shows none,
+  // and its text has no editing statements. A scene read with shows_edits false is not evaluated again;
+  // one that showed consolidated faces is (SceneError if their names no longer resolve).
+  SceneEdits take_edits();
 
   // The full hierarchical name of the vertex a (possibly shortened) name refers to. Throws SceneError
   // naming the candidates when the name is unknown or ambiguous.
@@ -284,6 +288,11 @@ class Scene {
   std::string without_definition_names(std::string name) const;
   std::vector<std::string> resolve_deleted(const std::vector<Name>& names, std::vector<Diagnostic>& errors);
   void resolve_sharp_edits(std::vector<Diagnostic>& errors);
+  // The consolidated faces' vertices by full name (errors located where the names were given).
+  void resolve_consolidated(std::vector<Diagnostic>& errors);
+  // The deletions and sharp edits the geometry shows: none when an editor keeps them.
+  const std::vector<std::string>& shown_deletions() const;
+  const std::vector<NamedSharpEdge>& shown_sharp_edits() const;
 
   // scene_sharpness.cpp: the top-level `sharp` statements resolved to full vertex names (a border's vertex
   // with its placement, whose border is walked when the soup is made), and the sliders their weights read.
@@ -315,10 +324,8 @@ class Scene {
   std::vector<SceneInstance> instances_;
   mutable std::unordered_map<std::string, std::vector<VertexRef>> vertex_suffixes_;
   mutable bool is_vertex_index_current_ = false;
-  std::vector<std::vector<std::string>> consolidated_;
+  SceneEdits edits_;
   std::string consolidated_file_;  // where the consolidated faces' names are located, if not in file()
-  std::vector<std::string> deleted_;
-  std::vector<NamedSharpEdge> sharp_edits_;
   struct TextSharp {
     Index decl;                         // of ast_.sharps
     std::vector<std::string> vertices;  // full names

@@ -19,9 +19,9 @@ void parse_delete(StatementParser& parser, Index kind) {
   }
 }
 
-// The deletions by full hierarchical name, as the scene resolved them.
+// The deletions by full hierarchical name.
 void save_delete(SceneWriter& writer, Index) {
-  const std::vector<std::string>& deleted = writer.scene().deleted_faces();
+  const std::vector<std::string>& deleted = writer.edits().deleted;
   if (deleted.empty()) return;
   writer.out() << "delete\n";
   for (const std::string& f : deleted) writer.out() << "    face " << f << " endface\n";
@@ -44,12 +44,12 @@ void parse_consolidate(StatementParser& parser, Index kind) {
 }
 
 void save_consolidate(SceneWriter& writer, Index) {
-  const std::vector<NamedFace>& faces = writer.ast().consolidated_faces;
+  const std::vector<std::vector<std::string>>& faces = writer.edits().consolidated;
   if (faces.empty()) return;
   writer.out() << "consolidate\n";
-  for (const NamedFace& f : faces) {
+  for (const std::vector<std::string>& f : faces) {
     writer.out() << "    consolidateface\n";
-    for (const Name& v : f.vertices) writer.out() << "        vertex " << v.text << " endvertex\n";
+    for (const std::string& v : f) writer.out() << "        vertex " << v << " endvertex\n";
     writer.out() << "    endconsolidateface\n";
   }
   writer.out() << "endconsolidate\n";
@@ -82,9 +82,9 @@ void parse_sharp_edges(StatementParser& parser, Index kind) {
   parser.take();
 }
 
-// By full hierarchical names, as the scene resolved them.
+// By full hierarchical names.
 void save_sharp_edges(SceneWriter& writer, Index) {
-  const std::vector<NamedSharpEdge>& edges = writer.scene().sharp_edits();
+  const std::vector<NamedSharpEdge>& edges = writer.edits().sharp;
   if (edges.empty()) return;
   writer.out() << "sharpedges";
   for (const NamedSharpEdge& e : edges) {
