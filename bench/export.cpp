@@ -1,4 +1,4 @@
-// End to end as a user runs it (issue 18): the 64x32 torus of bench/torus.hpp written as an OBJ, then
+// End to end as a user runs it: the 64x32 torus of bench/torus.hpp written as an OBJ, then
 // `nome export` of its level-6 subdivision as separate processes, peak memory (wait4's ru_maxrss) and wall
 // time, beside CGAL's whole process for the same subdivision (bench/peers/cgal_subdivide.cpp) and dd
 // writing as many bytes to the same folder, all in the same run. Best wall time of several runs: the

@@ -1,4 +1,4 @@
-// Print check figures (issue 17): the check of a 1,000,000-triangle surface on one and two threads, and of
+// Print check figures: the check of a 1,000,000-triangle surface on one and two threads, and of
 // a surface whose offset solid has 1,000,000 triangles against the target of 1 s on two threads.
 #include <algorithm>
 #include <chrono>

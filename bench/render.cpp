@@ -1,4 +1,4 @@
-// Headless rendering figures (issue 7): what one `nome render` costs, piece by piece, and what a viewer
+// Headless rendering figures: what one `nome render` costs, piece by piece, and what a viewer
 // frame costs on llvmpipe, at 1024x768 with and without 4x multisampling (`nome render` uses 4x).
 #include <algorithm>
 #include <chrono>

@@ -1,5 +1,5 @@
-// Catmull-Clark, position-only re-evaluation and offset, timed on this machine (issue 3's cases), with
-// OpenMesh's CatmullClarkT on the same input in the same run when it is installed.
+// Catmull-Clark, position-only re-evaluation and offset, timed on this machine on the cases the targets name,
+// with OpenMesh's CatmullClarkT on the same input in the same run when it is installed.
 
 #include <algorithm>
 #include <cstdio>
@@ -108,7 +108,7 @@ std::span<const Vec3> refine_again(Refinement& refinement, const Mesh& base, int
   return refinement.refine_positions(base, SubdivisionRule::classic, threads);
 }
 
-// What the issue-18 summary needs from the level table.
+// What the summary of targets needs from the level table.
 struct LevelSix {
   double ms = 0, fresh_ms = 0, speed_up = 0, openmesh_ms = 0, cgal_ms = 0;
 };
@@ -443,7 +443,7 @@ int main(int argc, char** argv) {
   position_only(threads);
   creases();
   const FirstOffsetRatios first_offset = offset_case();
-  // Issue 18's figures beside their targets (the peers' times are from the table above).
+  // The figures beside their targets (the peers' times are from the table above).
   std::printf(
       "\ngoal 2: first offset in a process %.2fx the warm one as a Mesh, %.2fx as `nome export` makes it\n"
       "        (target <= 1.5x)\n"

@@ -1,4 +1,4 @@
-// The viewer's first solid (issue 18, goal 2, as the viewer meets it): the offset of the level-5 torus
+// The viewer's first solid (as the viewer meets it): the offset of the level-5 torus
 // (4,194,304 faces) with everything a frame needs of it (StagePipeline: the kernel's stages, the display
 // arrays, borders, report), the first time in a new process and warm.
 #include <cstdio>

@@ -25,7 +25,7 @@ inline double ms_since(std::chrono::steady_clock::time_point start) {
 // CPU time of the whole process (every thread), for figures on a loaded machine.
 double cpu_ms();
 
-// Issue 18's goal 3 on the benchmark torus (slider_torus.nome), with a current GL context: a slider that
+// Live editing on the benchmark torus (slider_torus.nome), with a current GL context: a slider that
 // moves vertices at a million faces (kernel, display arrays, buffers), and whole frames at 262,144 faces
 // for a slider that moves vertices and one that changes the topology.
 void million_figures();

@@ -51,6 +51,20 @@ class SharedList {
   std::mutex mutex_;
 };
 
+// The passes read the positions of a face's corners and the normals of a fan's faces at random: the
+// reads a few dozen items ahead are asked for early (prefetched), so that they overlap instead of each
+// waiting for memory in turn. The arithmetic and its order stay as they are.
+inline constexpr Index face_prefetch_distance = 16;  // faces
+inline constexpr Index fan_prefetch_distance = 64;   // fan corners
+inline void prefetch_corner_positions(const Vec3* p, const Index* offsets, const Index* corners, Index f) {
+  const Index* c = corners + offsets[f];
+  if (offsets[f + 1] - offsets[f] == 4) {
+    for (int i = 0; i < 4; ++i) __builtin_prefetch(&p[c[i]]);
+  } else {
+    for (Index i = 0; i < offsets[f + 1] - offsets[f]; ++i) __builtin_prefetch(&p[c[i]]);
+  }
+}
+
 // Face f's unit Newell normal, or zero when it is degenerate: its area below 1e-14 times the squared
 // length of its longest side (a relative threshold), found in the same walk round the face. A quad's
 // Newell normal is the cross product of its diagonals (the same vector in a third of the arithmetic: this
@@ -85,18 +99,21 @@ void face_normals(const Mesh& mesh, T* out, std::vector<Index>& degenerate, int 
   const Vec3* p = mesh.positions().data();
   const Index* offsets = mesh.face_offsets().data();
   const Index* corners = mesh.corner_vertices().data();
+  const Index last_face = mesh.num_faces() - 1;
   SharedList list(degenerate);
   // The arrays by value: read through the lambda's references, each store to `out` (which might alias
   // them) would reload them.
-  parallel_for(mesh.num_faces(), threads, [&list, out, p, offsets, corners](Index begin, Index end) {
-    std::vector<Index> part;
-    for (Index f = begin; f < end; ++f) {
-      const Vec3 n = unit_face_normal(p, offsets, corners, f);
-      store_normal(out[f], n);
-      if (n == Vec3(0.0)) part.push_back(f);
-    }
-    list.append(part);
-  });
+  parallel_for(
+      mesh.num_faces(), threads, [&list, out, p, offsets, corners, last_face](Index begin, Index end) {
+        std::vector<Index> part;
+        for (Index f = begin; f < end; ++f) {
+          prefetch_corner_positions(p, offsets, corners, std::min(f + face_prefetch_distance, last_face));
+          const Vec3 n = unit_face_normal(p, offsets, corners, f);
+          store_normal(out[f], n);
+          if (n == Vec3(0.0)) part.push_back(f);
+        }
+        list.append(part);
+      });
   list.sort();
 }
 
@@ -115,6 +132,7 @@ void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>
   constexpr Scalar vanishing = std::is_same_v<T, PackedNormal> ? Scalar(1e-2) : Scalar(1e-12);
   const Index* fan_offsets = mesh.fan_corner_offsets().data();
   const Index* fan = mesh.fan_corners().data();
+  const Index last_fan_corner = Index(mesh.fan_corners().size()) - 1;
   const Index* corner_faces = mesh.corner_faces().data();
   const signed char* signs = mesh.corner_signs().data();
   // Without a negative sign (any consistently oriented surface) no sign is read; in a quad mesh (every
@@ -129,6 +147,8 @@ void vertex_normals(const Mesh& mesh, const T* faces, T* out, std::vector<Index>
         Sum n(0.0);
         const Index first = fan_offsets[v], last = fan_offsets[v + 1];
         for (Index i = first; i < last; ++i) {
+          const Index ahead = fan[std::min(i + fan_prefetch_distance, last_fan_corner)];
+          __builtin_prefetch(&faces[is_quads ? ahead >> 2 : corner_faces[ahead]]);
           const Index c = fan[i];
           const Sum face = summand(faces[is_quads ? c >> 2 : corner_faces[c]]);
           n += !has_signs || signs[c] > 0 ? face : -face;

@@ -9,8 +9,8 @@ namespace nome {
 
 // Whether offset(mesh, ...) is two parallel copies of `mesh` and nothing else: no border (so no rim
 // quads), no Möbius edge (every corner sign +1) and no vertex without faces (solid vertices 2v and 2v+1
-// are v+ and v-).
-bool is_two_copy_offset(const Mesh& mesh);
+// are v+ and v-). On up to `threads` threads.
+bool is_two_copy_offset(const Mesh& mesh, int threads = 1);
 
 // The normals a display draws offset(mesh, {distance}) with, for any distance, when it is two parallel
 // copies (is_two_copy_offset): v+ and face f take the surface's n_v and n_f, v- and f's reversed copy
