@@ -218,12 +218,12 @@ void Window::apply_file_defaults() {
   PipelineSettings& settings = stage_.settings();
   if (stages.subdivision_levels) {
     settings.subdivision_levels = *stages.subdivision_levels;
-    if (settings.stage < Stage::subdivided) settings.stage = Stage::subdivided;
+    if (!passes_through(settings.stage, Stage::subdivided)) settings.stage = Stage::subdivided;
   }
   if (stages.boundary) settings.boundary = *stages.boundary;
   if (stages.offset_distance) {
     settings.offset_distance = *stages.offset_distance;
-    if (settings.stage < Stage::offset) settings.stage = Stage::offset;
+    if (!passes_through(settings.stage, Stage::offset)) settings.stage = Stage::offset;
   }
   if (scene::weld_before_subdividing(stages, settings)) log_.info(scene::welding_note);
 }

@@ -58,7 +58,7 @@ double diagonal(const Mesh& mesh) {
 std::vector<std::array<Index, 2>> shown_faces_of(const Mesh& surface, Index f, Stage stage, int levels_after,
                                                  const Mesh& shown) {
   const Index faces = surface.num_faces();
-  if (stage <= Stage::subdivided) {
+  if (!is_solid(stage)) {
     if (shown.num_faces() != faces) return {};
     return {{f, f + 1}};
   }
@@ -128,7 +128,7 @@ bool PrintCheckView::update(StageView& stage, const Session& session, double now
   if (stage.is_busy()) changed_at_ = now;
   // Automatic checks follow the offset stages only: a scene looked at before its offset is not subdivided
   // in the background for a check nobody asked for.
-  const bool is_offset_shown = stage.settings().stage >= Stage::offset;
+  const bool is_offset_shown = is_solid(stage.settings().stage);
   if (is_automatic && is_offset_shown && !is_seen_checked_ && now - changed_at_ >= rest_seconds)
     request(session, stage.settings());
   return has_arrived;

@@ -56,7 +56,7 @@ void SectionTool::bind(ToolContext& context) {
 void SectionTool::before_draw(ToolContext& context) {
   const StageResult* shown = context.stage.shown();
   apply_section(state_, context.view.camera(), 0.5 * (context.shown_low + context.shown_high),
-                shown && shown->stage >= Stage::offset, context.display);
+                shown && is_solid(shown->stage), context.display);
 }
 
 void SectionTool::draw_section(ToolContext& context) {

@@ -49,7 +49,7 @@ TEST_CASE("measuring in the viewer: Shift+M gives the wall of the offset box, M 
   test::TestViewer viewer(options);
   const auto is_solid = [&] {
     const viewer::StageResult* shown = viewer.window().shown();
-    return shown && shown->stage >= Stage::offset;
+    return shown && nome::is_solid(shown->stage);
   };
   for (int i = 0; i < 600 && !is_solid(); ++i) viewer.frame();
   REQUIRE(is_solid());

@@ -18,10 +18,9 @@ TEST_CASE("C cuts the view with a section plane through the middle, filled on a 
   viewer::ViewerOptions options;
   options.file = dir + "/band.nome";
   test::TestViewer viewer(options);
-  for (int i = 0; i < 600 && !(viewer.window().shown() && viewer.window().shown()->stage >= Stage::offset);
-       ++i)
+  for (int i = 0; i < 600 && !(viewer.window().shown() && is_solid(viewer.window().shown()->stage)); ++i)
     viewer.frame();
-  REQUIRE(viewer.window().shown()->stage >= Stage::offset);
+  REQUIRE(is_solid(viewer.window().shown()->stage));
   CHECK(viewer.window().display().section_plane == glm::vec4(0.0f));
   viewer::InputFrame press;
   press.keys.push_back({GLFW_KEY_C, viewer::KeyModifier::none});

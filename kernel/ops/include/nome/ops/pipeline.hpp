@@ -17,6 +17,7 @@
 #include "nome/ops/offset_surface.hpp"
 #include "nome/ops/pipeline_input.hpp"
 #include "nome/ops/pipeline_settings.hpp"
+#include "nome/ops/pipeline_stage.hpp"
 #include "nome/progress.hpp"
 
 namespace nome {
@@ -59,17 +60,24 @@ struct PipelineSurface {
 };
 
 class SceneStage;
-class MergeStage;
-class SolidStages;
 
-// The whole way from a scene's polygons to a printable solid (DESIGN.md's data flow): scene -> merged ->
-// subdivided -> offset -> subdivided offset, each stage's result cached. A run redoes only what changed:
-// an input whose polygons are the same as last time (a slider that moves vertices) flows its positions
-// into the cached meshes and builds none; a new topology rebuilds the stages from the first it reaches;
-// other settings re-run only the stages they touch (another offset distance keeps the subdivision).
+// Makes the stages a pipeline runs, in order; the first is the scene stage (as builtin_stages makes it).
+using MakeStages = std::function<std::vector<std::unique_ptr<PipelineStage>>()>;
+
+// The whole way from a scene's polygons to a printable solid: an ordered list of stages (PipelineStage;
+// builtin_stages: scene -> merged -> subdivided -> offset -> subdivided offset), each stage's result cached.
+// A run goes down the list to the stage the settings ask for. Each stage passes on what changed in its
+// result (Change), and the stages after it take it up when a run reaches them. A run redoes only what
+// changed: an input whose polygons are the same as last time (a slider that moves vertices) flows its
+// positions through the stages' positions passes and builds no mesh; a new topology runs the topology
+// passes from the first stage it reaches; other settings re-run only the stages they touch (another offset
+// distance keeps the subdivision).
 class Pipeline {
  public:
   Pipeline();
+  // A pipeline of other stages (builtin_stages with a stage added). Throws InvalidInputError when the
+  // first is not the scene stage.
+  explicit Pipeline(MakeStages make_stages);
   ~Pipeline();
   Pipeline(Pipeline&&) noexcept;
   Pipeline& operator=(Pipeline&&) noexcept;
@@ -87,9 +95,10 @@ class Pipeline {
   // InvalidInputError when the count differs or there was no such input.
   void move_input_vertices(Buffer<Vec3> positions);
 
-  // Makes settings.stage from the input and returns it (valid until the next run or input). Throws
-  // InvalidInputError for settings out of range and BudgetError, with the estimate, when the result
-  // would exceed the memory budget unless forced.
+  // Makes settings.stage from the input and returns it (valid until the next run or input): runs the list
+  // down to the stage named to_string(settings.stage). Throws InvalidInputError for settings out of range
+  // or a stage not in the list, and BudgetError, with the estimate, when the result would exceed the
+  // memory budget unless forced.
   const Mesh& run(const PipelineSettings& settings);
   // The same, with the scene mesh given (set_input, then run).
   const Mesh& run(const Mesh& scene_mesh, const PipelineSettings& settings);
@@ -146,14 +155,35 @@ class Pipeline {
   Change result_change() const { return result_change_; }
   std::uint64_t result_topology_version() const { return result_topology_version_; }
 
-  // What each stage did in the last run.
+  // What each stage did in the last run (skipped: the run did not reach it, or it was off).
   StageWork work(Stage stage) const;
+  StageWork work(std::string_view stage_name) const;
   const MergeSummary& merge_summary() const;
   // Warnings of the last run's new work: edges joining no faces, merges skipped, degenerate faces met by
   // the offset's normals.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
  private:
+  // A stage and the cache around it.
+  struct Slot {
+    std::unique_ptr<PipelineStage> stage;
+    // What changed in the stage's input since its last pass (the stages a run skips catch up at the next
+    // run that reaches them).
+    Change pending = Change::topology;
+    bool has_result = false;
+    int source = -1;            // the stage whose result was the input of its last pass
+    PipelineSettings settings;  // of its last pass
+    StageWork work = StageWork::skipped;
+  };
+
+  SceneStage& scene();
+  // The index of the stage of that name in the list, or -1.
+  int find(std::string_view stage_name) const;
+  // Runs stage `i` on the result of stage `source` with the pass its change needs; returns what changed
+  // in its result, which the stages after it take up.
+  Change run_stage(int i, int source, const PipelineSettings& settings);
+  // Whether a lent result can be taken up again: copied back (true), or to be made anew.
+  bool takes_back(Mesh& result);
   void input_changed(Change change);
   const Mesh& run_stages(const PipelineSettings& settings, const PipelineSettings& budgeted,
                          bool streams_last_level);
@@ -168,21 +198,16 @@ class Pipeline {
   // run_surface's offset of `input` (run_to_last_offset's).
   PipelineSurface run_offset_surface(const Mesh& input, const PipelineSettings& settings, bool needs_creases);
 
-  std::unique_ptr<SceneStage> scene_;
-  std::unique_ptr<MergeStage> merged_;
-  std::unique_ptr<SolidStages> solid_;
-  // What changed in the scene mesh since the merge stage, and in its input since the solid stages, last
-  // ran (an InputChange: stages that a run skips catch up at the next run that reaches them).
-  Change merge_change_ = Change::none, solid_change_ = Change::none;
-  Change pending_result_change_ = Change::topology;  // of the scene mesh since the last run
-  int solid_source_ = -1;                            // the stage the solid stages last started from
-  const Mesh* result_ = nullptr;
-  const Mesh* last_result_ = nullptr;  // the stage mesh the run before last showed
+  MakeStages make_stages_;
+  std::vector<Slot> slots_;
+  int result_ = -1;       // the stage whose result the last run returned
+  int last_result_ = -1;  // the stage whose result the run before last returned
+  int lent_ = -1;         // the stage whose result is lent out (lend_result) and not taken back
+  std::function<Mesh()> copy_back_;
   Change result_change_ = Change::topology;
   std::uint64_t result_topology_version_ = 0;
   std::optional<Refinement> last_level_;  // run_surface's: the last level's quads and positions
   Progress progress_;
-  std::vector<std::string> input_warnings_;
   std::vector<std::string> warnings_;
 };
 

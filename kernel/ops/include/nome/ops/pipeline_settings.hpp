@@ -26,9 +26,11 @@ struct PipelineSettings {
   bool operator==(const PipelineSettings&) const = default;
 
   // What the stage asked for uses: a stage after it is off (no levels, no distance, no merge).
-  bool is_merging() const { return stage == Stage::merged || (stage > Stage::merged && should_merge); }
-  int levels_before() const { return stage >= Stage::subdivided ? subdivision_levels : 0; }
-  double distance() const { return stage >= Stage::offset ? offset_distance : 0.0; }
+  bool is_merging() const {
+    return stage == Stage::merged || (should_merge && passes_through(stage, Stage::merged));
+  }
+  int levels_before() const { return passes_through(stage, Stage::subdivided) ? subdivision_levels : 0; }
+  double distance() const { return passes_through(stage, Stage::offset) ? offset_distance : 0.0; }
   int levels_after() const { return stage == Stage::subdivided_offset ? subdivision_after : 0; }
   // The result is a subdivision surface (some level of Catmull-Clark ran), not the faces as made.
   bool is_smoothing() const { return levels_before() > 0 || levels_after() > 0; }

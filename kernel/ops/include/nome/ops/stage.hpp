@@ -5,10 +5,12 @@
 
 namespace nome {
 
-// The stages from a scene to a printable solid, in order (DESIGN.md's data flow): the scene's pieces as
-// one mesh, merged, subdivided, offset into a solid, and the solid subdivided again.
+// The names of the built-in stages from a scene to a printable solid (the pipeline's stages, PipelineStage):
+// the scene's pieces as one mesh, merged, subdivided, offset into a solid, and the solid subdivided again.
+// The command line and the panels select the stage shown by these names; the values have no order.
 enum class Stage { scene, merged, subdivided, offset, subdivided_offset };
 
+// The built-in stages in the order of the pipeline's list (builtin_stages).
 inline constexpr Stage all_stages[] = {Stage::scene, Stage::merged, Stage::subdivided, Stage::offset,
                                        Stage::subdivided_offset};
 
@@ -20,5 +22,11 @@ std::optional<Stage> parse_stage(std::string_view name);
 // Edits name the scene's vertices and faces, which only the scene and merged stages show: the later
 // stages are computed from them.
 bool is_editable(Stage stage);
+
+// Whether a pipeline that stops at `last` makes `stage` on its way: `stage` is `last` or comes before it in
+// the list of built-in stages.
+bool passes_through(Stage last, Stage stage);
+// Whether the stage's mesh is a solid: the offset's, or one made from it.
+bool is_solid(Stage stage);
 
 }  // namespace nome

@@ -1,32 +1,36 @@
 #pragma once
 
 #include <optional>
-#include <string>
-#include <vector>
+#include <string_view>
 
 #include "nome/ops/merge.hpp"
 #include "nome/ops/pipeline.hpp"
-#include "ops/pipeline/solid_stages.hpp"
+#include "nome/ops/pipeline_stage.hpp"
 
 namespace nome {
 
-// The merge stage, cached: when only the input's positions moved and the merge would join the same
-// vertices, the merged mesh's positions are updated in place (no mesh is built).
-class MergeStage {
+// The merge stage: when only the input's positions moved and the merge would join the same vertices, the
+// positions pass updates the merged mesh's positions in place (no mesh is built). It keeps its mesh while
+// off, so that merging again after a look at the scene costs nothing.
+class MergeStage final : public PipelineStage {
  public:
-  // Returns what changed in the merged mesh.
-  Change update(const Mesh& input, Change change, double tolerance);
-  bool has_mesh() const { return merged_.has_value(); }
-  const Mesh& mesh() const { return merged_->mesh; }
-  Mesh& mesh() { return merged_->mesh; }
-  StageWork work() const { return work_; }
+  std::string_view name() const override { return "merged"; }
+  bool is_on(const PipelineSettings& s) const override { return s.is_merging(); }
+  bool changes_topology(const PipelineSettings& last, const PipelineSettings& next) const override {
+    return last.merge_tolerance != next.merge_tolerance;
+  }
+  void topology_pass(const Mesh& input, const StagePass& pass) override;
+  Change positions_pass(const Mesh& input, const StagePass& pass) override;
+  Mesh& result() override { return merged_->mesh; }
+  bool is_editable() const override { return true; }
+
   const MergeSummary& summary() const { return summary_; }
 
  private:
+  void merge(const Mesh& input, MergePlan plan, const StagePass& pass);
+
   std::optional<MergeResult> merged_;
-  double tolerance_ = 0.0;  // as asked for (0: relative)
   MergeSummary summary_;
-  StageWork work_ = StageWork::skipped;
 };
 
 }  // namespace nome

@@ -9,8 +9,10 @@
 #include "nome/ops/offset.hpp"
 #include "nome/ops/subdivided_report.hpp"
 #include "ops/pipeline/merge_stage.hpp"
+#include "ops/pipeline/offset_stage.hpp"
 #include "ops/pipeline/scene_stage.hpp"
-#include "ops/pipeline/solid_stages.hpp"
+#include "ops/pipeline/subdivide_stage.hpp"
+#include "ops/pipeline/subdivided_offset_stage.hpp"
 
 namespace nome {
 namespace {
@@ -59,42 +61,64 @@ PipelineEstimate estimate_pipeline(const Mesh& input, const PipelineSettings& s,
   return {faces, bytes};
 }
 
-Pipeline::Pipeline()
-    : scene_(std::make_unique<SceneStage>()),
-      merged_(std::make_unique<MergeStage>()),
-      solid_(std::make_unique<SolidStages>()) {}
+std::vector<std::unique_ptr<PipelineStage>> builtin_stages() {
+  std::vector<std::unique_ptr<PipelineStage>> stages;
+  stages.push_back(std::make_unique<SceneStage>());
+  stages.push_back(std::make_unique<MergeStage>());
+  stages.push_back(std::make_unique<SubdivideStage>());
+  stages.push_back(std::make_unique<OffsetStage>());
+  stages.push_back(std::make_unique<SubdividedOffsetStage>());
+  return stages;
+}
+
+Pipeline::Pipeline() : Pipeline(builtin_stages) {}
+
+Pipeline::Pipeline(MakeStages make_stages) : make_stages_(std::move(make_stages)) {
+  for (std::unique_ptr<PipelineStage>& stage : make_stages_()) {
+    slots_.emplace_back();
+    slots_.back().stage = std::move(stage);
+  }
+  if (slots_.empty() || !dynamic_cast<SceneStage*>(slots_.front().stage.get()))
+    throw InvalidInputError("pipeline: the first stage must be the scene stage");
+}
+
 Pipeline::~Pipeline() = default;
 Pipeline::Pipeline(Pipeline&&) noexcept = default;
 Pipeline& Pipeline::operator=(Pipeline&&) noexcept = default;
 
+SceneStage& Pipeline::scene() {
+  return static_cast<SceneStage&>(*slots_.front().stage);
+}
+
+int Pipeline::find(std::string_view stage_name) const {
+  for (size_t i = 0; i < slots_.size(); ++i)
+    if (slots_[i].stage->name() == stage_name) return int(i);
+  return -1;
+}
+
 void Pipeline::input_changed(Change change) {
-  merge_change_ = combined(merge_change_, change);
-  solid_change_ = combined(solid_change_, change);
-  pending_result_change_ = combined(pending_result_change_, change);
-  result_ = nullptr;
-  input_warnings_.clear();
-  input_warnings_ = scene_->problems();
+  slots_.front().pending = combined(slots_.front().pending, change);
+  result_ = -1;
 }
 
 void Pipeline::set_input(PipelineInput input) {
-  input_changed(scene_->update(std::move(input)));
+  input_changed(scene().update(std::move(input)));
 }
 
 void Pipeline::replace_input(PipelineInput input) {
-  input_changed(scene_->replace(std::move(input)));
+  input_changed(scene().replace(std::move(input)));
 }
 
 void Pipeline::move_input_vertices(Buffer<Vec3> positions) {
-  input_changed(scene_->move_vertices(std::move(positions)));
+  input_changed(scene().move_vertices(std::move(positions)));
 }
 
 void Pipeline::set_input(const Mesh& scene_mesh) {
-  input_changed(scene_->update(scene_mesh));
+  input_changed(scene().update(scene_mesh));
 }
 
 void Pipeline::set_progress(Progress progress) {
-  progress_ = progress;
-  solid_->set_progress(std::move(progress));
+  progress_ = std::move(progress);
 }
 
 const Mesh& Pipeline::run(const Mesh& scene_mesh, const PipelineSettings& settings) {
@@ -112,7 +136,7 @@ const Mesh& Pipeline::run(const PipelineSettings& s, const PipelineSettings& bud
     return run_stages(s, budgeted, streams_last_level);
   } catch (...) {
     // Stages that threw start over: whatever the next run shows is a new topology to its caller.
-    last_result_ = nullptr;
+    last_result_ = -1;
     throw;
   }
 }
@@ -124,40 +148,79 @@ void Pipeline::note_result_change(Change change) {
   if (change == Change::topology) ++result_topology_version_;
 }
 
+bool Pipeline::takes_back(Mesh& result) {
+  lent_ = -1;
+  const std::function<Mesh()> copy = std::move(copy_back_);
+  copy_back_ = nullptr;
+  if (!copy) return false;
+  result = copy();
+  return true;
+}
+
+Change Pipeline::run_stage(int i, int source, const PipelineSettings& s) {
+  Slot& slot = slots_[i];
+  PipelineStage& stage = *slot.stage;
+  const Mesh& input = slots_[source].stage->result();
+  Change change = slot.pending;
+  if (!slot.has_result || slot.source != source || stage.changes_topology(slot.settings, s))
+    change = Change::topology;
+  else if (stage.changes_positions(slot.settings, s))
+    change = combined(change, Change::positions);
+  if (change == Change::positions && !stage.can_take_positions(input)) change = Change::topology;
+  // A result lent out and not copied back is made anew.
+  if (change != Change::topology && lent_ == i && !takes_back(stage.result())) change = Change::topology;
+  slot.pending = Change::none;
+  slot.has_result = false;  // until the pass is done: a stage left half done is made anew next time
+  const StagePass pass{s, progress_, warnings_};
+  if (change == Change::topology) {
+    stage.topology_pass(input, pass);
+  } else if (change == Change::positions) {
+    change = stage.positions_pass(input, pass);
+  }
+  slot.work = change == Change::topology    ? StageWork::rebuilt
+              : change == Change::positions ? StageWork::positions
+                                            : StageWork::cached;
+  slot.has_result = true;
+  slot.source = source;
+  slot.settings = s;
+  for (size_t j = i + 1; j < slots_.size(); ++j) slots_[j].pending = combined(slots_[j].pending, change);
+  return change;
+}
+
 const Mesh& Pipeline::run_stages(const PipelineSettings& s, const PipelineSettings& budgeted,
                                  bool streams_last_level) {
   last_level_.reset();
-  Change result_change = std::exchange(pending_result_change_, Change::none);
-  warnings_ = std::move(input_warnings_);
-  input_warnings_.clear();
-  const Mesh* current = &scene_->mesh();
-  int source = int(Stage::scene);
-  if (s.is_merging()) {
-    const Change change = merged_->update(*current, merge_change_, s.merge_tolerance);
-    merge_change_ = Change::none;
-    result_change = combined(result_change, change);
-    if (merged_->work() == StageWork::rebuilt)
-      for (const SkippedMerge& skip : merged_->summary().skipped)
-        warnings_.push_back("merge: " + skip.message);
-    solid_change_ = combined(solid_change_, change);
-    current = &merged_->mesh();
-    source = int(Stage::merged);
+  warnings_.clear();
+  const int last = find(to_string(s.stage));
+  if (last < 0)
+    throw InvalidInputError(std::string("pipeline: no stage ") + to_string(s.stage) + " in the pipeline");
+  for (int i = 0; i <= last; ++i) slots_[i].stage->check(s);
+  for (Slot& slot : slots_) slot.work = StageWork::skipped;
+  int current = 0;  // the stage whose result the next stage reads
+  Change change = Change::none;
+  bool is_budget_checked = false;
+  for (int i = 0; i <= last; ++i) {
+    PipelineStage& stage = *slots_[i].stage;
+    // The budget counts the computed stages from the mesh they start from.
+    if (!stage.is_editable() && !is_budget_checked) {
+      check_budget(slots_[current].stage->result(), budgeted, streams_last_level);
+      is_budget_checked = true;
+    }
+    if (!stage.is_on(s)) {
+      if (stage.free_while_off()) slots_[i].has_result = false;
+      continue;
+    }
+    change = run_stage(i, current, s);
+    current = i;
   }
-  if (s.stage <= Stage::merged) {
-    result_ = current;
-    note_result_change(result_change);
-    return *result_;
+  // A result still lent out was made anew or its stage left out: its copy is not needed.
+  if (lent_ >= 0 && lent_ <= last) {
+    lent_ = -1;
+    copy_back_ = nullptr;
   }
-  check_budget(*current, budgeted, streams_last_level);
-  if (source != solid_source_) solid_change_ = Change::topology;
-  const Change change = solid_change_;
-  solid_source_ = -1;  // until the solid stages have run on it
-  result_ = &solid_->run(*current, change, s);
-  solid_source_ = source;
-  solid_change_ = Change::none;
-  note_result_change(solid_->result_change());
-  for (const std::string& w : solid_->warnings()) warnings_.push_back(w);
-  return *result_;
+  result_ = current;
+  note_result_change(change);
+  return slots_[current].stage->result();
 }
 
 namespace {
@@ -207,7 +270,7 @@ PipelineSurface Pipeline::run_offset_surface(const Mesh& input, const PipelineSe
   progress_("offset", 0.0);
   // A writer's one pass: the subdivision's refinement is not needed again, and the normals take its
   // blocks instead of fresh pages; the face normals go back as soon as the vertex normals are made.
-  solid_->release_refinements();
+  for (Slot& slot : slots_) slot.stage->free_positions_data();
   Normals normals = offset_normals(input, s.threads);
   normals.faces = {};
   PipelineSurface surface{nullptr, std::nullopt,
@@ -230,49 +293,64 @@ PipelineSurface Pipeline::run_surface(const PipelineSettings& s, bool needs_crea
 
 Mesh Pipeline::take_result() {
   Mesh out;
-  if (result_ == &scene_->mesh()) {
-    out = std::move(scene_->mesh());
-  } else if (merged_->has_mesh() && result_ == &merged_->mesh()) {
-    out = std::move(merged_->mesh());
-  } else if (std::optional<Mesh> solid = solid_->take_result()) {
-    out = std::move(*solid);
-  }
-  *this = Pipeline();
+  if (result_ >= 0) out = std::move(slots_[result_].stage->result());
+  MakeStages make_stages = make_stages_;
+  *this = Pipeline(std::move(make_stages));
   return out;
 }
 
 bool Pipeline::is_solid_result() const {
-  return result_ && result_ != &scene_->mesh() && !(merged_->has_mesh() && result_ == &merged_->mesh());
+  return result_ >= 0 && !slots_[result_].stage->is_editable();
 }
 
 bool Pipeline::display_normals(Buffer<PackedNormal>& faces, Buffer<PackedNormal>& vertices,
                                int threads) const {
-  return is_solid_result() && solid_->display_normals(faces, vertices, threads);
+  return is_solid_result() && slots_[result_].stage->display_normals(faces, vertices, threads);
 }
 
 bool Pipeline::exchange_result_positions(Buffer<Vec3>& positions) {
-  return is_solid_result() && solid_->exchange_result_positions(positions);
+  if (!is_solid_result()) return false;
+  Mesh& result = slots_[result_].stage->result();
+  if (positions.size() != result.num_vertices()) return false;
+  result.positions().swap(positions);
+  // Every computed stage makes its positions again at the next run that reaches it.
+  for (Slot& slot : slots_)
+    if (!slot.stage->is_editable()) slot.pending = combined(slot.pending, Change::positions);
+  return true;
 }
 
 bool Pipeline::lend_result(Mesh& mesh, std::function<Mesh()> copy_back) {
-  return is_solid_result() && solid_->lend_result(mesh, std::move(copy_back));
+  if (!is_solid_result()) return false;
+  std::swap(slots_[result_].stage->result(), mesh);
+  lent_ = result_;
+  copy_back_ = std::move(copy_back);
+  return true;
 }
 
 TopologyReport Pipeline::result_report() const {
-  if (!result_) return {};
+  if (result_ < 0) return {};
+  const Slot& slot = slots_[result_];
   if (is_solid_result())
-    if (std::optional<TopologyReport> report = solid_->derived_report()) return std::move(*report);
-  return topology_report(*result_);
+    if (std::optional<TopologyReport> report =
+            slot.stage->derived_report(slots_[slot.source].stage->result()))
+      return std::move(*report);
+  return topology_report(slot.stage->result());
 }
 
 StageWork Pipeline::work(Stage stage) const {
-  if (stage == Stage::scene) return scene_->work();
-  if (stage == Stage::merged) return merged_->work();
-  return solid_->work(stage);
+  return work(to_string(stage));
+}
+
+StageWork Pipeline::work(std::string_view stage_name) const {
+  const int i = find(stage_name);
+  return i < 0 ? StageWork::skipped : slots_[i].work;
 }
 
 const MergeSummary& Pipeline::merge_summary() const {
-  return merged_->summary();
+  static const MergeSummary none;
+  for (const Slot& slot : slots_)
+    if (const auto* merge = dynamic_cast<const MergeStage*>(slot.stage.get())) return merge->summary();
+  return none;
 }
 
 }  // namespace nome

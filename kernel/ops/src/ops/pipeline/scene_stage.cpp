@@ -139,7 +139,6 @@ Change SceneStage::take(PipelineInput input, bool may_be_same) {
   if (may_be_same && has_input_ && next == structure_ && faces_match(soup.face_offsets, soup.face_vertices)) {
     take_positions(soup.positions);
     mesh_.face_colors() = std::move(soup.face_colors);
-    work_ = StageWork::positions;
     return Change::positions;
   }
   structure_ = std::move(next);
@@ -174,7 +173,6 @@ Change SceneStage::move_vertices(Buffer<Vec3> positions) {
                             " positions for an input of " + std::to_string(structure_.num_vertices) +
                             " vertices (set_input first)");
   take_positions(positions);
-  work_ = StageWork::positions;
   return Change::positions;
 }
 
@@ -214,7 +212,6 @@ void SceneStage::rebuild(PipelineInput input) {
   }
   for (std::string& w : coinciding_vertex_warnings(mesh_, input.soup)) problems_.push_back(std::move(w));
   has_mesh_ = true;
-  work_ = StageWork::rebuilt;
 }
 
 Change SceneStage::update(const Mesh& mesh) {
@@ -228,7 +225,6 @@ Change SceneStage::update(const Mesh& mesh) {
       mesh.vertex_sharpness_weights() == mesh_.vertex_sharpness_weights() &&
       mesh.face_holes() == mesh_.face_holes();
   if (is_same_topology && mesh.positions() == mesh_.positions()) {
-    work_ = StageWork::cached;
     return Change::none;
   }
   if (is_same_topology)
@@ -241,8 +237,16 @@ Change SceneStage::update(const Mesh& mesh) {
   has_input_ = false;
   input_face_offsets_ = {};
   input_face_vertices_ = {};
-  work_ = is_same_topology ? StageWork::positions : StageWork::rebuilt;
   return is_same_topology ? Change::positions : Change::topology;
+}
+
+void SceneStage::topology_pass(const Mesh&, const StagePass& pass) {
+  for (const std::string& p : problems_) pass.warnings.push_back(p);
+}
+
+Change SceneStage::positions_pass(const Mesh& input, const StagePass& pass) {
+  topology_pass(input, pass);
+  return Change::positions;
 }
 
 }  // namespace nome

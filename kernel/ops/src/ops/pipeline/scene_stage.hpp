@@ -4,16 +4,25 @@
 #include <vector>
 
 #include "nome/mesh/mesh.hpp"
+#include "nome/ops/pipeline.hpp"
 #include "nome/ops/pipeline_input.hpp"
-#include "ops/pipeline/solid_stages.hpp"
+#include "nome/ops/pipeline_stage.hpp"
 
 namespace nome {
 
 // The pipeline's first stage: the input's polygons as one mesh. It keeps what the mesh was built from, so
 // that an input whose polygons are the same (only positions or colours moved) updates the mesh in place:
-// a slider that moves vertices builds no mesh.
-class SceneStage {
+// a slider that moves vertices builds no mesh. Its mesh is made as the input arrives, so that a topology
+// error reaches the caller that gave the input; its passes at a run hand on the input's problems.
+class SceneStage final : public PipelineStage {
  public:
+  std::string_view name() const override { return "scene"; }
+  bool is_on(const PipelineSettings&) const override { return true; }
+  void topology_pass(const Mesh& input, const StagePass& pass) override;
+  Change positions_pass(const Mesh& input, const StagePass& pass) override;
+  Mesh& result() override { return mesh_; }
+  bool is_editable() const override { return true; }
+
   // Takes the next input and brings the mesh up to date. Throws TopologyError naming the part at fault;
   // the stage then starts over.
   Change update(PipelineInput input);
@@ -25,9 +34,6 @@ class SceneStage {
   // there is no such input or the count differs.
   Change move_vertices(Buffer<Vec3> positions);
 
-  const Mesh& mesh() const { return mesh_; }
-  Mesh& mesh() { return mesh_; }
-  StageWork work() const { return work_; }
   // What the joining left apart: edges of three or more faces (across_edges joining), vertices split
   // where faces only touch (parts that may touch at vertices).
   const std::vector<std::string>& problems() const { return problems_; }
@@ -63,7 +69,6 @@ class SceneStage {
   Mesh mesh_;
   std::vector<Index> vertex_sources_;  // mesh vertex -> input vertex (empty: the same numbers)
   std::vector<std::string> problems_;
-  StageWork work_ = StageWork::skipped;
 };
 
 }  // namespace nome

@@ -33,4 +33,16 @@ bool is_editable(Stage stage) {
   return stage == Stage::scene || stage == Stage::merged;
 }
 
+bool passes_through(Stage last, Stage stage) {
+  for (Stage made : all_stages) {
+    if (made == stage) return true;
+    if (made == last) return false;
+  }
+  return false;
+}
+
+bool is_solid(Stage stage) {
+  return passes_through(stage, Stage::offset);
+}
+
 }  // namespace nome
