@@ -15,7 +15,7 @@ struct OffsetOptions {
   int threads = 1;  // the solid's arrays are built on up to two threads
 };
 
-// Thickens a surface into a solid (report 004 section 5). Vertex v
+// Thickens a surface into a solid (Wang's 2016 report, section 5). Vertex v
 // gives v+ = v + d n_v and v- = v - d n_v (n_v Möbius-aware, see compute_normals); face f's positive
 // copy uses v+ where its corner sign is +1 and v- where it is -1, its negative copy the other ones,
 // reversed; each border edge gets one quad joining its positive and negative copies. The result is

@@ -13,7 +13,8 @@ namespace nome {
 struct SharpLevel;
 struct BaseTiles;
 
-// The smooth-vertex rule of Catmull-Clark (report 004 section 4.1.3; see spec/README.md on names).
+// The smooth-vertex rule of Catmull-Clark (Wang's 2016 report, UCB/EECS-2016-65, section 4.1.3, which
+// calls its second rule DeRose's: it is not, so it is named for the report here).
 enum class SubdivisionRule {
   classic,  // ((n-3) v + 2 avg(edge midpoints) + avg(face points)) / n: Catmull-Clark, OpenSubdiv, OpenMesh
   report,   // ((n-2) v + avg(new edge points) + avg(face points)) / n: the 2016 report's stiffer rule
@@ -26,7 +27,7 @@ struct SubdivisionOptions {
   CreaseOptions creases = {};
 };
 
-// Catmull-Clark subdivision (report 004 section 4), `levels` times, on any mesh the kernel accepts:
+// Catmull-Clark subdivision (Wang's 2016 report, section 4), `levels` times, on any mesh the kernel accepts:
 // polygons of any degree, borders, Möbius edges, several components. Border and sharp edges keep their
 // midpoints; a vertex with >= 3 sharp edges stays put, with 2 it follows the crease (6v + a + b) / 8;
 // `boundary` decides the vertices of a single face and whether border faces are output. Crease and
