@@ -59,10 +59,22 @@ TEST_CASE("the document's topology version stays while a slider moves vertices, 
   SceneDocument doc = funnel_cube_document();  // its saved faces name the funnels' vertices
   const std::uint64_t first = doc.input_topology_version();
   const Index faces = doc.pipeline_input().soup.num_faces();
+  const std::size_t evaluations = doc.scene()->placement_evaluations();
   doc.set_parameter("fp_h", 0.4);
   CHECK(doc.scene()->last_change_moved_vertices_only());
+  // The six funnels are made again (a funnel has no positions of its own); the saved faces' copies of
+  // their vertices only move.
+  CHECK(doc.scene()->placement_evaluations() - evaluations == 6);
   CHECK(doc.input_topology_version() == first);
   CHECK(doc.pipeline_positions() == doc.pipeline_input().soup.positions);
+  // The same positions as the scene read at that height.
+  std::string text = test::read_text(test::assets_dir() + "funnel_cube_consolidated.nome");
+  const std::string height = "set      h       0.3";
+  REQUIRE(text.find(height) != std::string::npos);
+  text.replace(text.find(height), height.size(), "set      h       0.4");
+  const SceneDocument read_at_height =
+      SceneDocument::from_scene(scene::Scene::from_text(text, "funnel_cube_consolidated.nome"));
+  CHECK(read_at_height.pipeline_input().soup.positions == doc.pipeline_input().soup.positions);
   doc.set_parameter("fp_n", 7);
   CHECK_FALSE(doc.scene()->last_change_moved_vertices_only());
   CHECK(doc.input_topology_version() != first);

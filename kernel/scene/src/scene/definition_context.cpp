@@ -57,6 +57,7 @@ std::optional<std::pair<Index, Index>> DefinitionScope::definition(const std::st
 }
 
 std::optional<Vec3> DefinitionContext::position(const Name& name) {
+  is_copy_only_ = false;  // a position read, not a vertex copied: the piece's positions are computed
   Name point = name;
   if (const ControlPointDecl* c = control_point(name.text)) {
     if (!scene_.points_.count(c->point.text))
@@ -89,9 +90,15 @@ Index DefinitionContext::vertex(const Name& name) {
     v = piece_.add_vertex(source.world.soup.positions[ref->vertex],
                           source.world.soup.vertex_names[ref->vertex]);
     reads_.insert(reads_.end(), source.reads.begin(), source.reads.end());
+    is_copy_only_ = is_copy_only_ && v == copied_from_.size();
+    copied_from_.push_back(*ref);
   }
   if (v != no_index) local_[key] = v;
   return v;
+}
+
+std::vector<Scene::VertexRef> DefinitionContext::copied_from() const {
+  return is_copy_only_ ? copied_from_ : std::vector<Scene::VertexRef>{};
 }
 
 void DefinitionContext::add_face(const std::vector<Name>& names, const std::string& face_name,

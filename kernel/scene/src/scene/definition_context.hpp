@@ -64,12 +64,18 @@ class DefinitionContext : public DefinitionScope {
   void error(SourceLocation at, std::string message);
 
   Piece& piece() { return piece_; }
+  // Where each vertex of the piece was copied from, in order, when every one added through vertex() was
+  // copied from another placement (a slider that only moved those moves the copies without evaluating
+  // again); empty otherwise. The caller checks that the piece has no other vertices.
+  std::vector<Scene::VertexRef> copied_from() const;
 
  private:
   std::vector<Index>& reads_;
   std::vector<Diagnostic>& errors_;
   Piece piece_;
   std::unordered_map<std::string, Index> local_;  // "p:NAME" (a point) or "r:NAME" (a reference) -> vertex
+  std::vector<Scene::VertexRef> copied_from_;     // one per vertex, while is_copy_only_
+  bool is_copy_only_ = true;
 };
 
 }  // namespace nome::scene

@@ -101,8 +101,8 @@ std::optional<Color> Scene::placement_color(Index placement, std::vector<Index>&
   return std::nullopt;
 }
 
-Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads,
-                              std::vector<Diagnostic>& errors) {
+Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads, std::vector<Diagnostic>& errors,
+                              std::vector<VertexRef>& copied_from) {
   DefinitionContext context(*this, reads, errors);
   if (p.target.kind != consolidated_kind) {
     const StatementKind& kind = statement_kinds()[p.target.kind];
@@ -114,6 +114,8 @@ Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads,
       for (const DeclaredName& d : names)
         if (d.decl == p.target.index) piece.soup.face_origins.push_back({0, where(d.name->location)});
     }
+    copied_from = context.copied_from();
+    if (copied_from.size() != piece.soup.num_vertices()) copied_from.clear();
     return piece;
   }
   const size_t first_error = errors.size();
@@ -126,17 +128,21 @@ Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads,
     for (FaceOrigin& o : context.piece().soup.face_origins)
       o.where = consolidated_file_ + o.where.substr(ast_.file.size());
   }
+  copied_from = context.copied_from();
+  if (copied_from.size() != context.piece().soup.num_vertices()) copied_from.clear();
   return std::move(context.piece());
 }
 
-Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors) {
+Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors,
+                                std::vector<VertexRef>& copied_from) {
   ++placement_evaluations_;
   reads.clear();
+  copied_from.clear();
   Placement& p = placements_[placement];
   try {
     const glm::dmat4 m = world_matrix(placement, reads);
     const std::optional<Color> color = placement_color(placement, reads);
-    Piece piece = definition_piece(p, reads, errors);
+    Piece piece = definition_piece(p, reads, errors, copied_from);
     place_points(piece.soup.positions, m);
     p.color = color;
     p.is_mirrored = glm::determinant(m) < 0;
@@ -183,6 +189,34 @@ bool Scene::move_vertices(Index placement, Buffer<Vec3>& previous) {
   }
   sort_unique(reads);
   p.reads = std::move(reads);
+  ++vertex_moves_;
+  return true;
+}
+
+bool Scene::move_copied_vertices(Index placement, Buffer<Vec3>& previous) {
+  Placement& p = placements_[placement];
+  if (p.copied_from.empty() || p.copied_from.size() != p.world.soup.positions.size()) return false;
+  std::vector<Index> reads;
+  Buffer<Vec3> moved(p.copied_from.size());
+  try {
+    const glm::dmat4 m = world_matrix(placement, reads);
+    if (placement_color(placement, reads) != p.color || (glm::determinant(m) < 0) != p.is_mirrored)
+      return false;
+    for (size_t v = 0; v < moved.size(); ++v) {
+      const Placement& source = placements_[p.copied_from[v].placement];
+      moved[v] = source.world.soup.positions[p.copied_from[v].vertex];
+    }
+    place_points(moved, m);
+  } catch (const EvaluationError&) {
+    return false;
+  }
+  std::vector<Index> sources;
+  for (const VertexRef& ref : p.copied_from) sources.push_back(ref.placement);
+  sort_unique(sources);
+  for (Index s : sources) reads.insert(reads.end(), placements_[s].reads.begin(), placements_[s].reads.end());
+  sort_unique(reads);
+  p.reads = std::move(reads);
+  previous = std::exchange(p.world.soup.positions, std::move(moved));
   ++vertex_moves_;
   return true;
 }
@@ -235,12 +269,14 @@ std::optional<std::string> Scene::evaluate_all(const std::vector<Index>& placeme
     for (Index i : placements) {
       if (placements_[i].references != is_referencing) continue;
       std::vector<Index> reads;
-      Piece piece = evaluate_placement(i, reads, errors);
+      std::vector<VertexRef> copied_from;
+      Piece piece = evaluate_placement(i, reads, errors, copied_from);
       Placement& p = placements_[i];
       if (!is_referencing && is_vertex_index_current_ && piece.soup.vertex_names != p.world.soup.vertex_names)
         is_vertex_index_current_ = false;
       p.world = std::move(piece);
       p.reads = std::move(reads);
+      p.copied_from = std::move(copied_from);
       if (auto over = over_budget(i)) return over;
     }
   }

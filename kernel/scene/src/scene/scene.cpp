@@ -223,22 +223,62 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
   const double old_value = values_[parameter];
   values_[parameter] = value;
   if (is_slider) parameters_[parameter].value = value;
-  std::vector<Index> remade;
+  std::vector<Index> remade, copies;
   std::vector<std::pair<Index, Buffer<Vec3>>> moved;
   for (Index i = 0; i < placements_.size(); ++i) {
     if (!is_leaf(placements_[i]) ||
         !std::binary_search(placements_[i].reads.begin(), placements_[i].reads.end(), parameter))
       continue;
     Buffer<Vec3> previous;
-    if (move_vertices(i, previous))
+    if (placements_[i].references)
+      copies.push_back(i);  // after the placements it copies from
+    else if (move_vertices(i, previous))
       moved.emplace_back(i, std::move(previous));
     else
       remade.push_back(i);
   }
-  std::vector<std::pair<Piece, std::vector<Index>>> backup;
-  for (Index i : remade) backup.emplace_back(placements_[i].world, placements_[i].reads);
+  struct Kept {
+    Piece world;
+    std::vector<Index> reads;
+    std::vector<VertexRef> copied_from;
+  };
+  std::vector<Kept> backup;
+  const auto keep = [&](Index i) {
+    backup.push_back({placements_[i].world, placements_[i].reads, placements_[i].copied_from});
+  };
+  // A placement made again may still have only moved (a generator with no positions of its own).
+  std::vector<Index> new_topology;
+  const auto note_topology = [&](size_t from) {
+    for (size_t k = from; k < remade.size(); ++k)
+      if (!has_same_topology(backup[k].world, placements_[remade[k]].world))
+        new_topology.push_back(remade[k]);
+  };
+  for (Index i : remade) keep(i);
   std::vector<Diagnostic> errors;
-  const auto over_budget = evaluate_all(remade, errors);
+  auto over_budget = evaluate_all(remade, errors);
+  note_topology(0);
+  if (errors.empty() && !over_budget) {
+    // Copies of other placements' vertices follow them, unless one of those has other faces now.
+    std::vector<Index> remade_copies;
+    for (Index i : copies) {
+      const std::vector<VertexRef>& sources = placements_[i].copied_from;
+      const bool has_new_source = std::any_of(sources.begin(), sources.end(), [&](const VertexRef& ref) {
+        return std::find(new_topology.begin(), new_topology.end(), ref.placement) != new_topology.end();
+      });
+      Buffer<Vec3> previous;
+      if (!has_new_source && move_copied_vertices(i, previous))
+        moved.emplace_back(i, std::move(previous));
+      else
+        remade_copies.push_back(i);
+    }
+    const size_t first_copy = remade.size();
+    for (Index i : remade_copies) {
+      keep(i);
+      remade.push_back(i);
+    }
+    over_budget = evaluate_all(remade_copies, errors);
+    note_topology(first_copy);
+  }
   // A `sharp` weight that reads the slider changes the soup's creases: the soup is made again.
   const bool moves_sharpness =
       std::binary_search(text_sharp_reads_.begin(), text_sharp_reads_.end(), parameter);
@@ -249,18 +289,15 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
     if (is_slider) parameters_[parameter].value = old_value;
     for (auto& [i, previous] : moved) placements_[i].world.soup.positions = std::move(previous);
     for (size_t k = 0; k < remade.size(); ++k) {
-      placements_[remade[k]].world = std::move(backup[k].first);
-      placements_[remade[k]].reads = std::move(backup[k].second);
+      placements_[remade[k]].world = std::move(backup[k].world);
+      placements_[remade[k]].reads = std::move(backup[k].reads);
+      placements_[remade[k]].copied_from = std::move(backup[k].copied_from);
     }
     is_vertex_index_current_ = false;
     if (over_budget) throw BudgetError(*over_budget);
     throw SceneError(std::move(errors));
   }
-  // Placements made again (those that name other placements' vertices) may still have only moved.
-  bool keeps_topology = true;
-  for (size_t k = 0; k < remade.size() && keeps_topology; ++k)
-    keeps_topology = has_same_topology(backup[k].first, placements_[remade[k]].world);
-  has_only_moved_vertices_ = keeps_topology && !moves_sharpness;
+  has_only_moved_vertices_ = new_topology.empty() && !moves_sharpness;
   std::vector<Index> tops, remade_tops;
   for (Index i : remade) remade_tops.push_back(placements_[i].top);
   sort_unique(remade_tops);

@@ -209,6 +209,10 @@ class Scene {
     Index kind;   // row of statement_kinds(), or consolidated_kind
     Index index;  // which of that kind's declarations
   };
+  struct VertexRef {
+    Index placement;
+    Index vertex;
+  };
   struct Placement {
     std::string path;
     Index parent = no_index;
@@ -217,16 +221,13 @@ class Scene {
     Index statement = no_index;  // index of the statement there; no_index: the consolidated mesh itself
     Definition target{no_index, no_index};
     bool references = false;  // its vertices are copied from other placements
+    // Where each of its vertices was copied from, when all were (DefinitionContext::copied_from).
+    std::vector<VertexRef> copied_from;
     Piece world;
     std::vector<Index> reads;
     std::optional<Color> color;  // the instance colour its faces took
     bool is_mirrored = false;    // its world matrix reverses its faces
   };
-  struct VertexRef {
-    Index placement;
-    Index vertex;
-  };
-
   Scene() = default;
   // instance_colors.cpp: the placement of an instance path (throws InvalidInputError for none).
   Index placement_of_instance(const std::string& path) const;
@@ -264,8 +265,10 @@ class Scene {
   bool is_leaf(const Placement& p) const { return !is_group(p.target); }
 
   // placement_evaluation.cpp: one placement's piece in world space, and the passes over many.
-  Piece evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors);
-  Piece definition_piece(const Placement& p, std::vector<Index>& reads, std::vector<Diagnostic>& errors);
+  Piece evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors,
+                           std::vector<VertexRef>& copied_from);
+  Piece definition_piece(const Placement& p, std::vector<Index>& reads, std::vector<Diagnostic>& errors,
+                         std::vector<VertexRef>& copied_from);
   glm::dmat4 world_matrix(Index placement, std::vector<Index>& reads) const;
   // The instance statement's own transforms, in order, as one matrix.
   glm::dmat4 instance_matrix(const InstanceDecl& decl, std::vector<Index>& reads) const;
@@ -278,6 +281,9 @@ class Scene {
   // Moves a placement's vertices alone when its generator tells its positions and its topology is unchanged;
   // hands back the previous positions. False: the placement must be evaluated whole.
   bool move_vertices(Index placement, Buffer<Vec3>& previous);
+  // The same for a placement whose vertices are all copies of other placements' (saved faces over placed
+  // vertices): copies their positions again. Its sources have moved already; none of them is remade.
+  bool move_copied_vertices(Index placement, Buffer<Vec3>& previous);
 
   // vertex_names.cpp: names by unique suffix, indexed on the first lookup after they changed (a scene
   // that looks no vertex up by name, a sweep's, never pays for indexing its hundred thousand names).
