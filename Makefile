@@ -5,6 +5,9 @@ PACKAGES := build-essential cmake pkg-config clang-format lib3mf-dev libglfw3-de
             libbenchmark-dev libopenmesh-dev libcgal-dev libosd-dev clang-14 libclang-rt-14-dev clang-tidy \
             file desktop-file-utils shared-mime-info graphviz
 
+# The browser build's packages (make web, make test); desktop-only runs never install them.
+WEB_PACKAGES := emscripten node-acorn nlohmann-json3-dev chromium
+
 JOBS    ?= 2
 EXAMPLE ?= assets/funnel_cube.nome
 RELEASE := build/release
@@ -24,7 +27,7 @@ GALLERY_SIZE ?= 640x480
 PREFIX     ?= /usr/local
 PACKAGEDIR := build/package
 
-.PHONY: gltf-validator run test sanitize-full deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery layers \
+.PHONY: web web-deps serve web-test gltf-validator run test sanitize-full deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery layers \
         install package package-test icon hardening mutants
 
 deps:
@@ -33,6 +36,53 @@ deps:
 	  echo "Installing missing packages:$$missing"; \
 	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
 	fi
+
+# The web page: the same kernel and viewer through Debian's Emscripten, ImGui from Debian's source package
+# (a deb-src entry for bookworm main is added when missing), in two builds: one thread, and pthreads for a
+# page served with cross-origin isolation (make serve). Debian's emscripten finds its JS optimizer's acorn
+# through NODE_PATH; its HTML output step fails, so the page is web/page's own.
+WEBDIR     := build/web
+IMGUI_SRC  := build/web-deps/imgui-1.86
+WEB_SCENES := build/web-deps/scenes
+WEB_PORT   ?= 8040
+EMSDK_ENV  := NODE_PATH=/usr/share/nodejs
+WEB_CMAKE  := -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON -DNOME_IMGUI_SOURCE_DIR=$(CURDIR)/$(IMGUI_SRC) \
+              -DNOME_WEB_SCENES=$(CURDIR)/$(WEB_SCENES)
+web-deps:
+	@missing=""; for p in $(WEB_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "Installing missing packages:$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	fi
+	@if [ ! -f $(IMGUI_SRC)/imgui.cpp ]; then \
+	  if ! grep -rqs "deb-src" /etc/apt/sources.list /etc/apt/sources.list.d/; then \
+	    printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
+	      > /etc/apt/sources.list.d/nome-deb-src.sources; \
+	    apt-get update -qq; \
+	  fi; \
+	  mkdir -p build/web-deps && cd build/web-deps && apt-get source --download-only -qq imgui=1.86+ds-1 2>/dev/null \
+	    && tar xf imgui_1.86+ds.orig.tar.xz; \
+	fi
+	@test -f $(IMGUI_SRC)/imgui.cpp || { echo "ImGui 1.86's sources could not be fetched (apt-get source imgui)"; exit 1; }
+	@rm -rf $(WEB_SCENES) && mkdir -p $(WEB_SCENES)
+	@cp assets/*.nome assets/*.obj assets/*.stl assets/*.sif assets/*.slf $(WEB_SCENES)/ 2>/dev/null || true
+	@if [ -d ../shared/examples/jipcad ]; then mkdir -p $(WEB_SCENES)/jipcad && cp ../shared/examples/jipcad/*.nom $(WEB_SCENES)/jipcad/; fi
+
+web: web-deps
+	$(EMSDK_ENV) emcmake cmake -S . -B build/web-one $(WEB_CMAKE) >/dev/null
+	$(EMSDK_ENV) cmake --build build/web-one -j$(JOBS)
+	$(EMSDK_ENV) emcmake cmake -S . -B build/web-threads $(WEB_CMAKE) -DNOME_WEB_THREADS=ON \
+	  -DCMAKE_CXX_FLAGS=-pthread -DCMAKE_C_FLAGS=-pthread >/dev/null
+	$(EMSDK_ENV) cmake --build build/web-threads -j$(JOBS)
+	@rm -rf $(WEBDIR) && mkdir -p $(WEBDIR)
+	@cp web/page/* build/web-one/web/nome.js build/web-one/web/nome.wasm build/web-one/web/nome.data \
+	  build/web-threads/web/nome-threads.* $(WEBDIR)/
+	@cd $(WEB_SCENES) && find . -type f | sed 's#^\./##' | sort | python3 -c 'import json,sys; print(json.dumps(sys.stdin.read().splitlines()))' \
+	  > $(CURDIR)/$(WEBDIR)/scenes.json
+	@echo "Built $(WEBDIR): $$(du -h $(WEBDIR)/nome.wasm | cut -f1) nome.wasm; \`make serve\` serves it"
+
+serve: web
+	python3 web/serve.py $(WEBDIR) $(WEB_PORT)
 
 # A unity build, grouped as the test build below: a fresh clone's first picture in about half the time of
 # compiling its files one by one (docs/architecture.md).

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,12 @@ class Platform {
   virtual void set_title(const std::string& title) = 0;
   // The monitor's scale for text and sizes (HiDPI: 2 on a screen of twice the usual density).
   virtual float content_scale() const = 0;
+  // Where files live outside the program's own file system (a web page: the user's disk), the platform
+  // shows its own picker for File > Open and returns true; false leaves it to the window's file dialog.
+  virtual bool pick_file_to_open() { return false; }
+  // A file the user just saved or exported: a web page offers it as a download; on a desktop it is on
+  // disk already.
+  virtual void offer_saved_file(const std::filesystem::path&) {}
 };
 
 // This frame's input from ImGui's IO (which its GLFW backend fills); needs a frame begun.

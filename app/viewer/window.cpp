@@ -151,6 +151,11 @@ void Window::handle_mouse(const InputFrame& input) {
 
 // ---------------------------------------------------------------------------------------------- files
 
+void Window::run_script(const std::string& text, const std::string& origin) {
+  script_.append(origin, parse_script(text, origin));
+  log_.set_echo(true);
+}
+
 bool Window::drop(const std::vector<std::filesystem::path>& paths) {
   std::vector<std::filesystem::path> files, anoms;
   for (const std::filesystem::path& path : paths) (is_anom_file(path) ? anoms : files).push_back(path);

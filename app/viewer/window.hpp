@@ -69,6 +69,9 @@ class Window : private ScriptHost {
   // opens, as there is one document per window, then the .anom files apply to it. Returns whether each
   // opened or applied (or waits for the unsaved-changes answer).
   bool drop(const std::vector<std::filesystem::path>& paths) override;
+  // Script commands from outside the window (a web page's call): parsed now, run one a frame after those
+  // queued; the log echoes from now on. Throws InvalidInputError for text that is not a script.
+  void run_script(const std::string& text, const std::string& origin);
 
   // What tests look at.
   const MessageLog& log() const { return log_; }

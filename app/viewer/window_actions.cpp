@@ -49,7 +49,11 @@ void Window::bind_file_actions() {
       request_open(sessions_.recent().files()[i]);
       return true;
     });
-  actions_.bind(Action::save, [this] { return sessions_.save_logged(std::nullopt); });
+  actions_.bind(Action::save, [this] {
+    if (!sessions_.save_logged(std::nullopt)) return false;
+    platform_.offer_saved_file(sessions_.path());
+    return true;
+  });
 }
 
 // The view: zoom, what is drawn and how, the camera's presets, screenshots.
@@ -125,6 +129,7 @@ void Window::open_browser(Action action) {
   const std::filesystem::path path = sessions_.path();
   const std::filesystem::path folder = path.parent_path();
   if (action == Action::open) {
+    if (platform_.pick_file_to_open()) return;
     browser_.open("Open", folder, {".nome", ".anom", ".sif", ".slf", ".obj", ".stl", ".glb", ".ply"}, "Open");
   } else if (action == Action::save_as) {
     if (!sessions_.has_scene()) return;

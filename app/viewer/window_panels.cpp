@@ -183,11 +183,12 @@ void Window::draw_browser() {
   if (!chosen) return;
   if (browser_purpose_ == Action::open)
     request_open(*chosen);
-  else if (browser_purpose_ == Action::save_as)
-    sessions_.save_logged(*chosen);
-  else
+  else if (browser_purpose_ == Action::save_as) {
+    if (sessions_.save_logged(*chosen)) platform_.offer_saved_file(*chosen);
+  } else
     try {
       export_mesh(*chosen);
+      platform_.offer_saved_file(*chosen);
     } catch (const std::exception& e) {
       log_.error(e.what());
     }

@@ -22,6 +22,16 @@ UnsavedAnswer answer_named(const std::string& word) {
 ScriptRunner::ScriptRunner(std::filesystem::path file, std::vector<ScriptCommand> commands)
     : file_(std::move(file)), commands_(std::move(commands)) {}
 
+void ScriptRunner::append(std::filesystem::path file, std::vector<ScriptCommand> commands) {
+  if (is_done()) {
+    commands_.clear();
+    next_ = 0;
+  }
+  file_ = std::move(file);
+  commands_.insert(commands_.end(), std::make_move_iterator(commands.begin()),
+                   std::make_move_iterator(commands.end()));
+}
+
 void ScriptRunner::step(ScriptHost& host, MessageLog& log) {
   if (is_done()) return;
   const ScriptCommand& command = commands_[next_++];

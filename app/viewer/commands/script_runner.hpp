@@ -62,6 +62,8 @@ class ScriptRunner {
   bool has_commands() const { return !commands_.empty(); }
   // Runs the next command.
   void step(ScriptHost& host, MessageLog& log);
+  // Commands that arrive while the window runs (a web page's script calls), run after those still queued.
+  void append(std::filesystem::path file, std::vector<ScriptCommand> commands);
 
  private:
   std::filesystem::path file_;

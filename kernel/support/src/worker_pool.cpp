@@ -35,7 +35,9 @@ std::uint32_t wait_for_change(const std::atomic<std::uint32_t>& value, std::uint
     const std::uint32_t now = value.load(std::memory_order_acquire);
     if (now != old) return now;
     if ((i & 63) == 63 && std::chrono::steady_clock::now() > spin_until) break;
+#if defined(__x86_64__) || defined(__i386__)
     __builtin_ia32_pause();
+#endif
   }
   for (;;) {
     value.wait(old, std::memory_order_acquire);

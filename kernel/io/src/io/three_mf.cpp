@@ -96,28 +96,6 @@ void add_object(PLib3MFModel* model, ObjectArrays& arrays, Index number, const s
 
 }  // namespace
 
-std::optional<LengthUnit> parse_length_unit(std::string_view name) {
-  if (name == "mm") return LengthUnit::millimeter;
-  if (name == "cm") return LengthUnit::centimeter;
-  if (name == "in") return LengthUnit::inch;
-  if (name == "m") return LengthUnit::meter;
-  return std::nullopt;
-}
-
-const char* to_string(LengthUnit unit) {
-  switch (unit) {
-    case LengthUnit::millimeter:
-      return "mm";
-    case LengthUnit::centimeter:
-      return "cm";
-    case LengthUnit::inch:
-      return "in";
-    case LengthUnit::meter:
-      return "m";
-  }
-  return "mm";
-}
-
 void write_3mf(const std::filesystem::path& path, const Mesh& mesh, const ThreeMfOptions& options) {
   PLib3MFModel* raw = nullptr;
   check_lib3mf(lib3mf_createmodel(&raw), nullptr, path, "creating a model");

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -72,7 +71,7 @@ class SurfaceDistance {
       const std::uint64_t key = heap_.back();
       heap_.pop_back();
       const Index v = Index(key);
-      const float d = std::bit_cast<float>(std::uint32_t(key >> 32));
+      const float d = __builtin_bit_cast(float, std::uint32_t(key >> 32));
       if (d > distance_[v]) continue;
       if (d >= bound) break;
       if (stop(v)) {
@@ -97,8 +96,10 @@ class SurfaceDistance {
   std::span<const Index> touched() const { return touched_; }
 
  private:
+  // Non-negative floats order as their bits do, so a key sorts by distance first. The builtin stands in
+  // for std::bit_cast, which the browser build's standard library lacks.
   void push(float d, Index v) {
-    heap_.push_back(std::uint64_t(std::bit_cast<std::uint32_t>(d)) << 32 | v);
+    heap_.push_back(std::uint64_t(__builtin_bit_cast(std::uint32_t, d)) << 32 | v);
     std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
   }
 
