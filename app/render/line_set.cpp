@@ -6,23 +6,17 @@
 
 namespace nome::render {
 
-LineSet::LineSet() {
-  glGenVertexArrays(1, &vao_);
-  glGenBuffers(1, &points_);
+LineSet::LineSet() : points_(vec3_texels, 0) {
+  glGenBuffers(1, &ends_);
   glGenBuffers(1, &colors_);
-  glGenBuffers(1, &indices_);
-  glBindVertexArray(vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, points_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_);
+  vao_ = make_segment_vao(ends_);
   glBindVertexArray(0);
 }
 
 LineSet::~LineSet() {
   glDeleteVertexArrays(1, &vao_);
-  const GLuint buffers[] = {points_, colors_, indices_};
-  glDeleteBuffers(3, buffers);
+  const GLuint buffers[] = {ends_, colors_};
+  glDeleteBuffers(2, buffers);
 }
 
 void LineSet::set(std::span<const glm::vec3> points, std::span<const std::uint32_t> segments,
@@ -34,21 +28,25 @@ void LineSet::set(std::span<const glm::vec3> points, std::span<const std::uint32
   for (std::uint32_t i : segments)
     if (i >= points.size())
       throw InvalidInputError("LineSet::set: segment end " + std::to_string(i) + " past the points");
+  points_.resize(points.size());
+  points_.write(points.data(), points.size());
   glBindVertexArray(vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, points_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(points.size_bytes()), points.data(), GL_DYNAMIC_DRAW);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(segments.size_bytes()), segments.data(), GL_DYNAMIC_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, ends_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(segments.size_bytes()), segments.data(), GL_DYNAMIC_DRAW);
   // Without colours the attribute is off and reads the renderer's constant (alpha 0: the draw's colour).
   if (colors.empty()) {
     glDisableVertexAttribArray(1);
   } else {
+    std::vector<glm::vec4> segment_colors(segments.size() / 2);
+    for (std::size_t s = 0; s < segment_colors.size(); ++s) segment_colors[s] = colors[segments[2 * s]];
     glBindBuffer(GL_ARRAY_BUFFER, colors_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(colors.size_bytes()), colors.data(), GL_DYNAMIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(segment_colors.size() * sizeof(glm::vec4)), segment_colors.data(),
+                 GL_DYNAMIC_DRAW);
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
   }
   glBindVertexArray(0);
-  index_count_ = GLsizei(segments.size());
+  segment_count_ = std::uint32_t(segments.size() / 2);
 }
 
 void LineSet::set_polyline(std::span<const glm::vec3> points, bool is_closed) {

@@ -7,6 +7,8 @@
 #include <glm/vec4.hpp>
 
 #include "render/gl.hpp"
+#include "render/segment_source.hpp"
+#include "render/table_texture.hpp"
 
 namespace nome::render {
 
@@ -27,12 +29,12 @@ class LineSet {
   // Convenience: consecutive points joined, closing the loop when asked.
   void set_polyline(std::span<const glm::vec3> points, bool is_closed);
 
-  GLuint vao() const { return vao_; }
-  GLsizei index_count() const { return index_count_; }
+  SegmentSource segments() const { return {vao_, ends_, points_.id(), {0, segment_count_}}; }
 
  private:
-  GLuint vao_ = 0, points_ = 0, colors_ = 0, indices_ = 0;
-  GLsizei index_count_ = 0;
+  TableTexture points_;
+  GLuint vao_ = 0, ends_ = 0, colors_ = 0;  // colours: one per segment, its first point's
+  std::uint32_t segment_count_ = 0;
 };
 
 }  // namespace nome::render

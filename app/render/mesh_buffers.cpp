@@ -23,17 +23,6 @@ void uint_attribute(GLuint location, GLuint buffer) {
   glVertexAttribIPointer(location, 1, GL_UNSIGNED_INT, 0, nullptr);
 }
 
-// A buffer texture: per-face tables of any length indexed by face id in the fragment shader.
-void make_table(GLuint& buffer, GLuint& texture, GLenum format, std::size_t bytes) {
-  glGenBuffers(1, &buffer);
-  glBindBuffer(GL_TEXTURE_BUFFER, buffer);
-  // An empty buffer texture is undefined to sample: keep one entry.
-  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(bytes, 4)), nullptr, GL_DYNAMIC_DRAW);
-  glGenTextures(1, &texture);
-  glBindTexture(GL_TEXTURE_BUFFER, texture);
-  glTexBuffer(GL_TEXTURE_BUFFER, format, buffer);
-}
-
 // An array of `count` elements of type T per vertex, written by update_positions(): three floats, or a
 // PackedNormal (signed normalized 2_10_10_10_REV, read by the shader as a vec3).
 template <class T>
@@ -57,7 +46,12 @@ void write_array(GLenum target, GLuint buffer, std::size_t first, std::span<cons
 
 }  // namespace
 
-MeshBuffers::MeshBuffers(const MeshDisplayData& data) : topology_(data.topology) {
+MeshBuffers::MeshBuffers(const MeshDisplayData& data)
+    : topology_(data.topology),
+      face_normals_(int_texels, topology_->num_faces),
+      face_colors_(rgba8_texels, topology_->num_faces),
+      face_flags_(byte_texels, topology_->num_faces),
+      edge_points_(vec3_texels, topology_->num_vertices) {
   const DisplayTopology& t = *topology_;
   glGenBuffers(GLsizei(buffers_.size()), buffers_.data());
   glGenVertexArrays(1, &surface_vao_);
@@ -68,19 +62,9 @@ MeshBuffers::MeshBuffers(const MeshDisplayData& data) : topology_(data.topology)
   uint_attribute(2, buffers_[2]);
   upload(GL_ELEMENT_ARRAY_BUFFER, buffers_[3], t.triangles);
 
-  // The wireframe reads the mesh's own vertices, the first of the positions buffer.
-  glGenVertexArrays(1, &edge_vao_);
-  glBindVertexArray(edge_vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  upload(GL_ELEMENT_ARRAY_BUFFER, buffers_[4], t.segments);
+  upload(GL_ARRAY_BUFFER, buffers_[4], t.segments);
+  edge_vao_ = make_segment_vao(buffers_[4]);
   glBindVertexArray(0);
-
-  make_table(face_normal_buffer_, face_normal_texture_, GL_R32I,
-             std::size_t(t.num_faces) * sizeof(PackedNormal));
-  make_table(face_color_buffer_, face_color_texture_, GL_RGBA8, std::size_t(t.num_faces) * 4);
-  make_table(face_flag_buffer_, face_flag_texture_, GL_R8UI, t.num_faces);
   update_positions(*data.positions);
   set_face_colors(data.face_colors);
   set_selected_faces({});
@@ -90,10 +74,6 @@ MeshBuffers::~MeshBuffers() {
   glDeleteVertexArrays(1, &surface_vao_);
   glDeleteVertexArrays(1, &edge_vao_);
   glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
-  const GLuint tables[] = {face_normal_buffer_, face_color_buffer_, face_flag_buffer_};
-  glDeleteBuffers(3, tables);
-  const GLuint textures[] = {face_normal_texture_, face_color_texture_, face_flag_texture_};
-  glDeleteTextures(3, textures);
 }
 
 void MeshBuffers::update_positions(const DisplayPositions& positions) {
@@ -111,8 +91,9 @@ void MeshBuffers::update_positions(const DisplayPositions& positions) {
   write_array<glm::vec3>(GL_ARRAY_BUFFER, buffers_[0], t.num_vertices, positions.extra_vertices);
   write_array<PackedNormal>(GL_ARRAY_BUFFER, buffers_[1], 0, positions.vertex_normals);
   write_array<PackedNormal>(GL_ARRAY_BUFFER, buffers_[1], t.num_vertices, positions.extra_normals);
-  write_array<PackedNormal>(GL_TEXTURE_BUFFER, face_normal_buffer_, 0, positions.face_normals);
+  face_normals_.write(positions.face_normals.data(), positions.face_normals.size());
   bounds_ = positions.bounds;
+  are_edge_points_stale_ = true;
 }
 
 void MeshBuffers::set_face_colors(std::span<const std::array<std::uint8_t, 4>> colors) {
@@ -123,8 +104,7 @@ void MeshBuffers::set_face_colors(std::span<const std::array<std::uint8_t, 4>> c
   has_face_colors_ = std::any_of(colors.begin(), colors.end(), [](const auto& c) { return c[3] > 0; });
   // Without colours the table is never read: a slider on an uncoloured mesh uploads none.
   if (!has_face_colors_ && !had_face_colors) return;
-  glBindBuffer(GL_TEXTURE_BUFFER, face_color_buffer_);
-  glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(colors.size() * 4), colors.data());
+  face_colors_.write(colors.data(), colors.size());
 }
 
 void MeshBuffers::set_selected_faces(std::span<const Index> faces) {
@@ -137,8 +117,18 @@ void MeshBuffers::set_selected_faces(std::span<const Index> faces) {
     flags[f] = 1;
   }
   has_selection_ = !faces.empty();
-  glBindBuffer(GL_TEXTURE_BUFFER, face_flag_buffer_);
-  glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(flags.size()), flags.data());
+  face_flags_.write(flags.data(), flags.size());
+}
+
+GLuint MeshBuffers::edge_points() const {
+  if (are_edge_points_stale_) {
+    // The mesh's own vertices, the first of the positions buffer, copied on the GPU's side.
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, buffers_[0]);
+    edge_points_.write(nullptr, topology_->num_vertices);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    are_edge_points_stale_ = false;
+  }
+  return edge_points_.id();
 }
 
 }  // namespace nome::render

@@ -9,14 +9,17 @@
 #include "nome/mesh/types.hpp"
 #include "render/gl.hpp"
 #include "render/mesh_display_data.hpp"
+#include "render/segment_source.hpp"
+#include "render/table_texture.hpp"
 
 namespace nome::render {
 
 // A mesh on the GPU: its topology (GL vertices carrying a face id, triangles, edge segments), positions and
-// normals as vertex arrays, and three per-face tables read through buffer textures (normal, colour,
-// selection flags). Positions, normals and tables are updated in place (glBufferSubData into the buffers
-// already there): a slider that moves vertices uploads three floats and a packed normal per vertex and a
-// packed normal per face, nothing per corner. Needs a current context for its whole life.
+// normals as vertex arrays, and three per-face tables (normal, colour, selection flags; table textures).
+// Positions, normals and tables are updated in place (into the buffers and textures already there): a
+// slider that moves vertices uploads three floats and a packed normal per vertex and a packed normal per
+// face, nothing per corner. The edges read the mesh's vertices from a table of their own, copied from the
+// positions on the GPU's side when edges are drawn. Needs a current context for its whole life.
 class MeshBuffers {
  public:
   explicit MeshBuffers(const MeshDisplayData& data);
@@ -34,7 +37,6 @@ class MeshBuffers {
   void set_selected_faces(std::span<const Index> faces);
 
   GLuint surface_vao() const { return surface_vao_; }
-  GLuint edge_vao() const { return edge_vao_; }
   GLsizei triangle_index_count() const { return GLsizei(topology_->triangles.size()); }
   SegmentRange all_edges() const { return topology_->all_edges; }
   SegmentRange mobius_edges() const { return topology_->mobius_edges; }
@@ -42,20 +44,27 @@ class MeshBuffers {
   // Whether some face has a colour of its own / is selected: else the fragments skip those tables.
   bool has_face_colors() const { return has_face_colors_; }
   bool has_selection() const { return has_selection_; }
-  GLuint face_color_texture() const { return face_color_texture_; }
-  GLuint face_flag_texture() const { return face_flag_texture_; }
-  // A PackedNormal per face (an R32I buffer texture, unpacked by the shader).
-  GLuint face_normal_texture() const { return face_normal_texture_; }
+  GLuint face_color_texture() const { return face_colors_.id(); }
+  GLuint face_flag_texture() const { return face_flags_.id(); }
+  // A PackedNormal per face (an R32I table, unpacked by the shader).
+  GLuint face_normal_texture() const { return face_normals_.id(); }
+  // These segments of the topology's, over the current positions.
+  SegmentSource edges(SegmentRange range) const { return {edge_vao_, buffers_[4], edge_points(), range}; }
   const BoundingBox& bounds() const { return bounds_; }
 
  private:
+  GLuint edge_points() const;
+
   std::shared_ptr<const DisplayTopology> topology_;
 
   GLuint surface_vao_ = 0, edge_vao_ = 0;
   // positions, vertex normals, vertex faces, triangles, segments
   std::array<GLuint, 5> buffers_{};
-  GLuint face_normal_buffer_ = 0, face_color_buffer_ = 0, face_flag_buffer_ = 0;
-  GLuint face_normal_texture_ = 0, face_color_texture_ = 0, face_flag_texture_ = 0;
+  TableTexture face_normals_, face_colors_, face_flags_;
+  // The edges' points, brought up to date by the first draw of edges after the vertices moved: a slider
+  // without the wireframe pays nothing for them.
+  TableTexture edge_points_;
+  mutable bool are_edge_points_stale_ = true;
   bool has_face_colors_ = false, has_selection_ = false;
   BoundingBox bounds_;
 };

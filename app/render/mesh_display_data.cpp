@@ -62,11 +62,10 @@ class GlVertices {
   std::vector<std::uint32_t> negative_;  // per mesh vertex, its turned-round copy
 };
 
-// The triangles over GL vertices, each starting with a vertex that carries its face's id: the face's
-// first corner for the triangles that start there (all of a fan's), else the triangle's own first vertex,
-// repeated where it carries another face. The triangles keep their corners' order: a rotation would change
-// the rasteriser's tie-breaks between coinciding triangles (a degenerate immersion such as the projective
-// plane's).
+// The triangles over GL vertices, each ending with a vertex that carries its face's id (GLES takes flat
+// inputs from the last vertex): the face's first corner for the triangles that start there (all of a
+// fan's), else the triangle's own first vertex, repeated where it carries another face. The corners turn
+// once, keeping the winding.
 void provoking_triangles(const Mesh& mesh, const DisplayTriangles& triangles, DisplayTopology& out) {
   GlVertices vertices(mesh, out);
   resize_for_overwrite(out.triangles, std::size_t(triangles.size()) * 3);
@@ -77,9 +76,9 @@ void provoking_triangles(const Mesh& mesh, const DisplayTriangles& triangles, Di
     const std::uint32_t apex = vertices.carrier(vertices.of_corner(start), f);
     for (; t < triangles.size() && triangles.faces[t] == f; ++t, gl += 3) {
       const auto& c = triangles.corners[t];
-      gl[0] = c[0] == start ? apex : vertices.carrier(vertices.of_corner(c[0]), f);
-      gl[1] = vertices.of_corner(c[1]);
-      gl[2] = vertices.of_corner(c[2]);
+      gl[0] = vertices.of_corner(c[1]);
+      gl[1] = vertices.of_corner(c[2]);
+      gl[2] = c[0] == start ? apex : vertices.carrier(vertices.of_corner(c[0]), f);
     }
   }
 }
@@ -144,23 +143,22 @@ void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, 
   resize_for_overwrite(out.extra_normals, extra.size());
   const bool is_large = threads > 1 && positions.size() >= (1u << 16);
   if (normals == DisplayNormals::computed) {
-    // A large mesh's positions are rounded beside the vertex normals' gather.
-    std::jthread helper;
+    // A large mesh's positions are rounded beside the vertex normals' gather. std::thread, not
+    // std::jthread: Emscripten's C++ library has none.
+    std::thread helper;
     if (is_large)
-      helper =
-          std::jthread([&] { out.bounds = round_positions(positions, out.vertices, 0, positions.size()); });
+      helper = std::thread([&] { out.bounds = round_positions(positions, out.vertices, 0, positions.size()); });
     else
       out.bounds = round_positions(positions, out.vertices, 0, positions.size());
     compute_packed_vertex_normals(mesh, out.face_normals, out.vertex_normals, threads);
+    if (helper.joinable()) helper.join();
   } else if (is_large) {
     // Only the rounding is left: half each.
     const std::size_t half = positions.size() / 2;
     BoundingBox second;
-    {
-      const std::jthread helper(
-          [&] { second = round_positions(positions, out.vertices, half, positions.size()); });
-      out.bounds = round_positions(positions, out.vertices, 0, half);
-    }
+    std::thread helper([&] { second = round_positions(positions, out.vertices, half, positions.size()); });
+    out.bounds = round_positions(positions, out.vertices, 0, half);
+    helper.join();
     out.bounds.add(second.min);
     out.bounds.add(second.max);
   } else {

@@ -24,8 +24,8 @@ struct SegmentRange {
 // shared by the triangles around it (llvmpipe shades it about once, not once per corner), plus extra
 // vertices: a second one with the normal turned round where a vertex's fan crosses a Möbius edge (the
 // corners of negative sign: the smooth normal follows each face's own orientation), and repeats that
-// carry a face id. Each triangle starts with a vertex that carries its face id (the provoking vertex, by
-// the first-vertex convention: the fragment shader reads it as a flat input, for the face's colour,
+// carry a face id. Each triangle ends with a vertex that carries its face id (the provoking vertex, by
+// the last-vertex convention, GLES' only one: the fragment shader reads it as a flat input, for the face's colour,
 // selection and normal; gl_PrimitiveID would cost llvmpipe a copy of every triangle's vertices). Segments:
 // the mesh's real edges over its vertices: all edges, the Möbius ones, the border ones.
 struct DisplayTopology {
@@ -33,7 +33,7 @@ struct DisplayTopology {
   // turned round where corner_sign_bit is set.
   Buffer<std::uint32_t> extra_vertices;
   Buffer<std::uint32_t> vertex_faces;  // per GL vertex: the face of the triangles it starts
-  Buffer<std::uint32_t> triangles;     // three GL vertex ids each, the face's own vertex first
+  Buffer<std::uint32_t> triangles;     // three GL vertex ids each, the face's own vertex last
   Buffer<std::uint32_t> segments;      // two vertex ids each
   SegmentRange all_edges, mobius_edges, border_edges;
   std::uint32_t num_faces = 0;

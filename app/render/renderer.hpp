@@ -10,11 +10,12 @@
 #include "render/display_settings.hpp"
 #include "render/line_set.hpp"
 #include "render/mesh_buffers.hpp"
+#include "render/shader_program.hpp"
 
 namespace nome::render {
 
 // Draws meshes and overlays with the shaders in shaders/ into whatever framebuffer is bound: the
-// window's (viewer) or an offscreen one (`nome render`, tests). Needs a current GL 3.3 core context.
+// window's (viewer) or an offscreen one (`nome render`, tests). Needs a current GL 3.3 core or GLES 3.0 (WebGL2) context.
 // Each shader program compiles on its first use; a shader that does not compile throws Error from
 // that draw call, with the compiler's log.
 class Renderer {
@@ -30,7 +31,7 @@ class Renderer {
     static Frame of(const Camera& camera, glm::ivec2 origin, glm::ivec2 size);
   };
 
-  Renderer();
+  explicit Renderer(GlslDialect dialect = built_dialect);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -43,7 +44,7 @@ class Renderer {
   void draw_cubes(const CubeSet& cubes, const Frame& frame) const;
 
  private:
-  void draw_segments(GLuint vao, SegmentRange range, const Frame& frame, const glm::vec4& color,
+  void draw_segments(const SegmentSource& segments, const Frame& frame, const glm::vec4& color,
                      float width) const;
 
   struct Programs;

@@ -8,6 +8,16 @@
 namespace nome::render {
 namespace {
 
+// One set of sources for both languages, which differ in their first lines: GLSL ES has no default
+// precision for floats in fragment shaders nor for integer samplers.
+const char* prelude(GlslDialect dialect) {
+  return dialect == GlslDialect::es ? "#version 300 es\n"
+                                      "precision highp float;\nprecision highp int;\n"
+                                      "precision highp sampler2D;\nprecision highp isampler2D;\n"
+                                      "precision highp usampler2D;\n"
+                                    : "#version 330 core\n";
+}
+
 std::string info_log(GLuint object, bool is_program) {
   GLint length = 0;
   is_program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
@@ -22,14 +32,14 @@ std::string info_log(GLuint object, bool is_program) {
 }  // namespace
 
 ShaderProgram::ShaderProgram(const std::string& name, const std::vector<ShaderStage>& stages,
-                             const std::string& defines) {
+                             const std::string& defines, GlslDialect dialect) {
   const auto folders = shader_search_path();
   std::vector<GLuint> shaders;
   auto release = [&] {
     for (GLuint s : shaders) glDeleteShader(s);
   };
   for (const ShaderStage& stage : stages) {
-    std::string text = "#version 330 core\n" + defines;
+    std::string text = prelude(dialect) + defines;
     std::string origins;
     for (const std::string& file : stage.files) {
       const ShaderSource source = find_shader_source(file, folders);

@@ -42,14 +42,14 @@ TEST_CASE("display data: real edges, Möbius and border edges, triangles over sh
     if (e.is_mobius) mobius_pairs.insert({e.vertices[0], e.vertices[1]});
   for (std::uint32_t s = t.mobius_edges.first; s < t.mobius_edges.first + t.mobius_edges.count; ++s)
     CHECK(mobius_pairs.count({t.segments[2 * s], t.segments[2 * s + 1]}) == 1);
-  // Each triangle is the picking triangle's corners, turned so that its first vertex carries its face;
+  // Each triangle is the picking triangle's corners, turned so that its last vertex carries its face;
   // each vertex carries the corner's sign: a Möbius band has vertices of both signs.
   const DisplayTriangles triangles = display_triangles(band);
   REQUIRE(t.triangles.size() == 3 * std::size_t(triangles.size()));
   REQUIRE(t.vertex_faces.size() == t.num_gl_vertices());
   for (Index k = 0; k < triangles.size(); ++k) {
     const std::uint32_t* gl = &t.triangles[3 * std::size_t(k)];
-    CHECK(t.vertex_faces[gl[0]] == triangles.faces[k]);
+    CHECK(t.vertex_faces[gl[2]] == triangles.faces[k]);
     int matching_turns = 0;
     for (int turn = 0; turn < 3; ++turn) {
       bool same = true;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "render/framebuffer.hpp"
+#include "render/image_diff.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/render_support.hpp"
 #include "render/renderer.hpp"
@@ -164,7 +165,7 @@ TEST_CASE("the mesh shader compiles and draws for every set of features", "[rend
   GridView view;
   auto& [context, renderer, grid, buffers, framebuffer, frame] = view;
   const std::array<std::uint8_t, 4> plain{0, 0, 0, 0}, red{255, 0, 0, 255};
-  for (unsigned features = 0; features < 32; ++features) {
+  for (unsigned features = 0; features < 64; ++features) {
     INFO("features " << features);
     render::DisplaySettings settings;
     settings.shading = features & 1u ? render::Shading::flat : render::Shading::smooth;
@@ -173,11 +174,54 @@ TEST_CASE("the mesh shader compiles and draws for every set of features", "[rend
     buffers.set_face_colors(colors);
     buffers.set_selected_faces(features & 8u ? std::vector<Index>{1} : std::vector<Index>{});
     settings.fills_section = features & 16u;
-    settings.section_plane = features & 16u ? glm::vec4(-1.0f, 0.0f, 0.0f, 0.5f) : glm::vec4(0.0f);
+    settings.section_plane = features & 48u ? glm::vec4(-1.0f, 0.0f, 0.0f, 0.5f) : glm::vec4(0.0f);
     renderer.begin(frame, settings.background);
     CHECK_NOTHROW(renderer.draw_mesh(buffers, frame, settings));
     const render::Image image = framebuffer.read(false);
     const int drawn = count_pixels(image, [](const std::uint8_t* p) { return p[0] < 250 || p[2] < 250; });
     CHECK(drawn > 1000);
+  }
+}
+
+TEST_CASE("the web's shaders (GLSL ES 3.00) draw what the desktop's draw", "[render]") {
+  // Mesa's desktop context compiles GLSL ES 3.00 as well: every program the web build uses, drawn here.
+  const render::OffscreenContext context;
+  const render::Framebuffer framebuffer(200, 150);
+  framebuffer.bind();
+  const Mesh band = build_mesh(test::mobius_band(24, 3));
+  render::MeshBuffers buffers(render::build_display_data(band));
+  const Index selected[] = {2, 3};
+  buffers.set_selected_faces(selected);
+  std::vector<std::array<std::uint8_t, 4>> colors(band.num_faces(), {0, 0, 0, 0});
+  colors[5] = {40, 200, 90, 255};
+  buffers.set_face_colors(colors);
+  render::LineSet lines;
+  const glm::vec3 points[] = {{-1.0f, 0.0f, 0.0f}, {1.0f, 0.2f, 0.3f}, {0.0f, 1.0f, 0.0f}};
+  const std::uint32_t segments[] = {0, 1, 1, 2};
+  const glm::vec4 line_colors[] = {{1.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f, 1.0f}};
+  lines.set(points, segments, line_colors);
+  render::CubeSet cubes;
+  const render::CubeMarker marker{{0.0f, 0.0f, 0.0f}, 0.1f, {0.0f, 0.0f, 1.0f}};
+  cubes.set({&marker, 1});
+  render::Camera camera;
+  camera.set_view(30, 25);
+  camera.fit(band.positions(), 200.0 / 150.0);
+  const auto frame = render::Renderer::Frame::of(camera, {0, 0}, {200, 150});
+  for (const bool is_cut : {false, true}) {
+    render::DisplaySettings settings;
+    settings.shading = is_cut ? render::Shading::flat : render::Shading::smooth;
+    settings.draws_wireframe = settings.draws_borders = settings.draws_mobius_edges = true;
+    settings.section_plane = is_cut ? glm::vec4(1.0f, 0.0f, 0.0f, -0.2f) : glm::vec4(0.0f);
+    settings.fills_section = is_cut;
+    auto draw = [&](render::GlslDialect dialect) {
+      const render::Renderer renderer(dialect);
+      renderer.begin(frame, settings.background);
+      renderer.draw_mesh(buffers, frame, settings);
+      renderer.draw_lines(lines, frame, {0.0f, 1.0f, 0.0f, 1.0f}, 4.0f);
+      renderer.draw_cubes(cubes, frame);
+      return framebuffer.read(false);
+    };
+    const render::Image desktop = draw(render::GlslDialect::desktop);
+    CHECK(render::compare_images(desktop, draw(render::GlslDialect::es), 2).differing_pixels == 0);
   }
 }
