@@ -40,8 +40,8 @@ void LineSet::set(std::span<const glm::vec3> points, std::span<const std::uint32
     std::vector<glm::vec4> segment_colors(segments.size() / 2);
     for (std::size_t s = 0; s < segment_colors.size(); ++s) segment_colors[s] = colors[segments[2 * s]];
     glBindBuffer(GL_ARRAY_BUFFER, colors_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(segment_colors.size() * sizeof(glm::vec4)), segment_colors.data(),
-                 GL_DYNAMIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(segment_colors.size() * sizeof(glm::vec4)),
+                 segment_colors.data(), GL_DYNAMIC_DRAW);
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
   }

@@ -147,7 +147,8 @@ void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, 
     // std::jthread: Emscripten's C++ library has none.
     std::thread helper;
     if (is_large)
-      helper = std::thread([&] { out.bounds = round_positions(positions, out.vertices, 0, positions.size()); });
+      helper =
+          std::thread([&] { out.bounds = round_positions(positions, out.vertices, 0, positions.size()); });
     else
       out.bounds = round_positions(positions, out.vertices, 0, positions.size());
     compute_packed_vertex_normals(mesh, out.face_normals, out.vertex_normals, threads);

@@ -25,9 +25,9 @@ struct SegmentRange {
 // vertices: a second one with the normal turned round where a vertex's fan crosses a Möbius edge (the
 // corners of negative sign: the smooth normal follows each face's own orientation), and repeats that
 // carry a face id. Each triangle ends with a vertex that carries its face id (the provoking vertex, by
-// the last-vertex convention, GLES' only one: the fragment shader reads it as a flat input, for the face's colour,
-// selection and normal; gl_PrimitiveID would cost llvmpipe a copy of every triangle's vertices). Segments:
-// the mesh's real edges over its vertices: all edges, the Möbius ones, the border ones.
+// the last-vertex convention, GLES' only one: the fragment shader reads it as a flat input, for the face's
+// colour, selection and normal; gl_PrimitiveID would cost llvmpipe a copy of every triangle's vertices).
+// Segments: the mesh's real edges over its vertices: all edges, the Möbius ones, the border ones.
 struct DisplayTopology {
   // GL vertex num_vertices + i repeats mesh vertex extra_vertices[i] & ~corner_sign_bit, its normal
   // turned round where corner_sign_bit is set.

@@ -13,9 +13,9 @@ namespace nome::render {
 namespace {
 
 // The features of mesh.frag, one bit each in a variant's number.
-constexpr std::array<const char*, 7> mesh_features = {"FLAT_NORMALS", "DIFFERENT_BACK_COLOR", "FACE_COLORS",
-                                                      "SELECTION",    "SECTION",              "FILLS_SECTION",
-                                                      "SCENE_LIGHTS"};
+constexpr std::array<const char*, 7> mesh_features = {
+    "FLAT_NORMALS", "DIFFERENT_BACK_COLOR", "FACE_COLORS", "SELECTION",
+    "SECTION",      "FILLS_SECTION",        "SCENE_LIGHTS"};
 
 // Defines the programs that read table textures need (shaders/tables.glsl).
 const std::string table_defines = "#define TABLE_WIDTH_BITS " + std::to_string(table_width_bits) + "\n";
@@ -66,8 +66,9 @@ struct Renderer::Programs {
   const ShaderProgram& cubes() {
     if (!cubes_)
       cubes_ = std::make_unique<ShaderProgram>(
-          "cubes", std::vector<ShaderStage>{{GL_VERTEX_SHADER, {"cubes.vert"}},
-                                            {GL_FRAGMENT_SHADER, {"lighting.glsl", "cubes.frag"}}},
+          "cubes",
+          std::vector<ShaderStage>{{GL_VERTEX_SHADER, {"cubes.vert"}},
+                                   {GL_FRAGMENT_SHADER, {"lighting.glsl", "cubes.frag"}}},
           std::string(), dialect_);
     return *cubes_;
   }
@@ -185,8 +186,9 @@ void Renderer::draw_segments(const SegmentSource& segments, const Frame& frame, 
   glBindVertexArray(segments.vao);
   // GLES has no base instance: the ends attribute starts at the range's first segment.
   glBindBuffer(GL_ARRAY_BUFFER, segments.ends);
-  glVertexAttribIPointer(0, 2, GL_UNSIGNED_INT, 0,
-                         reinterpret_cast<void*>(std::size_t(segments.range.first) * 2 * sizeof(std::uint32_t)));
+  glVertexAttribIPointer(
+      0, 2, GL_UNSIGNED_INT, 0,
+      reinterpret_cast<void*>(std::size_t(segments.range.first) * 2 * sizeof(std::uint32_t)));
   // Sets without their own colours read this constant for the colour attribute: the uniform wins.
   glVertexAttrib4f(1, 0.0f, 0.0f, 0.0f, 0.0f);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(segments.range.count));

@@ -15,9 +15,9 @@
 namespace nome::render {
 
 // Draws meshes and overlays with the shaders in shaders/ into whatever framebuffer is bound: the
-// window's (viewer) or an offscreen one (`nome render`, tests). Needs a current GL 3.3 core or GLES 3.0 (WebGL2) context.
-// Each shader program compiles on its first use; a shader that does not compile throws Error from
-// that draw call, with the compiler's log.
+// window's (viewer) or an offscreen one (`nome render`, tests). Needs a current GL 3.3 core or GLES 3.0
+// (WebGL2) context. Each shader program compiles on its first use; a shader that does not compile throws
+// Error from that draw call, with the compiler's log.
 class Renderer {
  public:
   // One frame's (or one tile's) view: where in the framebuffer, and through which camera.

@@ -30,8 +30,8 @@ void TableTexture::resize(std::size_t count) {
     throw Error("TableTexture::resize: " + std::to_string(count) + " elements need " + std::to_string(rows) +
                 " rows, the GPU takes " + std::to_string(max_size));
   glBindTexture(GL_TEXTURE_2D, texture_);
-  glTexImage2D(GL_TEXTURE_2D, 0, GLint(format_.internal_format), GLsizei(table_width), rows, 0, format_.format,
-               format_.type, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(format_.internal_format), GLsizei(table_width), rows, 0,
+               format_.format, format_.type, nullptr);
   rows_ = rows;
 }
 

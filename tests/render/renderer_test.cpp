@@ -198,7 +198,8 @@ TEST_CASE("the web's shaders (GLSL ES 3.00) draw what the desktop's draw", "[ren
   render::LineSet lines;
   const glm::vec3 points[] = {{-1.0f, 0.0f, 0.0f}, {1.0f, 0.2f, 0.3f}, {0.0f, 1.0f, 0.0f}};
   const std::uint32_t segments[] = {0, 1, 1, 2};
-  const glm::vec4 line_colors[] = {{1.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f, 1.0f}};
+  const glm::vec4 line_colors[] = {
+      {1.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f, 1.0f}};
   lines.set(points, segments, line_colors);
   render::CubeSet cubes;
   const render::CubeMarker marker{{0.0f, 0.0f, 0.0f}, 0.1f, {0.0f, 0.0f, 1.0f}};
