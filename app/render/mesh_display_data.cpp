@@ -8,6 +8,7 @@
 #include "nome/error.hpp"
 #include "nome/mesh/normals.hpp"
 #include "nome/query/display_triangles.hpp"
+#include "nome/stop_token.hpp"
 
 namespace nome::render {
 namespace {
@@ -143,23 +144,22 @@ void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, 
   resize_for_overwrite(out.extra_normals, extra.size());
   const bool is_large = threads > 1 && positions.size() >= (1u << 16);
   if (normals == DisplayNormals::computed) {
-    // A large mesh's positions are rounded beside the vertex normals' gather. std::thread, not
-    // std::jthread: Emscripten's C++ library has none.
-    std::thread helper;
+    // A large mesh's positions are rounded beside the vertex normals' gather.
+    jthread helper;
     if (is_large)
-      helper =
-          std::thread([&] { out.bounds = round_positions(positions, out.vertices, 0, positions.size()); });
+      helper = jthread([&] { out.bounds = round_positions(positions, out.vertices, 0, positions.size()); });
     else
       out.bounds = round_positions(positions, out.vertices, 0, positions.size());
     compute_packed_vertex_normals(mesh, out.face_normals, out.vertex_normals, threads);
-    if (helper.joinable()) helper.join();
   } else if (is_large) {
     // Only the rounding is left: half each.
     const std::size_t half = positions.size() / 2;
     BoundingBox second;
-    std::thread helper([&] { second = round_positions(positions, out.vertices, half, positions.size()); });
-    out.bounds = round_positions(positions, out.vertices, 0, half);
-    helper.join();
+    {
+      const jthread helper(
+          [&] { second = round_positions(positions, out.vertices, half, positions.size()); });
+      out.bounds = round_positions(positions, out.vertices, 0, half);
+    }
     out.bounds.add(second.min);
     out.bounds.add(second.max);
   } else {
