@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "nome/number_text.hpp"
+
 namespace nome::cli {
 
 std::vector<OptionSpec> print_setup_options() {
@@ -28,7 +30,7 @@ double millimeters_per(LengthUnit unit) {
 
 double length_in_mm(const std::string& text, const std::string& option) {
   double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  const auto [end, error] = number_from_chars(text.data(), text.data() + text.size(), value);
   const std::string unit_text(end, text.data() + text.size());
   const std::optional<LengthUnit> unit =
       unit_text.empty() ? std::optional(LengthUnit::millimeter) : parse_length_unit(unit_text);

@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -11,6 +10,7 @@
 #include "nome/io/obj.hpp"
 #include "nome/io/ply.hpp"
 #include "nome/io/stl.hpp"
+#include "nome/number_text.hpp"
 #include "nome/query/pick.hpp"
 #include "viewer/window.hpp"
 
@@ -288,7 +288,7 @@ void Window::apply_setting(const std::string& name, const std::string& value) {
   } else {
     double weight = infinite_sharpness;
     const char* end = value.data() + value.size();
-    const bool is_number = value != "infinite" && std::from_chars(value.data(), end, weight).ptr == end;
+    const bool is_number = value != "infinite" && number_from_chars(value.data(), end, weight).ptr == end;
     if (value != "infinite" && !(is_number && weight >= 0)) refuse("a weight of 0 or more, or infinite");
     sharpness_ = float(std::min(weight, double(infinite_sharpness)));
   }

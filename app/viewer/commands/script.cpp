@@ -1,10 +1,10 @@
 #include "viewer/commands/script.hpp"
 
-#include <charconv>
 #include <fstream>
 #include <sstream>
 
 #include "nome/error.hpp"
+#include "nome/number_text.hpp"
 #include "viewer/commands/actions.hpp"
 
 namespace nome::viewer {
@@ -33,7 +33,7 @@ std::vector<Word> split(const std::string& line) {
 
 bool parse_number(const std::string& s, double& out) {
   const char* end = s.data() + s.size();
-  const auto result = std::from_chars(s.data(), end, out);
+  const auto result = number_from_chars(s.data(), end, out);
   return result.ec == std::errc() && result.ptr == end;
 }
 

@@ -4,6 +4,7 @@
 #include "io/surface_views.hpp"
 #include "nome/atomic_file.hpp"
 #include "nome/io/obj.hpp"
+#include "nome/number_text.hpp"
 
 namespace nome {
 namespace {
@@ -11,9 +12,9 @@ namespace {
 // Room for a vertex line: "v", three numbers of up to 32 bytes, spaces, newline.
 constexpr std::size_t longest_line = 104;
 
-// Positions as printf's %.17g (to_chars with a precision is specified to match it).
+// Positions as printf's %.17g.
 char* put_double(char* at, double value) {
-  return std::to_chars(at, at + 32, value, std::chars_format::general, 17).ptr;
+  return general_to_chars(at, at + 32, value, 17).ptr;
 }
 
 char* put_index(char* at, Index value) {

@@ -1,13 +1,13 @@
 #include "nome/mesh/named_sharp_edge.hpp"
 
-#include <charconv>
+#include "nome/number_text.hpp"
 
 namespace nome {
 
 std::string sharpness_text(float weight) {
   if (weight >= infinite_sharpness) return "infinite";
   char text[32];
-  return std::string(text, std::to_chars(text, text + sizeof text, weight).ptr);
+  return std::string(text, shortest_to_chars(text, text + sizeof text, weight).ptr);
 }
 
 }  // namespace nome

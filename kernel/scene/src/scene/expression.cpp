@@ -1,9 +1,10 @@
 #include "nome/scene/expression.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <numbers>
+
+#include "nome/number_text.hpp"
 
 namespace nome::scene {
 namespace {
@@ -219,7 +220,7 @@ double evaluate(const ExpressionPool& pool, const Value& value, std::span<const 
 
 std::string format_number(double x) {
   char buffer[64];
-  const auto r = std::to_chars(buffer, buffer + sizeof buffer, x);
+  const auto r = shortest_to_chars(buffer, buffer + sizeof buffer, x);
   return std::string(buffer, r.ptr);
 }
 
