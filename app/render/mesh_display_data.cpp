@@ -9,6 +9,7 @@
 #include "nome/mesh/normals.hpp"
 #include "nome/query/display_triangles.hpp"
 #include "nome/stop_token.hpp"
+#include "nome/thread_support.hpp"
 
 namespace nome::render {
 namespace {
@@ -142,7 +143,8 @@ void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, 
   resize_for_overwrite(out.vertices, positions.size());
   resize_for_overwrite(out.extra_vertices, extra.size());
   resize_for_overwrite(out.extra_normals, extra.size());
-  const bool is_large = threads > 1 && positions.size() >= (1u << 16);
+  // Where no helper thread can start, this thread rounds all positions: the same bounds as two halves.
+  const bool is_large = threads > 1 && positions.size() >= (1u << 16) && can_start_threads();
   if (normals == DisplayNormals::computed) {
     // A large mesh's positions are rounded beside the vertex normals' gather.
     jthread helper;

@@ -7,6 +7,8 @@
 #include <memory>
 #include <thread>
 
+#include "nome/thread_support.hpp"
+
 namespace nome::viewer {
 
 PipelineSettings initial_settings() {
@@ -135,10 +137,11 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
   auto copy_back = std::make_shared<std::future<Mesh>>();
   const bool is_lent = pipeline_.lend_result(
       *shown, [copy_back, shown] { return copy_back->valid() ? copy_back->get() : Mesh(*shown); });
+  // Where threads cannot start, the copies are made on this thread, as with one thread.
+  const bool is_threaded = settings.threads > 1 && can_start_threads();
   std::future<void> copied;
   if (!is_lent)
-    copied =
-        std::async(settings.threads > 1 ? std::launch::async : std::launch::deferred, [&] { *shown = mesh; });
+    copied = std::async(is_threaded ? std::launch::async : std::launch::deferred, [&] { *shown = mesh; });
   const Mesh& source = is_lent ? *shown : mesh;
   result.display.topology = std::make_shared<const render::DisplayTopology>(
       render::build_display_topology(source, settings.threads));
@@ -147,7 +150,7 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
   result.display.face_colors = render::display_face_colors(source);
   // One copy in flight at a time, and no run waits for one it does not need: while the last is still
   // being made (new topologies in quick succession), the pipeline copies this result itself if it asks.
-  if (is_lent && settings.threads > 1 && (!copy_thread_.joinable() || copy_done_->load())) {
+  if (is_lent && is_threaded && (!copy_thread_.joinable() || copy_done_->load())) {
     std::packaged_task<Mesh()> copy([shown] { return Mesh(*shown); });
     *copy_back = copy.get_future();
     copy_done_ = std::make_shared<std::atomic<bool>>(false);

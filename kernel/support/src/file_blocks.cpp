@@ -6,6 +6,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "nome/thread_support.hpp"
+
 namespace nome {
 namespace {
 
@@ -28,7 +30,8 @@ bool start_direct(int fd) {
 
 // The other blocks and the writer thread come with the first full block: a small file is written by
 // this thread from one block.
-FileBlocks::FileBlocks(int fd) : fd_(fd), direct_(start_direct(fd)), blocks_(num_blocks) {
+FileBlocks::FileBlocks(int fd)
+    : fd_(fd), direct_(start_direct(fd)), is_threaded_(can_start_threads()), blocks_(num_blocks) {
   for (std::size_t b = 1; b < num_blocks; ++b) free_.push_back(b);
   blocks_[0].resize(block_bytes);
   setp(blocks_[0].data(), blocks_[0].data() + block_bytes);
@@ -49,6 +52,7 @@ void FileBlocks::stop() {
 
 // A direct write takes whole units: the bytes after the last one move on to the next block.
 void FileBlocks::hand_over() {
+  if (!is_threaded_) return write_through();
   if (!writer_.joinable()) writer_ = std::thread([this] { write_blocks(); });
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [&] { return !free_.empty(); });
@@ -61,6 +65,17 @@ void FileBlocks::hand_over() {
   full_.emplace_back(filling_, bytes - kept);
   changed_.notify_all();
   filling_ = next;
+  setp(blocks_[filling_].data(), blocks_[filling_].data() + block_bytes);
+  pbump(int(kept));
+}
+
+// Without a writer thread the full block is written at once, the bytes a direct write leaves moved to its
+// start: the same writes as the writer thread's.
+void FileBlocks::write_through() {
+  const std::size_t bytes = std::size_t(pptr() - pbase());
+  const std::size_t kept = direct_ ? bytes % direct_unit : 0;
+  write_block(blocks_[filling_], bytes - kept);
+  std::memmove(blocks_[filling_].data(), pptr() - kept, kept);
   setp(blocks_[filling_].data(), blocks_[filling_].data() + block_bytes);
   pbump(int(kept));
 }
@@ -121,8 +136,10 @@ void FileBlocks::write_block(const Buffer<char>& block, std::size_t bytes) {
     written_ += std::size_t(n);
   }
   if (direct_ || written_ - write_back_from_ < write_back_bytes) return;
+#ifndef __EMSCRIPTEN__  // the browser's files are in memory: no disk to start, and no sync_file_range
   ::sync_file_range(fd_, off64_t(write_back_from_), off64_t(written_ - write_back_from_),
                     SYNC_FILE_RANGE_WRITE);
+#endif
   write_back_from_ = written_;
 }
 

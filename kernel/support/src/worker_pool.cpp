@@ -4,6 +4,8 @@
 #include <exception>
 #include <utility>
 
+#include "nome/thread_support.hpp"
+
 namespace nome {
 
 void FirstError::run(const std::function<void(unsigned)>& task, unsigned i) noexcept {
@@ -26,6 +28,13 @@ void FirstError::rethrow() {
 
 namespace {
 
+// Tells the core that this thread spins (x86's pause); other targets (WebAssembly) have no such hint.
+void spin_pause() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
+
 // Waits until `value` differs from `old` and returns the new value: first spinning for a few tens of
 // microseconds (the next pass usually follows at once, and waking a sleeping thread costs as much as the
 // spin), then asleep in the kernel.
@@ -35,9 +44,7 @@ std::uint32_t wait_for_change(const std::atomic<std::uint32_t>& value, std::uint
     const std::uint32_t now = value.load(std::memory_order_acquire);
     if (now != old) return now;
     if ((i & 63) == 63 && std::chrono::steady_clock::now() > spin_until) break;
-#if defined(__x86_64__) || defined(__i386__)
-    __builtin_ia32_pause();
-#endif
+    spin_pause();
   }
   for (;;) {
     value.wait(old, std::memory_order_acquire);
@@ -53,6 +60,14 @@ void run_on_new_threads(unsigned count, const std::function<void(unsigned)>& tas
   for (unsigned i = 1; i < count; ++i) threads.emplace_back([&, i] { error.run(task, i); });
   error.run(task, 0);
   for (std::thread& thread : threads) thread.join();
+  error.rethrow();
+}
+
+// Where no thread can start, the tasks run one after another in the caller: each still gets its part, so
+// the results are those of the threads.
+void run_in_caller(unsigned count, const std::function<void(unsigned)>& task) {
+  FirstError error;
+  for (unsigned i = 0; i < count; ++i) error.run(task, i);
   error.rethrow();
 }
 
@@ -75,6 +90,7 @@ void WorkerPool::run(unsigned count, const std::function<void(unsigned)>& task) 
     if (count == 1) task(0);
     return;
   }
+  if (!can_start_threads()) return run_in_caller(count, task);
   const std::unique_lock lock(busy_, std::try_to_lock);
   if (!lock.owns_lock()) return run_on_new_threads(count, task);
   while (workers_.size() + 1 < count) {

@@ -9,6 +9,8 @@
 #include <thread>
 #include <utility>
 
+#include "nome/thread_support.hpp"
+
 namespace nome {
 namespace {
 
@@ -197,15 +199,22 @@ TriangleBvh::TriangleBvh(const Mesh& mesh, const BvhOptions& options)
   for (Index t = 0; t < n; ++t) keys[t] = std::uint64_t(morton_code(points.centroid(t), bounds)) << 32 | t;
   sort_by_code(keys);
 
-  // The two halves of a large mesh are built on two threads (the machine we target has two cores).
+  // The two halves of a large mesh are built on two threads (the machine we target has two cores), or one
+  // after the other where threads cannot start: the same nodes.
   const auto mid = SubtreeBuilder::split(keys, 0, n, options.max_leaf_size);
   if (n >= options.parallel_build_threshold && mid) {
     std::vector<BvhNode> left, right;
     Box right_box;
-    std::thread worker(
-        [&] { right_box = SubtreeBuilder(keys, points, options.max_leaf_size, right).build(*mid, n); });
+    const auto build_right = [&] {
+      right_box = SubtreeBuilder(keys, points, options.max_leaf_size, right).build(*mid, n);
+    };
+    std::thread worker;
+    if (can_start_threads())
+      worker = std::thread(build_right);
+    else
+      build_right();
     Box box = SubtreeBuilder(keys, points, options.max_leaf_size, left).build(0, *mid);
-    worker.join();
+    if (worker.joinable()) worker.join();
     box.grow(right_box);
     // Root, the two subtree roots, then the rest of each subtree; inner nodes' child ids shift.
     nodes_.reserve(1 + left.size() + right.size());

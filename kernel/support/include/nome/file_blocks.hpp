@@ -16,7 +16,8 @@ namespace nome {
 // The bytes of an open file, gathered into large blocks that a second thread writes (one write(2) per
 // block) while the caller fills the next, starting the disk's write-back as it goes so that the final
 // sync waits only for the last blocks (the export of a big mesh to disk takes about as long as writing
-// its bytes). Writers fill blocks directly (room/commit: every byte written once), or use it as the
+// its bytes); where threads cannot start (can_start_threads), the caller writes each block when full.
+// Writers fill blocks directly (room/commit: every byte written once), or use it as the
 // streambuf of a std::ostream. write_file_atomically makes one over its temporary file.
 class FileBlocks : public std::streambuf {
  public:
@@ -45,6 +46,7 @@ class FileBlocks : public std::streambuf {
 
  private:
   void hand_over();
+  void write_through();
   void write_blocks();
   void write_block(const Buffer<char>& block, std::size_t bytes);
   void stop();
@@ -52,6 +54,7 @@ class FileBlocks : public std::streambuf {
 
   int fd_;
   std::atomic<bool> direct_;  // the file is open with O_DIRECT: blocks are written in whole units
+  const bool is_threaded_;    // a writer thread writes the full blocks
   std::mutex mutex_;
   std::condition_variable changed_;
   std::vector<Buffer<char>> blocks_;

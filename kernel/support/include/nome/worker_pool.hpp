@@ -36,7 +36,8 @@ class WorkerPool {
 
   // Runs task(i) for every i in [0, count), task(0) on the calling thread, and returns once all have
   // run; then rethrows the first exception a task threw, on any thread. A pass asked for while another runs
-  // (from another thread, or from inside a task) gets threads of its own for its length.
+  // (from another thread, or from inside a task) gets threads of its own for its length. Where threads
+  // cannot start (can_start_threads), all tasks run on the calling thread, in order.
   void run(unsigned count, const std::function<void(unsigned)>& task);
 
  private:

@@ -8,6 +8,7 @@
 #include "nome/error.hpp"
 #include "nome/mesh/face_orientation.hpp"
 #include "nome/mesh/normals.hpp"
+#include "nome/thread_support.hpp"
 #include "ops/offset/offset_input.hpp"
 #include "support/parallel_for.hpp"
 
@@ -90,7 +91,7 @@ class OffsetBuilder {
     };
     // The future waits for the helper even when this thread throws, and passes on the helper's exception.
     std::future<void> helper;
-    if (threads > 1 && nf_ >= min_items_a_thread)
+    if (threads > 1 && nf_ >= min_items_a_thread && can_start_threads())
       helper = std::async(std::launch::async, fans_and_components);
     resize_for_overwrite(a.positions, 2 * size_t(nv_out_));
     write_offset_positions(m_, normals, distance, a.positions);
