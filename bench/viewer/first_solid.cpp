@@ -30,7 +30,7 @@ FirstSolid time_first_solid() {
   offset.offset_distance = 0.01;
   StagePipeline stages;
   auto run = [&](const PipelineSettings& s) {
-    auto result = stages.run(session.scene_input(), s, std::stop_token{});
+    auto result = stages.run(session.scene_input(), s, nome::stop_token{});
     if (!result) std::exit(1);
     return result->mesh->num_faces();
   };

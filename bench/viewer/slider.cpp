@@ -36,7 +36,7 @@ void funnel_figures() {
   settings.stage = Stage::offset;
   settings.subdivision_levels = 3;
   settings.offset_distance = 0.05;
-  auto run = [&] { return pipeline.run(session.scene_input(), settings, std::stop_token{}); };
+  auto run = [&] { return pipeline.run(session.scene_input(), settings, nome::stop_token{}); };
   const auto first = run();
   std::printf(
       "slider: funnel_cube_consolidated, merged, subdivision 3, %s stage (offset 0.05): %u faces on screen\n",

@@ -228,7 +228,7 @@ TEST_CASE(
   viewer::StagePipeline pipeline;
   PipelineSettings merged = viewer::initial_settings();
   merged.stage = Stage::merged;
-  auto shown = [&] { return *pipeline.run(session.scene_input(), merged, std::stop_token{}); };
+  auto shown = [&] { return *pipeline.run(session.scene_input(), merged, nome::stop_token{}); };
   // The report's chain of rims: t1 up into t2, across t3, down t4 into the outer t5, whose lower rim
   // turns in to meet t1's (the inverted sock). A rim is named by a vertex of it and its loop's centre.
   const viewer::StageResult start = shown();
@@ -325,7 +325,7 @@ TEST_CASE(
   for (const double elevation : {-35.0, 35.0, 0.0})
     for (double azimuth = 0; azimuth < 360; azimuth += 30) views.emplace_back(azimuth, elevation);
   for (const auto& face : polygons) {
-    const auto now = pipeline.run(session.scene_input(), scene_stage, std::stop_token{});
+    const auto now = pipeline.run(session.scene_input(), scene_stage, nome::stop_token{});
     const auto& names = now->mesh->vertex_names();
     // A view where every corner is clickable (a corner may have copies in earlier temporary faces: any
     // copy carries the name the polygon is made of).

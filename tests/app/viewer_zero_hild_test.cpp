@@ -122,7 +122,7 @@ TEST_CASE(
   viewer::Session session = viewer::Session::open(file, true);
   viewer::StagePipeline pipeline;
   const PipelineSettings scene_stage = viewer::initial_settings();
-  auto shown = [&] { return *pipeline.run(session.scene_input(), scene_stage, std::stop_token{}); };
+  auto shown = [&] { return *pipeline.run(session.scene_input(), scene_stage, nome::stop_token{}); };
   const viewer::StageResult start = shown();
   CHECK(start.mesh->num_faces() < 128);  // of 128 triangles, pairs made quads (report 7.1)
   CHECK(start.topology.components.size() == 2);
@@ -217,7 +217,7 @@ TEST_CASE(
   PipelineSettings merged = scene_stage;
   merged.stage = Stage::merged;
   const TopologyReport expected =
-      topology_report(*pipeline.run(session.scene_input(), merged, std::stop_token{})->mesh);
+      topology_report(*pipeline.run(session.scene_input(), merged, nome::stop_token{})->mesh);
   CHECK(expected.components.size() == 1);
   CHECK_FALSE(expected.orientable);
   CHECK(expected.borders == 3);

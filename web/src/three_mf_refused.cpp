@@ -6,15 +6,20 @@ namespace nome {
 namespace {
 
 [[noreturn]] void refuse(const std::filesystem::path& path) {
-  throw IoError(path.string() +
-                ": 3MF needs lib3mf, which the browser build does not have; use .stl, .obj, .ply or .glb here, "
-                "or the desktop nome for 3MF");
+  throw IoError(
+      path.string() +
+      ": 3MF needs lib3mf, which the browser build does not have; use .stl, .obj, .ply or .glb here, "
+      "or the desktop nome for 3MF");
 }
 
 }  // namespace
 
-void write_3mf(const std::filesystem::path& path, const Mesh&, const ThreeMfOptions&) { refuse(path); }
+void write_3mf(const std::filesystem::path& path, const Mesh&, const ThreeMfOptions&) {
+  refuse(path);
+}
 
-ThreeMfModel read_3mf(const std::filesystem::path& path) { refuse(path); }
+ThreeMfModel read_3mf(const std::filesystem::path& path) {
+  refuse(path);
+}
 
 }  // namespace nome

@@ -46,9 +46,7 @@ class BrowserPlatform final : public viewer::Platform {
     return {std::max(width, 1), std::max(height, 1)};
   }
   double now() const override { return glfwGetTime(); }
-  void set_title(const std::string& title) override {
-    emscripten_set_window_title(title.c_str());
-  }
+  void set_title(const std::string& title) override { emscripten_set_window_title(title.c_str()); }
   float content_scale() const override { return 1.0f; }
   bool pick_file_to_open() override {
     EM_ASM(nomePage.pickFile());

@@ -6,10 +6,10 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <stop_token>
 #include <thread>
 #include <utility>
 #include <vector>
+#include "nome/stop_token.hpp"
 
 #include "nome/thread_support.hpp"
 
@@ -24,7 +24,7 @@ namespace nome::viewer {
 template <typename Result>
 class BackgroundJob {
  public:
-  using Work = std::function<Result(std::stop_token)>;
+  using Work = std::function<Result(nome::stop_token)>;
 
   BackgroundJob() = default;
   ~BackgroundJob() { cancel(); }
@@ -40,8 +40,8 @@ class BackgroundJob {
       pending_ = std::move(work);
       return;
     }
-    thread_ = std::jthread(
-        [state, work = std::move(work)](std::stop_token stop) { run(work, std::move(stop), *state); });
+    thread_ = nome::jthread(
+        [state, work = std::move(work)](nome::stop_token stop) { run(work, std::move(stop), *state); });
   }
 
   // Waits up to `patience` for the latest job; returns its result once (rethrows its exception).
@@ -80,10 +80,10 @@ class BackgroundJob {
   };
   struct Retired {
     std::shared_ptr<State> state;
-    std::jthread thread;
+    nome::jthread thread;
   };
 
-  static void run(const Work& work, std::stop_token stop, State& state) {
+  static void run(const Work& work, nome::stop_token stop, State& state) {
     std::optional<Result> result;
     std::exception_ptr error;
     try {
@@ -125,7 +125,7 @@ class BackgroundJob {
   }
 
   std::shared_ptr<State> state_;
-  std::jthread thread_;
+  nome::jthread thread_;
   Work pending_;  // the latest request, where no thread can start: take() runs it
   std::vector<Retired> retired_;
   std::chrono::steady_clock::time_point started_{};

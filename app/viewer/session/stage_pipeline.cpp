@@ -35,7 +35,7 @@ WorkProgress StagePipeline::progress() const {
 }
 
 std::optional<StageResult> StagePipeline::run(const SceneInput& input, const PipelineSettings& settings,
-                                              std::stop_token stop) {
+                                              nome::stop_token stop) {
   std::lock_guard lock(mutex_);
   if (stop.stop_requested()) return std::nullopt;
   feed_.feed(pipeline_, input);
@@ -43,7 +43,7 @@ std::optional<StageResult> StagePipeline::run(const SceneInput& input, const Pip
 }
 
 std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const PipelineSettings& settings,
-                                              std::stop_token stop) {
+                                              nome::stop_token stop) {
   std::lock_guard lock(mutex_);
   if (stop.stop_requested()) return std::nullopt;
   feed_.forget();
@@ -51,7 +51,8 @@ std::optional<StageResult> StagePipeline::run(const PipelineInput& input, const 
   return run_stages(settings, stop);
 }
 
-std::optional<StageResult> StagePipeline::run_stages(const PipelineSettings& settings, std::stop_token stop) {
+std::optional<StageResult> StagePipeline::run_stages(const PipelineSettings& settings,
+                                                     nome::stop_token stop) {
   {
     std::lock_guard progress_lock(progress_mutex_);
     progress_ = {};
@@ -154,7 +155,7 @@ void StagePipeline::display(const Mesh& mesh, const PipelineSettings& settings, 
     std::packaged_task<Mesh()> copy([shown] { return Mesh(*shown); });
     *copy_back = copy.get_future();
     copy_done_ = std::make_shared<std::atomic<bool>>(false);
-    copy_thread_ = std::jthread([copy = std::move(copy), done = copy_done_]() mutable {
+    copy_thread_ = nome::jthread([copy = std::move(copy), done = copy_done_]() mutable {
       copy();
       done->store(true);
     });

@@ -5,10 +5,10 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <stop_token>
 #include <string>
 #include <thread>
 #include <vector>
+#include "nome/stop_token.hpp"
 
 #include "nome/edit/scene_document.hpp"
 #include "nome/mesh/mesh.hpp"
@@ -63,16 +63,16 @@ class StagePipeline {
   // version the pipeline has taken already only moves its vertices (Pipeline::move_input_vertices), or
   // changes nothing when its positions are the last ones.
   std::optional<StageResult> run(const SceneInput& input, const PipelineSettings& settings,
-                                 std::stop_token stop);
+                                 nome::stop_token stop);
   // The same for an input that comes with no version (tests, benches): compared with the last one
   // (Pipeline::set_input).
   std::optional<StageResult> run(const PipelineInput& input, const PipelineSettings& settings,
-                                 std::stop_token stop);
+                                 nome::stop_token stop);
   // The progress of the run in flight (an empty task before the first report), for the status overlay.
   WorkProgress progress() const;
 
  private:
-  std::optional<StageResult> run_stages(const PipelineSettings& settings, std::stop_token stop);
+  std::optional<StageResult> run_stages(const PipelineSettings& settings, nome::stop_token stop);
   // The display arrays: a result of the last one's topology (the pipeline's result_topology_version)
   // takes over its shared parts.
   void display(const Mesh& mesh, const PipelineSettings& settings, StageResult& result);
@@ -87,7 +87,7 @@ class StagePipeline {
 
   std::mutex mutex_;
   // Copies the result lent to the last new topology's StageResult; done once the flag is set.
-  std::jthread copy_thread_;
+  nome::jthread copy_thread_;
   std::shared_ptr<std::atomic<bool>> copy_done_;
   SceneInputFeed feed_;
   // What results of the last one's topology share.

@@ -5,7 +5,7 @@
 namespace nome::viewer {
 
 StageView::StageView()
-    : evaluate_([this](const SceneInput& input, const PipelineSettings& settings, std::stop_token stop) {
+    : evaluate_([this](const SceneInput& input, const PipelineSettings& settings, nome::stop_token stop) {
         return pipeline_.run(input, settings, stop);
       }) {}
 
@@ -18,7 +18,7 @@ bool StageView::request(const Session& session) {
   has_request_ = true;
   // The job shares the session's polygons and positions; a slider that moved vertices sends positions.
   waiting_ = [this, input = session.scene_input(), parts = session.face_parts(),
-              settings = settings_](std::stop_token stop) {
+              settings = settings_](nome::stop_token stop) {
     auto result = evaluate_(input, settings, stop);
     if (result) result->parts = parts;
     return result;
@@ -58,7 +58,7 @@ void StageView::prefetch_picking_bvh(double now) {
   constexpr double rest_seconds = 0.25;
   if (!shown_ || picking_bvh_ || job_.is_busy() || bvh_job_.is_busy() || now - shown_time_ < rest_seconds)
     return;
-  bvh_job_.submit([mesh = shown_->mesh](std::stop_token) {
+  bvh_job_.submit([mesh = shown_->mesh](nome::stop_token) {
     return PickingBvh{mesh, std::make_shared<const TriangleBvh>(*mesh)};
   });
 }

@@ -20,7 +20,7 @@ class StageView {
  public:
   // What a job runs: the stage pipeline by default (tests give their own).
   using Evaluate =
-      std::function<std::optional<StageResult>(const SceneInput&, const PipelineSettings&, std::stop_token)>;
+      std::function<std::optional<StageResult>(const SceneInput&, const PipelineSettings&, nome::stop_token)>;
   StageView();
   explicit StageView(Evaluate evaluate) : evaluate_(std::move(evaluate)) {}
 

@@ -20,7 +20,7 @@ PipelineSettings checked_settings(PipelineSettings settings) {
 // own pipeline: running the stage pipeline to another stage would drop the offset it caches for the next
 // slider move. None when a newer check was asked for before it began.
 std::shared_ptr<const Mesh> surface_to_check(CheckPipeline& check, const SceneInput& input,
-                                             const PipelineSettings& settings, std::stop_token stop) {
+                                             const PipelineSettings& settings, nome::stop_token stop) {
   std::lock_guard lock(check.mutex);
   if (stop.stop_requested()) return nullptr;
   PipelineSettings surface = settings;
@@ -83,7 +83,7 @@ void PrintCheckView::request(const Session& session, const PipelineSettings& set
   }
   job_.submit([pipeline = pipeline_, input = session.scene_input(), version = session.version(),
                settings = checked_settings(settings), wall = min_wall,
-               progress = progress_](std::stop_token stop) -> std::optional<PrintCheckRun> {
+               progress = progress_](nome::stop_token stop) -> std::optional<PrintCheckRun> {
     const auto start = std::chrono::steady_clock::now();
     PrintCheckRun run{version, settings, wall, surface_to_check(*pipeline, input, settings, stop), {}, 0.0};
     if (!run.surface) return std::nullopt;

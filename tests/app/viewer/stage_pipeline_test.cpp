@@ -32,7 +32,7 @@ PipelineInput two_pieces() {
 }
 
 Mesh shown(StagePipeline& pipeline, const PipelineInput& soup, const PipelineSettings& settings) {
-  const auto result = pipeline.run(soup, settings, std::stop_token{});
+  const auto result = pipeline.run(soup, settings, nome::stop_token{});
   REQUIRE(result);
   CHECK(result->display.topology->num_faces == result->mesh->num_faces());
   CHECK(result->stage == settings.stage);
@@ -80,7 +80,7 @@ TEST_CASE("only the scene and merged stages take edits, a stopped run does nothi
   CHECK_FALSE(is_editable(Stage::subdivided));
   CHECK_FALSE(is_editable(Stage::offset));
   CHECK_FALSE(is_editable(Stage::subdivided_offset));
-  std::stop_source stop;
+  nome::stop_source stop;
   stop.request_stop();
   StagePipeline pipeline;
   CHECK_FALSE(pipeline.run(two_pieces(), viewer::initial_settings(), stop.get_token()));
@@ -91,10 +91,10 @@ TEST_CASE("the viewer's slider tick that moves vertices builds no mesh", "[app]"
   StagePipeline pipeline;
   PipelineSettings settings = viewer::initial_settings();
   settings.stage = Stage::offset;
-  REQUIRE(pipeline.run(session.scene_input(), settings, std::stop_token{}));
+  REQUIRE(pipeline.run(session.scene_input(), settings, nome::stop_token{}));
   const std::uint64_t before = build_mesh_count();
   session.set_parameter("fp_h", 0.4);
-  const auto result = pipeline.run(session.scene_input(), settings, std::stop_token{});
+  const auto result = pipeline.run(session.scene_input(), settings, nome::stop_token{});
   REQUIRE(result);
   CHECK(build_mesh_count() == before);
   CHECK(result->topology.borders == 0);
@@ -119,7 +119,7 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
   viewer::Session session = viewer::Session::open(NOME_SOURCE_DIR "/assets/funnel_cube_consolidated.nome");
   StagePipeline pipeline;
   const PipelineSettings settings = offset_settings();
-  auto run = [&] { return pipeline.run(session.scene_input(), settings, std::stop_token{}); };
+  auto run = [&] { return pipeline.run(session.scene_input(), settings, nome::stop_token{}); };
   const auto first = run();
   REQUIRE(first);
   const Buffer<Vec3> first_positions = first->mesh->positions();
@@ -136,7 +136,7 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
     const render::MeshDisplayData fresh = render::build_display_data(*moved.mesh);
     CHECK(moved.display.positions->vertices == fresh.positions->vertices);
     StagePipeline fresh_pipeline;
-    const auto fresh_run = fresh_pipeline.run(session.scene_input(), settings, std::stop_token{});
+    const auto fresh_run = fresh_pipeline.run(session.scene_input(), settings, nome::stop_token{});
     REQUIRE(fresh_run);
     CHECK(moved.display.positions->vertex_normals == fresh_run->display.positions->vertex_normals);
     CHECK(moved.display.positions->face_normals == fresh_run->display.positions->face_normals);
@@ -160,7 +160,7 @@ TEST_CASE("a slider tick that moves vertices shares the display topology, result
   // Its positions changed places with the pipeline's: those of a fresh run, here and at the next tick.
   StagePipeline fresh_pipeline;
   CHECK(reused->mesh->positions() ==
-        fresh_pipeline.run(session.scene_input(), settings, std::stop_token{})->mesh->positions());
+        fresh_pipeline.run(session.scene_input(), settings, nome::stop_token{})->mesh->positions());
   const auto unchanged = run();
   REQUIRE(unchanged);
   CHECK(unchanged->mesh->positions() == reused->mesh->positions());
@@ -178,7 +178,7 @@ TEST_CASE("an offset of two parallel copies shows its surface's normals, any oth
   settings.stage = Stage::offset;
   settings.offset_distance = 0.02;
   StagePipeline pipeline;
-  const auto torus = pipeline.run(input, settings, std::stop_token{});
+  const auto torus = pipeline.run(input, settings, nome::stop_token{});
   REQUIRE(torus);
   // The subdivided torus' normals on both copies, where the solid's own polygons give nearly the same.
   Pipeline kernel;
@@ -196,13 +196,13 @@ TEST_CASE("an offset of two parallel copies shows its surface's normals, any oth
     CHECK(glm::dot(unpack_normal(shown.vertex_normals[v]), unpack_normal(own.positions->vertex_normals[v])) >
           0.995f);
   // Two squares with borders: rim quads, whose normals only the solid has.
-  const auto squares = pipeline.run(two_pieces(), settings, std::stop_token{});
+  const auto squares = pipeline.run(two_pieces(), settings, nome::stop_token{});
   REQUIRE(squares);
   const render::MeshDisplayData squares_own = render::build_display_data(*squares->mesh);
   CHECK(squares->display.positions->face_normals == squares_own.positions->face_normals);
   CHECK(squares->display.positions->vertex_normals == squares_own.positions->vertex_normals);
   // The subdivided surface alone: its own normals.
-  const auto shown_surface = pipeline.run(input, surface, std::stop_token{});
+  const auto shown_surface = pipeline.run(input, surface, nome::stop_token{});
   REQUIRE(shown_surface);
   CHECK(shown_surface->display.positions->vertex_normals ==
         render::build_display_data(*shown_surface->mesh).positions->vertex_normals);
@@ -214,7 +214,7 @@ TEST_CASE("a new solid is read by a frame while the pipeline copies it and the n
   StagePipeline pipeline;
   PipelineSettings settings = offset_settings();
   settings.threads = 2;  // the pipeline's copy on a thread of its own
-  auto run = [&](StagePipeline& p) { return p.run(session.scene_input(), settings, std::stop_token{}); };
+  auto run = [&](StagePipeline& p) { return p.run(session.scene_input(), settings, nome::stop_token{}); };
   const auto first = run(pipeline);
   REQUIRE(first);
   const Buffer<Vec3> first_positions = first->mesh->positions();

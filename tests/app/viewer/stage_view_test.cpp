@@ -48,7 +48,7 @@ struct GatedEvaluation {
 TEST_CASE("a frame never waits for a stage in flight: the last one stays, the latest request runs next",
           "[app][threads]") {
   GatedEvaluation evaluation;
-  viewer::StageView view([&](const viewer::SceneInput&, const PipelineSettings& settings, std::stop_token) {
+  viewer::StageView view([&](const viewer::SceneInput&, const PipelineSettings& settings, nome::stop_token) {
     return evaluation(settings);
   });
   const viewer::Session session = viewer::Session::open(NOME_SOURCE_DIR "/assets/cube.obj");

@@ -17,7 +17,7 @@ TEST_CASE("without threads, a job runs when its result is taken, on the taking t
   const WithoutThreads without_threads;
   BackgroundJob<std::thread::id> job;
   int runs = 0;
-  job.submit([&](std::stop_token) {
+  job.submit([&](nome::stop_token) {
     ++runs;
     return std::this_thread::get_id();
   });
@@ -35,16 +35,16 @@ TEST_CASE("without threads, a superseded request never runs, and a cancelled one
   const WithoutThreads without_threads;
   BackgroundJob<int> job;
   bool first_ran = false;
-  job.submit([&](std::stop_token) {
+  job.submit([&](nome::stop_token) {
     first_ran = true;
     return 1;
   });
-  job.submit([](std::stop_token) { return 2; });
+  job.submit([](nome::stop_token) { return 2; });
   const auto result = job.take(5000ms);
   REQUIRE(result);
   CHECK(*result == 2);
   CHECK_FALSE(first_ran);
-  job.submit([&](std::stop_token) {
+  job.submit([&](nome::stop_token) {
     first_ran = true;
     return 3;
   });
@@ -57,7 +57,7 @@ TEST_CASE("without threads, a superseded request never runs, and a cancelled one
 TEST_CASE("without threads, a job's exception reaches the caller of take", "[app]") {
   const WithoutThreads without_threads;
   BackgroundJob<int> job;
-  job.submit([](std::stop_token) -> int { throw std::runtime_error("a.nome:3:4: expected ')'"); });
+  job.submit([](nome::stop_token) -> int { throw std::runtime_error("a.nome:3:4: expected ')'"); });
   CHECK_THROWS_WITH(job.take(), "a.nome:3:4: expected ')'");
   CHECK_FALSE(job.is_busy());
 }
@@ -75,7 +75,7 @@ TEST_CASE("without threads, the viewer's stages and display arrays are the threa
     std::vector<viewer::StageResult> results;
     for (const double distance : {0.05, 0.04}) {
       settings.offset_distance = distance;
-      auto result = pipeline.run(input, settings, std::stop_token{});
+      auto result = pipeline.run(input, settings, nome::stop_token{});
       REQUIRE(result);
       results.push_back(std::move(*result));
     }

@@ -46,8 +46,7 @@ class jthread {
  public:
   jthread() noexcept = default;
   template <typename F, typename... Args>
-    requires(!std::is_same_v<std::remove_cvref_t<F>, jthread>)
-  explicit jthread(F&& f, Args&&... args) {
+  requires(!std::is_same_v<std::remove_cvref_t<F>, jthread>) explicit jthread(F&& f, Args&&... args) {
     if constexpr (std::is_invocable_v<std::decay_t<F>, stop_token, std::decay_t<Args>...>)
       thread_ = std::thread(std::forward<F>(f), source_.get_token(), std::forward<Args>(args)...);
     else
