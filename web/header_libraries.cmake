@@ -17,5 +17,8 @@ add_library(glm::glm ALIAS glm_headers)
 # The implementations Debian ships as shared libraries are compiled here once, from the same headers.
 add_library(nome_header_libraries STATIC ${PROJECT_SOURCE_DIR}/web/src/header_libraries.cpp)
 target_include_directories(nome_header_libraries SYSTEM PUBLIC ${NOME_WEB_INCLUDE})
+# .glb files carry no images here: tinygltf's image loaders stay out of every file that includes it.
+target_compile_definitions(nome_header_libraries PUBLIC TINYGLTF_NO_STB_IMAGE TINYGLTF_NO_STB_IMAGE_WRITE
+                                                        TINYGLTF_NO_EXTERNAL_IMAGE)
 add_library(tinyobjloader::tinyobjloader_double ALIAS nome_header_libraries)
 add_library(TinyGLTF::TinyGLTF ALIAS nome_header_libraries)

@@ -55,13 +55,11 @@ CommandResult run_nome(const std::string& arguments) {
   return run_nome_prefixed("", arguments);
 }
 
-CommandResult run_nome_prefixed(const std::string& prefix, const std::string& arguments) {
+CommandResult run_command(const std::string& command) {
   static int counter = 0;
   const std::string base = scratch_dir("run_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
   const std::string out = base + "/out", err = base + "/err";
-  const std::string command = prefix + " " + std::string(NOME_EXECUTABLE) + " " + arguments + " >" + out +
-                              " 2>" + err + " </dev/null";
-  const int raw = std::system(command.c_str());
+  const int raw = std::system((command + " >" + out + " 2>" + err + " </dev/null").c_str());
   CommandResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
   std::ostringstream o, e;
@@ -71,6 +69,10 @@ CommandResult run_nome_prefixed(const std::string& prefix, const std::string& ar
   r.err = e.str();
   std::filesystem::remove_all(base);
   return r;
+}
+
+CommandResult run_nome_prefixed(const std::string& prefix, const std::string& arguments) {
+  return run_command(prefix + " " + std::string(NOME_EXECUTABLE) + " " + arguments);
 }
 
 }  // namespace nome::test

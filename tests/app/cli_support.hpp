@@ -14,6 +14,9 @@ struct CommandResult {
   std::string err;  // stderr
 };
 
+// Runs a shell command line and captures its output.
+CommandResult run_command(const std::string& command);
+
 // Runs the built `nome` binary with the given arguments (a shell word list) and captures its output.
 CommandResult run_nome(const std::string& arguments);
 // The same, with a command word list put before the executable (`xvfb-run -a`, `env X=1`).

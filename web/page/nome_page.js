@@ -103,6 +103,7 @@ async function start() {
   const threads = params.get('threads') !== '0' && window.crossOriginIsolated === true;
   document.getElementById('threads').textContent =
     threads ? navigator.hardwareConcurrency + ' threads' : 'one thread';
+  logLine(threads ? 'page: threads build, ' + navigator.hardwareConcurrency + ' threads' : 'page: one-thread build');
   window.Module = {
     arguments: args,
     canvas: document.getElementById('canvas'),
@@ -114,15 +115,29 @@ async function start() {
       ENV.XDG_STATE_HOME = '/persist/state';
       FS.mkdirTree(home);
       for (const [path, data] of pendingFiles) FS.writeFile(path, data);
-      // The layout, recent files and crash recovery live in IndexedDB across visits.
+      // The layout, recent files and crash recovery live in IndexedDB across visits. A browser that keeps
+      // no storage (private windows, some headless runs) answers late or never: the viewer then starts
+      // without it after a second.
       FS.mkdir('/persist');
       FS.mount(IDBFS, {}, '/persist');
       addRunDependency('persist');
+      let isRead = false;
+      const startViewer = () => {
+        if (isRead) return;
+        isRead = true;
+        removeRunDependency('persist');
+      };
       FS.syncfs(true, (error) => {
         if (error) logLine('page: the browser storage could not be read: ' + error);
-        removeRunDependency('persist');
+        startViewer();
       });
-      setInterval(() => FS.syncfs(false, () => {}), 2000);
+      setTimeout(startViewer, 1000);
+      let isSaving = false;
+      setInterval(() => {
+        if (isSaving) return;
+        isSaving = true;
+        FS.syncfs(false, () => { isSaving = false; });
+      }, 2000);
     }],
     onRuntimeInitialized() { message.style.display = 'none'; },
   };

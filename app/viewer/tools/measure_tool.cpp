@@ -80,9 +80,10 @@ void MeasureTool::draw_overlay(const ScreenProjection& projection) const {
 
 void MeasureTool::draw_section() {
   int mode = int(mode_);
-  const bool is_changed = ImGui::RadioButton("select", &mode, 0) |
-                          ImGui::RadioButton("distance (M)", &mode, 1) |
-                          ImGui::RadioButton("wall (Shift+M)", &mode, 2);
+  // Every button is drawn: no short-circuit.
+  bool is_changed = ImGui::RadioButton("select", &mode, 0);
+  is_changed |= ImGui::RadioButton("distance (M)", &mode, 1);
+  is_changed |= ImGui::RadioButton("wall (Shift+M)", &mode, 2);
   if (is_changed && mode != int(mode_)) toggle(MeasureMode(mode));
   if (last_)
     ImGui::Text("%s %s", last_->is_wall ? "wall" : "distance", measure_length_text(last_->length).c_str());
