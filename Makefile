@@ -27,7 +27,7 @@ GALLERY_SIZE ?= 640x480
 PREFIX     ?= /usr/local
 PACKAGEDIR := build/package
 
-.PHONY: web web-deps serve web-test gltf-validator run test sanitize-full deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery layers \
+.PHONY: web web-deps serve web-bench gltf-validator run test sanitize-full deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery layers \
         install package package-test icon hardening mutants
 
 deps:
@@ -81,6 +81,15 @@ web: web-deps
 	  > $(CURDIR)/$(WEBDIR)/scenes.json
 	@echo "Built $(WEBDIR): $$(du -h $(WEBDIR)/nome.wasm | cut -f1) nome.wasm; \`make serve\` serves it"
 
+# Catmull-Clark level 4 of the funnel cube natively and as WebAssembly under node, in one run.
+web-bench: web
+	cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DNOME_TESTS=OFF -DNOME_BENCH=ON >/dev/null
+	cmake --build build/bench -j$(JOBS) --target nome_bench_web_kernel
+	@native=$$(build/bench/bench/nome_bench_web_kernel); web=$$(node build/web-one/web/nome-kernel-bench.js); \
+	echo "native:      $$native"; echo "WebAssembly: $$web"; \
+	n=$$(echo "$$native" | awk '{ print $$(NF - 1) }'); w=$$(echo "$$web" | awk '{ print $$(NF - 1) }'); \
+	awk -v n=$$n -v w=$$w 'BEGIN { printf "WebAssembly / native: %.2f (target <= 3)\n", w / n }'
+
 serve: web
 	python3 web/serve.py $(WEBDIR) $(WEB_PORT)
 
@@ -108,9 +117,10 @@ test-build: deps gltf-validator
 	  "-DNOME_SANITIZE_SKIP=alignment;null" >/dev/null
 	cmake --build $(TESTDIR) -j$(JOBS)
 
-# A test case that cannot find the shared examples, llvmpipe or node fails under CI (`CI` set); elsewhere it skips,
-# writes why to the skip log and is counted here.
-test: format-check test-build
+# A test case that cannot find the shared examples, llvmpipe, node or the web page fails under CI (`CI` set);
+# elsewhere it skips, writes why to the skip log and is counted here. The web page's tests open build/web in
+# headless Chromium.
+test: format-check test-build web
 	@rm -f $(TESTDIR)/skipped_tests.log
 	cd $(TESTDIR) && $(SANITIZER_ENV) ctest --output-on-failure -j$(JOBS)
 	@if [ -s $(TESTDIR)/skipped_tests.log ]; then \

@@ -54,7 +54,8 @@ class PageServer {
                                 "/web/serve.py " + web_folder.string() + " " + std::to_string(port_) +
                                 "' >/dev/null 2>&1 &";
     REQUIRE(std::system(command.c_str()) == 0);
-    for (int i = 0; i < 100 && !answers(port_); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    for (int i = 0; i < 100 && !answers(port_); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
     std::ifstream(pid_file) >> pid_;
     REQUIRE(answers(port_));
   }
@@ -118,7 +119,8 @@ Image page_picture(const PageServer& server, const std::string& query, const std
   REQUIRE(page.width == nome::test::viewer_width);
   REQUIRE(page.height == nome::test::viewer_height);
   Image canvas(page.width, canvas_height);
-  std::copy(page.rgba.begin() + std::ptrdiff_t(bar_height) * page.width * 4, page.rgba.end(), canvas.rgba.begin());
+  std::copy(page.rgba.begin() + std::ptrdiff_t(bar_height) * page.width * 4, page.rgba.end(),
+            canvas.rgba.begin());
   return canvas;
 }
 
@@ -143,17 +145,20 @@ std::pair<int, int> model_pixels(const Image& picture) {
 }
 
 // Ends the test case when the page or Chromium is missing (NOME_SKIP: a failure under CI).
-#define NOME_NEEDS_WEB_PAGE()                                                                     \
-  if (!std::filesystem::exists(web_folder / "nome.js") || !std::filesystem::exists(web_folder / "nome-threads.js")) \
-    NOME_SKIP(web_folder.string() + " has no page: `make web` builds it");                                          \
-  if (std::system("command -v chromium >/dev/null 2>&1") != 0) NOME_SKIP("no chromium (make web-deps installs it)")
+#define NOME_NEEDS_WEB_PAGE()                                              \
+  if (!std::filesystem::exists(web_folder / "nome.js") ||                  \
+      !std::filesystem::exists(web_folder / "nome-threads.js"))            \
+    NOME_SKIP(web_folder.string() + " has no page: `make web` builds it"); \
+  if (std::system("command -v chromium >/dev/null 2>&1") != 0)             \
+  NOME_SKIP("no chromium (make web-deps installs it)")
 
 const std::string slider_script = "state\nset fp_n 5\nstate\n";
 
 }  // namespace
 
-TEST_CASE("The web page draws the funnel cube as the desktop viewer does, and its slider changes the topology",
-          "[app][web]") {
+TEST_CASE(
+    "The web page draws the funnel cube as the desktop viewer does, and its slider changes the topology",
+    "[app][web]") {
   NOME_NEEDS_WEB_PAGE();
   const std::string dir = nome::test::private_scratch_dir("web_desktop");
   const std::string script =
@@ -178,7 +183,8 @@ TEST_CASE("The web page draws the funnel cube as the desktop viewer does, and it
   const auto [front, back] = model_pixels(page);
   CHECK(front > 20000);
   CHECK(back > 20000);
-  const auto difference = nome::render::compare_images(nome::render::read_png(dir + "/desktop.png"), page, 24);
+  const auto difference =
+      nome::render::compare_images(nome::render::read_png(dir + "/desktop.png"), page, 24);
   REQUIRE(difference.same_size);
   // Antialiased edges differ between SwiftShader and llvmpipe; the panels and the model do not.
   CHECK(difference.differing_fraction < 0.01);
@@ -187,7 +193,8 @@ TEST_CASE("The web page draws the funnel cube as the desktop viewer does, and it
 TEST_CASE("The threaded web page computes what the one-thread page does", "[app][web]") {
   NOME_NEEDS_WEB_PAGE();
   const PageServer server;
-  const std::string query = "scene=funnel_cube.nome&script=" + url_encoded(slider_script + "subdiv 3\noffset 0.05\nstate\n");
+  const std::string query =
+      "scene=funnel_cube.nome&script=" + url_encoded(slider_script + "subdiv 3\noffset 0.05\nstate\n");
   const std::string threaded_log = page_log(server, query);
   const std::string single_log = page_log(server, "threads=0&" + query);
   INFO(threaded_log);
@@ -195,8 +202,9 @@ TEST_CASE("The threaded web page computes what the one-thread page does", "[app]
   const std::vector<std::string> states = state_lines(threaded_log);
   REQUIRE(states.size() == 3);
   CHECK(states == state_lines(single_log));
-  const auto difference = nome::render::compare_images(page_picture(server, "threads=0&" + query, "single.png"),
-                                                       page_picture(server, query, "threaded.png"), 0);
+  const auto difference =
+      nome::render::compare_images(page_picture(server, "threads=0&" + query, "single.png"),
+                                   page_picture(server, query, "threaded.png"), 0);
   CHECK(difference.differing_pixels == 0);
 }
 
