@@ -72,6 +72,7 @@ class Window : private ScriptHost {
   // Script commands from outside the window (a web page's call): parsed now, run one a frame after those
   // queued; the log echoes from now on. Throws InvalidInputError for text that is not a script.
   void run_script(const std::string& text, const std::string& origin);
+  bool is_running_script() const { return !script_.is_done(); }
 
   // What tests look at.
   const MessageLog& log() const { return log_; }

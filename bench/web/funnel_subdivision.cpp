@@ -28,8 +28,10 @@ int main(int argc, char** argv) {
     Pipeline pipeline;
     pipeline.set_input(PipelineInput{scene.combined_soup(), {}, {}});
     faces = pipeline.run(settings).num_faces();
-    best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    best = std::min(
+        best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }
-  std::printf("Catmull-Clark level 4 of the merged funnel cube, one thread: %u faces in %.2f ms\n", faces, best);
+  std::printf("Catmull-Clark level 4 of the merged funnel cube, one thread: %u faces in %.2f ms\n", faces,
+              best);
   return 0;
 }

@@ -88,40 +88,28 @@ std::string url_encoded(const std::string& text) {
   return out;
 }
 
-// Chromium headless with a fresh profile (no storage of another run), given time for the page to load,
-// open its scene and run its script.
-CommandResult chromium(const std::string& output_flag, const std::string& address) {
-  const std::string profile = nome::test::private_scratch_dir("web_profile");
-  std::filesystem::remove_all(profile);
-  return nome::test::run_command(
-      "chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader "
-      "--hide-scrollbars --window-size=1280,800 --virtual-time-budget=20000 --user-data-dir=" +
-      profile + " " + output_flag + " '" + address + "'");
-}
+struct PageRun {
+  std::string log;
+  Image canvas;  // the viewer's canvas, below the page's bar
+};
 
-// What the page's log held once the budget ran out.
-std::string page_log(const PageServer& server, const std::string& query) {
-  const CommandResult r = chromium("--dump-dom", server.address(query));
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const auto begin = r.out.find("<pre id=\"log\">");
-  REQUIRE(begin != std::string::npos);
-  return r.out.substr(begin, r.out.find("</pre>", begin) - begin);
-}
-
-// The viewer's canvas, below the page's bar.
-Image page_picture(const PageServer& server, const std::string& query, const std::string& name) {
+// The page in headless Chromium (tests/app/web_page_driver.js): once its model is drawn and the address's
+// script has run, `script` runs through the page's nomeScript(); then its log and a picture are taken.
+PageRun open_page(const PageServer& server, const std::string& query, const std::string& name,
+                  const std::string& script = {}) {
   const std::string file = nome::test::private_scratch_dir("web_pictures") + "/" + name;
-  const CommandResult r = chromium("--screenshot=" + file, server.address(query));
+  const CommandResult r = nome::test::run_command(
+      "node --experimental-websocket " + std::string(NOME_SOURCE_DIR) + "/tests/app/web_page_driver.js '" +
+      server.address(query) + "' " + file + (script.empty() ? "" : " '" + script + "'"));
   INFO(r.err);
   REQUIRE(r.status == 0);
   const Image page = nome::render::read_png(file);
   REQUIRE(page.width == nome::test::viewer_width);
   REQUIRE(page.height == nome::test::viewer_height);
-  Image canvas(page.width, canvas_height);
+  PageRun run{r.out, Image(page.width, canvas_height)};
   std::copy(page.rgba.begin() + std::ptrdiff_t(bar_height) * page.width * 4, page.rgba.end(),
-            canvas.rgba.begin());
-  return canvas;
+            run.canvas.rgba.begin());
+  return run;
 }
 
 std::vector<std::string> state_lines(const std::string& log) {
@@ -145,12 +133,12 @@ std::pair<int, int> model_pixels(const Image& picture) {
 }
 
 // Ends the test case when the page or Chromium is missing (NOME_SKIP: a failure under CI).
-#define NOME_NEEDS_WEB_PAGE()                                              \
-  if (!std::filesystem::exists(web_folder / "nome.js") ||                  \
-      !std::filesystem::exists(web_folder / "nome-threads.js"))            \
-    NOME_SKIP(web_folder.string() + " has no page: `make web` builds it"); \
-  if (std::system("command -v chromium >/dev/null 2>&1") != 0)             \
-  NOME_SKIP("no chromium (make web-deps installs it)")
+#define NOME_NEEDS_WEB_PAGE()                                                                     \
+  if (!std::filesystem::exists(web_folder / "nome.js") ||                                         \
+      !std::filesystem::exists(web_folder / "nome-threads.js"))                                   \
+    NOME_SKIP(web_folder.string() + " has no page: `make web` builds it");                        \
+  if (std::system("command -v chromium >/dev/null 2>&1 && command -v node >/dev/null 2>&1") != 0) \
+  NOME_SKIP("no chromium or node (make web-deps installs chromium)")
 
 const std::string slider_script = "state\nset fp_n 5\nstate\n";
 
@@ -172,40 +160,37 @@ TEST_CASE(
   REQUIRE(desktop_states[0] != desktop_states[1]);
 
   const PageServer server;
-  const std::string query = "threads=0&scene=funnel_cube.nome&script=" + url_encoded(slider_script);
-  const std::string log = page_log(server, query);
-  INFO(log);
-  CHECK(log.find("page: first model frame") != std::string::npos);
-  CHECK(log.find("one-thread build") != std::string::npos);
-  CHECK(state_lines(log) == desktop_states);
-
-  const Image page = page_picture(server, query, "funnel_cube.png");
-  const auto [front, back] = model_pixels(page);
+  const PageRun page = open_page(
+      server, "threads=0&scene=funnel_cube.nome&script=" + url_encoded(slider_script), "funnel_cube.png");
+  INFO(page.log);
+  CHECK(page.log.find("page: first model frame") != std::string::npos);
+  CHECK(page.log.find("one-thread build") != std::string::npos);
+  CHECK(state_lines(page.log) == desktop_states);
+  const auto [front, back] = model_pixels(page.canvas);
   CHECK(front > 20000);
   CHECK(back > 20000);
   const auto difference =
-      nome::render::compare_images(nome::render::read_png(dir + "/desktop.png"), page, 24);
+      nome::render::compare_images(nome::render::read_png(dir + "/desktop.png"), page.canvas, 24);
   REQUIRE(difference.same_size);
   // Antialiased edges differ between SwiftShader and llvmpipe; the panels and the model do not.
   CHECK(difference.differing_fraction < 0.01);
 }
 
-TEST_CASE("The threaded web page computes what the one-thread page does", "[app][web]") {
+TEST_CASE(
+    "The page's script call moves a slider, and the threaded page computes what the one-thread page does",
+    "[app][web]") {
   NOME_NEEDS_WEB_PAGE();
   const PageServer server;
-  const std::string query =
-      "scene=funnel_cube.nome&script=" + url_encoded(slider_script + "subdiv 3\noffset 0.05\nstate\n");
-  const std::string threaded_log = page_log(server, query);
-  const std::string single_log = page_log(server, "threads=0&" + query);
-  INFO(threaded_log);
-  CHECK(threaded_log.find("threads build") != std::string::npos);
-  const std::vector<std::string> states = state_lines(threaded_log);
+  const std::string script = slider_script + "subdiv 3\noffset 0.05\nstate";
+  const PageRun threaded = open_page(server, "scene=funnel_cube.nome", "threaded.png", script);
+  const PageRun single = open_page(server, "threads=0&scene=funnel_cube.nome", "single.png", script);
+  INFO(threaded.log);
+  CHECK(threaded.log.find("threads build") != std::string::npos);
+  const std::vector<std::string> states = state_lines(threaded.log);
   REQUIRE(states.size() == 3);
-  CHECK(states == state_lines(single_log));
-  const auto difference =
-      nome::render::compare_images(page_picture(server, "threads=0&" + query, "single.png"),
-                                   page_picture(server, query, "threaded.png"), 0);
-  CHECK(difference.differing_pixels == 0);
+  CHECK(states[0] != states[1]);
+  CHECK(states == state_lines(single.log));
+  CHECK(nome::render::compare_images(single.canvas, threaded.canvas, 0).differing_pixels == 0);
 }
 
 TEST_CASE("The web page opens a JIPCAD example named in its address", "[app][web]") {
@@ -217,14 +202,14 @@ TEST_CASE("The web page opens a JIPCAD example named in its address", "[app][web
       nome::test::run_viewer(example + " --script " + nome::test::write_script(dir, "state\nquit\n"));
   REQUIRE(desktop.status == 0);
   const PageServer server;
-  const std::string query = "threads=0&scene=jipcad/geom__mobius_strip.nom&script=state";
-  const std::string log = page_log(server, query);
-  INFO(log);
-  const std::vector<std::string> states = state_lines(log);
+  const PageRun page =
+      open_page(server, "threads=0&scene=jipcad/geom__mobius_strip.nom&script=state", "mobius.png");
+  INFO(page.log);
+  const std::vector<std::string> states = state_lines(page.log);
   REQUIRE(states.size() == 1);
   CHECK(states == state_lines(desktop.out));
   CHECK(states[0].find("non-orientable") != std::string::npos);
-  const auto [front, back] = model_pixels(page_picture(server, query, "mobius.png"));
+  const auto [front, back] = model_pixels(page.canvas);
   CHECK(front > 2000);
   CHECK(back > 2000);
 }

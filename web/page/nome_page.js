@@ -45,6 +45,9 @@ window.nomePage = {
     logLine('page: first model frame ' + ms + ' ms after load');
     document.body.dataset.firstModelMs = ms;
   },
+  scriptDone() {
+    document.body.dataset.scriptsDone = Number(document.body.dataset.scriptsDone || 0) + 1;
+  },
   finished(status) {
     logLine('page: the viewer quit with status ' + status);
     document.body.dataset.exitStatus = status;

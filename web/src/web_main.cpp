@@ -66,6 +66,7 @@ struct Page {
   std::unique_ptr<render::SceneRenderer> renderer;
   std::unique_ptr<viewer::Window> window;
   bool has_shown_model = false;
+  bool was_running_script = false;
 };
 
 Page page;
@@ -90,6 +91,9 @@ void frame() {
     page.has_shown_model = true;
     EM_ASM(nomePage.modelShown());
   }
+  // The page (and its tests) learn when a script has run to its end.
+  if (page.was_running_script && !page.window->is_running_script()) EM_ASM(nomePage.scriptDone());
+  page.was_running_script = page.window->is_running_script();
   if (!is_running) {
     // A page cannot close itself: the quit ends the frames and tells the page.
     emscripten_cancel_main_loop();

@@ -1,0 +1,94 @@
+// Drives the web page in headless Chromium (SwiftShader's WebGL2) through the DevTools protocol, with node's
+// own WebSocket (node --experimental-websocket): opens the address, waits until the viewer has drawn its model
+// and run the address's script, runs SCRIPT through the page's nomeScript() when given, then prints the
+// page's log and writes a picture of the page.
+//   node --experimental-websocket web_page_driver.js ADDRESS PICTURE.png [SCRIPT]
+'use strict';
+
+const { spawn } = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+
+const [address, picture, script] = process.argv.slice(2);
+const patienceMs = 90000;
+const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'nome-page-'));
+const browser = spawn('chromium', [
+  '--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+  '--hide-scrollbars', '--window-size=1280,800', '--remote-debugging-port=0', '--user-data-dir=' + profile,
+  'about:blank',
+], { stdio: ['ignore', 'ignore', 'pipe'] });
+
+function finish(status, message) {
+  if (message) console.error(message);
+  browser.kill('SIGKILL');
+  fs.rmSync(profile, { recursive: true, force: true });
+  process.exit(status);
+}
+setTimeout(() => finish(1, 'the page did not finish within ' + patienceMs / 1000 + ' s'), patienceMs);
+
+// Chromium prints its DevTools address on stderr once it listens.
+function devtoolsAddress() {
+  return new Promise((resolve, reject) => {
+    let text = '';
+    browser.stderr.on('data', (chunk) => {
+      text += chunk;
+      const found = text.match(/DevTools listening on (ws:\/\/\S+)/);
+      if (found) resolve(found[1]);
+    });
+    browser.on('exit', (code) => reject(new Error('chromium exited with ' + code + ':\n' + text)));
+  });
+}
+
+async function pageSocket() {
+  const browserAddress = new URL(await devtoolsAddress());
+  const targets = await (await fetch('http://' + browserAddress.host + '/json/list')).json();
+  const target = targets.find((t) => t.type === 'page');
+  const socket = new WebSocket(target.webSocketDebuggerUrl);
+  await new Promise((resolve, reject) => {
+    socket.onopen = resolve;
+    socket.onerror = reject;
+  });
+  let next = 0;
+  const pending = new Map();
+  socket.onmessage = (event) => {
+    const message = JSON.parse(event.data);
+    if (message.id === undefined || !pending.has(message.id)) return;
+    const { resolve, reject } = pending.get(message.id);
+    pending.delete(message.id);
+    if (message.error) reject(new Error(JSON.stringify(message.error)));
+    else resolve(message.result);
+  };
+  return (method, params = {}) => new Promise((resolve, reject) => {
+    pending.set(++next, { resolve, reject });
+    socket.send(JSON.stringify({ id: next, method, params }));
+  });
+}
+
+async function main() {
+  const send = await pageSocket();
+  const evaluate = async (expression) =>
+    (await send('Runtime.evaluate', { expression, awaitPromise: true, returnByValue: true })).result.value;
+  const waitFor = async (expression) => {
+    while (!(await evaluate(expression))) await new Promise((resolve) => setTimeout(resolve, 50));
+  };
+  const scriptsDone = () => evaluate('Number(document.body.dataset.scriptsDone || 0)');
+
+  await send('Page.enable');
+  await send('Page.navigate', { url: address });
+  await waitFor('document.body && document.body.dataset.firstModelMs !== undefined');
+  if (new URL(address).searchParams.has('script')) await waitFor('document.body.dataset.scriptsDone');
+  if (script) {
+    const before = await scriptsDone();
+    if (!(await evaluate('nomeScript(' + JSON.stringify(script) + ')'))) finish(1, 'nomeScript refused the script');
+    while ((await scriptsDone()) <= before) await new Promise((resolve) => setTimeout(resolve, 50));
+  }
+  // Two more frames: the last command's result is on the canvas.
+  await evaluate('new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))');
+  const shot = await send('Page.captureScreenshot', { format: 'png' });
+  fs.writeFileSync(picture, Buffer.from(shot.data, 'base64'));
+  process.stdout.write(await evaluate('document.getElementById("log").textContent'));
+  finish(0);
+}
+
+main().catch((error) => finish(1, error.stack || String(error)));
