@@ -89,6 +89,11 @@ web-bench: web
 	echo "native:      $$native"; echo "WebAssembly: $$web"; \
 	n=$$(echo "$$native" | awk '{ print $$(NF - 1) }'); w=$$(echo "$$web" | awk '{ print $$(NF - 1) }'); \
 	awk -v n=$$n -v w=$$w 'BEGIN { printf "WebAssembly / native: %.2f (target <= 3)\n", w / n }'
+	@python3 web/serve.py $(WEBDIR) $(WEB_PORT) >/dev/null 2>&1 & server=$$!; sleep 1; \
+	for query in "scene=funnel_cube.nome" "threads=0&scene=funnel_cube.nome"; do \
+	  node --experimental-websocket tests/app/web_page_driver.js "http://127.0.0.1:$(WEB_PORT)/?$$query" \
+	    build/web-bench.png | grep -E "page: (threads|one-thread|first)" | tr '\n' ' '; echo "(target <= 3000 ms)"; \
+	done; kill $$server
 
 serve: web
 	python3 web/serve.py $(WEBDIR) $(WEB_PORT)

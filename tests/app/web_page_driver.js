@@ -75,6 +75,7 @@ async function main() {
   const scriptsDone = () => evaluate('Number(document.body.dataset.scriptsDone || 0)');
 
   await send('Page.enable');
+  await send('Emulation.setDeviceMetricsOverride', { width: 1280, height: 800, deviceScaleFactor: 1, mobile: false });
   await send('Page.navigate', { url: address });
   await waitFor('document.body && document.body.dataset.firstModelMs !== undefined');
   if (new URL(address).searchParams.has('script')) await waitFor('document.body.dataset.scriptsDone');
