@@ -1,8 +1,9 @@
 // Drives the web page in headless Chromium (SwiftShader's WebGL2) through the DevTools protocol, with node's
 // own WebSocket (node --experimental-websocket): opens the address, waits until the viewer has drawn its model
-// and run the address's script, runs SCRIPT through the page's nomeScript() when given, then prints the
-// page's log and writes a picture of the page.
-//   node --experimental-websocket web_page_driver.js ADDRESS PICTURE.png [SCRIPT]
+// and run the address's script, picks FILE in the page's Open dialog when given (as a user choosing a file on
+// their disk), runs SCRIPT through the page's nomeScript() when given, then prints the page's log and writes a
+// picture of the page. Downloads the page offers land in DOWNLOADS when given.
+//   node --experimental-websocket web_page_driver.js ADDRESS PICTURE.png [SCRIPT [FILE [DOWNLOADS]]]
 'use strict';
 
 const { spawn } = require('child_process');
@@ -10,8 +11,8 @@ const fs = require('fs');
 const os = require('os');
 const path = require('path');
 
-const [address, picture, script] = process.argv.slice(2);
-const patienceMs = 90000;
+const [address, picture, script, upload, downloads] = process.argv.slice(2);
+const patienceMs = Number(process.env.NOME_DRIVER_PATIENCE_MS || 90000);
 const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'nome-page-'));
 const browser = spawn('chromium', [
   '--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
@@ -19,11 +20,20 @@ const browser = spawn('chromium', [
   'about:blank',
 ], { stdio: ['ignore', 'ignore', 'pipe'] });
 
+// The profile goes once Chromium has exited; its helper processes may still write there a moment longer.
 function finish(status, message) {
   if (message) console.error(message);
+  const leave = () => setTimeout(() => {
+    try {
+      fs.rmSync(profile, { recursive: true, force: true, maxRetries: 5 });
+    } catch (error) {
+      console.error('left ' + profile + ': ' + error.message);
+    }
+    process.exit(status);
+  }, 200);
+  if (browser.exitCode !== null || browser.signalCode !== null) return leave();
+  browser.once('exit', leave);
   browser.kill('SIGKILL');
-  fs.rmSync(profile, { recursive: true, force: true });
-  process.exit(status);
 }
 setTimeout(() => finish(1, 'the page did not finish within ' + patienceMs / 1000 + ' s'), patienceMs);
 
@@ -79,6 +89,14 @@ async function main() {
   await send('Page.navigate', { url: address });
   await waitFor('document.body && document.body.dataset.firstModelMs !== undefined');
   if (new URL(address).searchParams.has('script')) await waitFor('document.body.dataset.scriptsDone');
+  if (downloads) await send('Page.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
+  if (upload) {
+    const root = await send('DOM.getDocument');
+    const input = await send('DOM.querySelector', { nodeId: root.root.nodeId, selector: '#file' });
+    await send('DOM.setFileInputFiles', { nodeId: input.nodeId, files: [path.resolve(upload)] });
+    // The window's title names the open file.
+    await waitFor('document.title.includes(' + JSON.stringify(path.basename(upload)) + ')');
+  }
   if (script) {
     const before = await scriptsDone();
     if (!(await evaluate('nomeScript(' + JSON.stringify(script) + ')'))) finish(1, 'nomeScript refused the script');
@@ -89,6 +107,12 @@ async function main() {
   const shot = await send('Page.captureScreenshot', { format: 'png' });
   fs.writeFileSync(picture, Buffer.from(shot.data, 'base64'));
   process.stdout.write(await evaluate('document.getElementById("log").textContent'));
+  // A download is written after its click: wait until no partial file is left.
+  if (downloads) {
+    const isWritten = () => fs.readdirSync(downloads).length > 0 &&
+                            !fs.readdirSync(downloads).some((name) => name.endsWith('.crdownload'));
+    for (let i = 0; i < 100 && !isWritten(); ++i) await new Promise((resolve) => setTimeout(resolve, 50));
+  }
   finish(0);
 }
 

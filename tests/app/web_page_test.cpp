@@ -18,6 +18,7 @@
 #include "app/viewer_support.hpp"
 #include "render/image.hpp"
 #include "render/image_diff.hpp"
+#include "support/scratch_files.hpp"
 #include "support/shared_examples.hpp"
 #include "support/skip.hpp"
 
@@ -94,13 +95,16 @@ struct PageRun {
 };
 
 // The page in headless Chromium (tests/app/web_page_driver.js): once its model is drawn and the address's
-// script has run, `script` runs through the page's nomeScript(); then its log and a picture are taken.
+// script has run, `picked_file` is chosen in the page's Open dialog and `script` runs through the page's
+// nomeScript(); then its log and a picture are taken, and its downloads are in `downloads`.
 PageRun open_page(const PageServer& server, const std::string& query, const std::string& name,
-                  const std::string& script = {}) {
+                  const std::string& script = {}, const std::string& picked_file = {},
+                  const std::string& downloads = {}) {
   const std::string file = nome::test::private_scratch_dir("web_pictures") + "/" + name;
   const CommandResult r = nome::test::run_command(
       "node --experimental-websocket " + std::string(NOME_SOURCE_DIR) + "/tests/app/web_page_driver.js '" +
-      server.address(query) + "' " + file + (script.empty() ? "" : " '" + script + "'"));
+      server.address(query) + "' " + file + " '" + script + "'" +
+      (picked_file.empty() ? "" : " " + picked_file + " " + downloads));
   INFO(r.err);
   REQUIRE(r.status == 0);
   const Image page = nome::render::read_png(file);
@@ -155,7 +159,7 @@ TEST_CASE(
                                                        std::to_string(canvas_height) + " --script " + script);
   INFO(desktop.err);
   REQUIRE(desktop.status == 0);
-  const std::vector<std::string> desktop_states = state_lines(desktop.out);
+  const std::vector<std::string> desktop_states = state_lines(desktop.err);
   REQUIRE(desktop_states.size() == 2);
   REQUIRE(desktop_states[0] != desktop_states[1]);
 
@@ -207,9 +211,37 @@ TEST_CASE("The web page opens a JIPCAD example named in its address", "[app][web
   INFO(page.log);
   const std::vector<std::string> states = state_lines(page.log);
   REQUIRE(states.size() == 1);
-  CHECK(states == state_lines(desktop.out));
+  CHECK(states == state_lines(desktop.err));
   CHECK(states[0].find("non-orientable") != std::string::npos);
   const auto [front, back] = model_pixels(page.canvas);
   CHECK(front > 2000);
   CHECK(back > 2000);
+}
+
+TEST_CASE(
+    "A scene picked from the user's disk opens in the page, and saving it downloads what the desktop saves",
+    "[app][web]") {
+  NOME_NEEDS_WEB_PAGE();
+  const std::string dir = nome::test::private_scratch_dir("web_upload");
+  const std::string picked = dir + "/picked_funnels.nome";
+  std::filesystem::copy_file(nome::test::assets + "funnel_cube.nome", picked,
+                             std::filesystem::copy_options::overwrite_existing);
+  const std::string desktop_copy = dir + "/desktop/picked_funnels.nome";
+  std::filesystem::create_directories(dir + "/desktop");
+  std::filesystem::copy_file(picked, desktop_copy);
+  const CommandResult desktop = nome::test::run_viewer(
+      desktop_copy + " --script " + nome::test::write_script(dir, "set fp_n 6\nstate\nkey Ctrl+S\nquit\n"));
+  INFO(desktop.err);
+  REQUIRE(desktop.status == 0);
+
+  const std::string downloads = dir + "/downloads";
+  std::filesystem::create_directories(downloads);
+  const PageServer server;
+  const PageRun page = open_page(server, "threads=0&scene=funnel_cube.nome", "picked.png",
+                                 "set fp_n 6\nstate\nkey Ctrl+S", picked, downloads);
+  INFO(page.log);
+  CHECK(state_lines(page.log) == state_lines(desktop.err));
+  REQUIRE(std::filesystem::exists(downloads + "/picked_funnels.nome"));
+  CHECK(nome::test::file_bytes(downloads + "/picked_funnels.nome") == nome::test::file_bytes(desktop_copy));
+  CHECK(nome::test::file_bytes(desktop_copy) != nome::test::file_bytes(picked));
 }
