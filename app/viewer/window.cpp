@@ -61,6 +61,10 @@ Window::Window(Platform& platform, render::SceneRenderer& renderer, const Viewer
 }
 
 Window::~Window() {
+  keep_layout();
+}
+
+void Window::keep_layout() {
   if (layout_file_.empty()) return;
   layout_settings_.window_size = glm::ivec2(platform_.window_size());
   try {

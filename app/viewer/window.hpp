@@ -73,6 +73,9 @@ class Window : private ScriptHost {
   // queued; the log echoes from now on. Throws InvalidInputError for text that is not a script.
   void run_script(const std::string& text, const std::string& origin);
   bool is_running_script() const { return !script_.is_done(); }
+  // Writes the panels' arrangement for the next run (the window does when it closes; a web page, whose
+  // window never closes, when it is hidden). Not in a scripted session, which starts from the defaults.
+  void keep_layout();
 
   // What tests look at.
   const MessageLog& log() const { return log_; }

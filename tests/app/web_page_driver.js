@@ -12,8 +12,10 @@ const os = require('os');
 const path = require('path');
 
 const [address, picture, script, upload, downloads] = process.argv.slice(2);
-const patienceMs = Number(process.env.NOME_DRIVER_PATIENCE_MS || 90000);
-const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'nome-page-'));
+const patienceMs = Number(process.env.NOME_PAGE_PATIENCE_MS || 90000);
+// NOME_PAGE_PROFILE keeps the browser's profile (its storage) for a later run; otherwise it is a fresh one.
+const keptProfile = process.env.NOME_PAGE_PROFILE;
+const profile = keptProfile || fs.mkdtempSync(path.join(os.tmpdir(), 'nome-page-'));
 const browser = spawn('chromium', [
   '--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
   '--hide-scrollbars', '--window-size=1280,800', '--remote-debugging-port=0', '--user-data-dir=' + profile,
@@ -24,6 +26,7 @@ const browser = spawn('chromium', [
 function finish(status, message) {
   if (message) console.error(message);
   const leave = () => setTimeout(() => {
+    if (keptProfile) process.exit(status);
     try {
       fs.rmSync(profile, { recursive: true, force: true, maxRetries: 5 });
     } catch (error) {
@@ -102,6 +105,8 @@ async function main() {
     if (!(await evaluate('nomeScript(' + JSON.stringify(script) + ')'))) finish(1, 'nomeScript refused the script');
     while ((await scriptsDone()) <= before) await new Promise((resolve) => setTimeout(resolve, 50));
   }
+  // The page keeps its layout and stores as when it is hidden.
+  await evaluate('nomePage.keepState()');
   // Two more frames: the last command's result is on the canvas.
   await evaluate('new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))');
   const shot = await send('Page.captureScreenshot', { format: 'png' });

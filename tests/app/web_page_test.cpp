@@ -96,12 +96,14 @@ struct PageRun {
 
 // The page in headless Chromium (tests/app/web_page_driver.js): once its model is drawn and the address's
 // script has run, `picked_file` is chosen in the page's Open dialog and `script` runs through the page's
-// nomeScript(); then its log and a picture are taken, and its downloads are in `downloads`.
+// nomeScript(); then its log and a picture are taken, and its downloads are in `downloads`. A kept profile
+// holds the browser's storage from one visit to the next.
 PageRun open_page(const PageServer& server, const std::string& query, const std::string& name,
                   const std::string& script = {}, const std::string& picked_file = {},
-                  const std::string& downloads = {}) {
+                  const std::string& downloads = {}, const std::string& kept_profile = {}) {
   const std::string file = nome::test::private_scratch_dir("web_pictures") + "/" + name;
   const CommandResult r = nome::test::run_command(
+      (kept_profile.empty() ? "" : "NOME_PAGE_PROFILE=" + kept_profile + " ") +
       "node --experimental-websocket " + std::string(NOME_SOURCE_DIR) + "/tests/app/web_page_driver.js '" +
       server.address(query) + "' " + file + " '" + script + "'" +
       (picked_file.empty() ? "" : " " + picked_file + " " + downloads));
@@ -244,4 +246,36 @@ TEST_CASE(
   REQUIRE(std::filesystem::exists(downloads + "/picked_funnels.nome"));
   CHECK(nome::test::file_bytes(downloads + "/picked_funnels.nome") == nome::test::file_bytes(desktop_copy));
   CHECK(nome::test::file_bytes(desktop_copy) != nome::test::file_bytes(picked));
+}
+
+namespace {
+
+// The mean brightness of the left sidebar: light or dark theme.
+double sidebar_brightness(const Image& canvas) {
+  double sum = 0.0;
+  int count = 0;
+  for (int y = 100; y < canvas.height - 100; ++y)
+    for (int x = 0; x < 240; ++x, ++count) {
+      const auto* p = canvas.pixel(x, y);
+      sum += (p[0] + p[1] + p[2]) / 3.0;
+    }
+  return sum / count;
+}
+
+}  // namespace
+
+TEST_CASE("The page keeps its layout in the browser's storage for the next visit", "[app][web]") {
+  NOME_NEEDS_WEB_PAGE();
+  const std::string profile = nome::test::private_scratch_dir("web_kept_profile");
+  std::filesystem::remove_all(profile);
+  std::filesystem::create_directories(profile);
+  const PageServer server;
+  const std::string query = "threads=0&scene=funnel_cube.nome";
+  const PageRun fresh = open_page(server, query, "fresh.png", "state");
+  const PageRun dark = open_page(server, query, "dark.png", "action theme", {}, {}, profile);
+  const PageRun next_visit = open_page(server, query, "next_visit.png", "state", {}, {}, profile);
+  INFO(next_visit.log);
+  CHECK(sidebar_brightness(fresh.canvas) > 150.0);
+  CHECK(sidebar_brightness(dark.canvas) < 100.0);
+  CHECK(sidebar_brightness(next_visit.canvas) < 100.0);
 }

@@ -48,6 +48,11 @@ window.nomePage = {
   scriptDone() {
     document.body.dataset.scriptsDone = Number(document.body.dataset.scriptsDone || 0) + 1;
   },
+  // Writes the layout and the stores to the browser's storage; resolves once they are there.
+  keepState() {
+    Module.ccall('nome_keep_layout', null, [], []);
+    return new Promise((resolve) => FS.syncfs(false, (error) => resolve(!error)));
+  },
   finished(status) {
     logLine('page: the viewer quit with status ' + status);
     document.body.dataset.exitStatus = status;
@@ -66,6 +71,9 @@ function openUserFile(file) {
   reader.readAsArrayBuffer(file);
 }
 
+document.addEventListener('visibilitychange', () => {
+  if (document.visibilityState === 'hidden' && window.FS) nomePage.keepState();
+});
 document.getElementById('open').onclick = () => nomePage.pickFile();
 document.getElementById('file').onchange = (event) => {
   for (const file of event.target.files) openUserFile(file);

@@ -128,11 +128,18 @@ EMSCRIPTEN_KEEPALIVE void nome_open(const char* path) {
   if (page.window) page.window->drop({std::filesystem::path(path)});
 }
 
+// The page is being hidden or left: the layout goes to the stores (the page then writes them to its storage).
+EMSCRIPTEN_KEEPALIVE void nome_keep_layout() {
+  if (page.window) page.window->keep_layout();
+}
+
 // Script commands, one a line, as `nome --script` takes them; the log echoes to the page's console.
 EMSCRIPTEN_KEEPALIVE int nome_script(const char* text) {
   if (!page.window) return 0;
   try {
     page.window->run_script(text, "page script");
+    // Reported done by the frame that runs its last command, even when that is the next one.
+    page.was_running_script = true;
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "nome: " << e.what() << "\n";
