@@ -9,6 +9,10 @@ PACKAGES := build-essential cmake pkg-config clang-format lib3mf-dev libglfw3-de
 WEB_PACKAGES := emscripten node-acorn nlohmann-json3-dev chromium
 
 JOBS    ?= 2
+# Builds run as sub-makes of this one: under a parallel make they share its job slots (make test runs the
+# test build and both web builds side by side, so no core idles while one of them links); on their own they
+# take JOBS.
+PARALLEL = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
 EXAMPLE ?= assets/funnel_cube.nome
 RELEASE := build/release
 TESTDIR := build/test
@@ -27,7 +31,7 @@ GALLERY_SIZE ?= 640x480
 PREFIX     ?= /usr/local
 PACKAGEDIR := build/package
 
-.PHONY: web web-deps serve web-bench gltf-validator run test sanitize-full deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery layers \
+.PHONY: web web-one web-threads web-deps serve web-bench gltf-validator run test sanitize-full deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery layers \
         install package package-test icon hardening mutants
 
 deps:
@@ -48,7 +52,7 @@ WEB_PORT   ?= 8040
 EMSDK_ENV  := NODE_PATH=/usr/share/nodejs
 WEB_CMAKE  := -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON -DNOME_IMGUI_SOURCE_DIR=$(CURDIR)/$(IMGUI_SRC) \
               -DNOME_WEB_SCENES=$(CURDIR)/$(WEB_SCENES)
-web-deps:
+web-deps: deps
 	@missing=""; for p in $(WEB_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then \
 	  echo "Installing missing packages:$$missing"; \
@@ -68,12 +72,16 @@ web-deps:
 	@cp assets/*.nome assets/*.obj assets/*.stl assets/*.sif assets/*.slf $(WEB_SCENES)/ 2>/dev/null || true
 	@if [ -d ../shared/examples/jipcad ]; then mkdir -p $(WEB_SCENES)/jipcad && cp ../shared/examples/jipcad/*.nom $(WEB_SCENES)/jipcad/; fi
 
-web: web-deps
+web-one: web-deps
 	$(EMSDK_ENV) emcmake cmake -S . -B build/web-one $(WEB_CMAKE) >/dev/null
-	$(EMSDK_ENV) cmake --build build/web-one -j$(JOBS)
+	+$(EMSDK_ENV) $(MAKE) --no-print-directory -C build/web-one $(PARALLEL)
+
+web-threads: web-deps
 	$(EMSDK_ENV) emcmake cmake -S . -B build/web-threads $(WEB_CMAKE) -DNOME_WEB_THREADS=ON \
 	  -DCMAKE_CXX_FLAGS=-pthread -DCMAKE_C_FLAGS=-pthread >/dev/null
-	$(EMSDK_ENV) cmake --build build/web-threads -j$(JOBS)
+	+$(EMSDK_ENV) $(MAKE) --no-print-directory -C build/web-threads $(PARALLEL)
+
+web: web-one web-threads
 	@rm -rf $(WEBDIR) && mkdir -p $(WEBDIR)
 	@cp web/page/* build/web-one/web/nome.js build/web-one/web/nome.wasm build/web-one/web/nome.data \
 	  build/web-threads/web/nome-threads.* $(WEBDIR)/
@@ -85,6 +93,7 @@ web: web-deps
 web-bench: web
 	cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DNOME_TESTS=OFF -DNOME_BENCH=ON >/dev/null
 	cmake --build build/bench -j$(JOBS) --target nome_bench_web_kernel
+	+$(EMSDK_ENV) $(MAKE) --no-print-directory -C build/web-one $(PARALLEL) nome_web_kernel_bench
 	@native=$$(build/bench/bench/nome_bench_web_kernel); web=$$(node build/web-one/web/nome-kernel-bench.js); \
 	echo "native:      $$native"; echo "WebAssembly: $$web"; \
 	n=$$(echo "$$native" | awk '{ print $$(NF - 1) }'); w=$$(echo "$$web" | awk '{ print $$(NF - 1) }'); \
@@ -120,12 +129,13 @@ run: release
 test-build: deps gltf-validator
 	cmake -S . -B $(TESTDIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNOME_SANITIZE=ON -DCMAKE_UNITY_BUILD=ON \
 	  "-DNOME_SANITIZE_SKIP=alignment;null" >/dev/null
-	cmake --build $(TESTDIR) -j$(JOBS)
+	+$(MAKE) --no-print-directory -C $(TESTDIR) $(PARALLEL)
 
 # A test case that cannot find the shared examples, llvmpipe, node or the web page fails under CI (`CI` set);
 # elsewhere it skips, writes why to the skip log and is counted here. The web page's tests open build/web in
-# headless Chromium.
-test: format-check test-build web
+# headless Chromium. The three builds run side by side in JOBS slots.
+test:
+	+@$(MAKE) --no-print-directory $(PARALLEL) format-check test-build web
 	@rm -f $(TESTDIR)/skipped_tests.log
 	cd $(TESTDIR) && $(SANITIZER_ENV) ctest --output-on-failure -j$(JOBS)
 	@if [ -s $(TESTDIR)/skipped_tests.log ]; then \
