@@ -279,3 +279,23 @@ TEST_CASE("The page keeps its layout in the browser's storage for the next visit
   CHECK(sidebar_brightness(dark.canvas) < 100.0);
   CHECK(sidebar_brightness(next_visit.canvas) < 100.0);
 }
+
+TEST_CASE("Unsaved changes in the page are offered back on the next visit", "[app][web]") {
+  NOME_NEEDS_WEB_PAGE();
+  const std::string profile = nome::test::private_scratch_dir("web_recovery_profile");
+  std::filesystem::remove_all(profile);
+  std::filesystem::create_directories(profile);
+  const PageServer server;
+  const std::string query = "threads=0&scene=funnel_cube.nome";
+  // The visit ends without saving, as a closed tab or a crash ends it.
+  const PageRun edited = open_page(server, query, "edited.png", slider_script, {}, {}, profile);
+  const std::vector<std::string> edited_states = state_lines(edited.log);
+  REQUIRE(edited_states.size() == 2);
+  REQUIRE(edited_states[0] != edited_states[1]);
+  const PageRun recovered =
+      open_page(server, query, "recovered.png", "recover restore\nstate", {}, {}, profile);
+  INFO(recovered.log);
+  const std::vector<std::string> recovered_states = state_lines(recovered.log);
+  REQUIRE(recovered_states.size() == 1);
+  CHECK(recovered_states[0] == edited_states[1]);
+}

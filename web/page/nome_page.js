@@ -22,12 +22,21 @@ async function sceneArgument(name) {
   const response = await fetch(name);
   if (!response.ok) throw new Error(name + ': ' + response.status + ' ' + response.statusText);
   const file = home + '/' + decodeURIComponent(name.split('/').pop().split('?')[0]);
-  pendingFiles.push([file, new Uint8Array(await response.arrayBuffer())]);
+  const modified = Date.parse(response.headers.get('Last-Modified'));
+  pendingFiles.push([file, new Uint8Array(await response.arrayBuffer()), isNaN(modified) ? undefined : modified]);
   return file;
 }
 
 let bundledScenes = [];
+// [path, bytes, modified (ms since 1970) where the origin tells]
 const pendingFiles = [];
+
+// A file the viewer opens keeps its origin's date, not the moment this visit wrote it: the viewer offers
+// the recovery of unsaved changes only when the recovery file is newer than the document.
+function writeFile(path, data, modified) {
+  FS.writeFile(path, data);
+  if (modified !== undefined) FS.utime(path, modified, modified);
+}
 
 window.nomePage = {
   pickFile() { document.getElementById('file').click(); },
@@ -65,7 +74,7 @@ function openUserFile(file) {
   reader.onload = () => {
     FS.mkdirTree(home + '/uploads');
     const path = home + '/uploads/' + file.name.replace(/\//g, '_');
-    FS.writeFile(path, new Uint8Array(reader.result));
+    writeFile(path, new Uint8Array(reader.result), file.lastModified);
     Module.ccall('nome_open', null, ['string'], [path]);
   };
   reader.readAsArrayBuffer(file);
@@ -125,7 +134,7 @@ async function start() {
       ENV.XDG_CONFIG_HOME = '/persist/config';
       ENV.XDG_STATE_HOME = '/persist/state';
       FS.mkdirTree(home);
-      for (const [path, data] of pendingFiles) FS.writeFile(path, data);
+      for (const [path, data, modified] of pendingFiles) writeFile(path, data, modified);
       // The layout, recent files and crash recovery live in IndexedDB across visits. A browser that keeps
       // no storage (private windows, some headless runs) answers late or never: the viewer then starts
       // without it after a second.
@@ -150,7 +159,11 @@ async function start() {
         FS.syncfs(false, () => { isSaving = false; });
       }, 2000);
     }],
-    onRuntimeInitialized() { message.style.display = 'none'; },
+    onRuntimeInitialized() {
+      message.style.display = 'none';
+      // The bundled scenes are unpacked anew on each visit and never change: one date for all visits.
+      for (const name of bundledScenes) FS.utime('/scenes/' + name, 0, 0);
+    },
   };
   const script = document.createElement('script');
   script.src = threads ? 'nome-threads.js' : 'nome.js';
