@@ -262,18 +262,26 @@ double sidebar_brightness(const Image& canvas) {
   return sum / count;
 }
 
+// A browser profile with no storage yet, kept from one visit to the next.
+std::string empty_profile(const std::string& name) {
+  const std::string profile = nome::test::private_scratch_dir(name);
+  std::filesystem::remove_all(profile);
+  std::filesystem::create_directories(profile);
+  return profile;
+}
+
+// The one-thread page on the funnel cube: its storage is the same in both builds.
+const std::string kept_query = "threads=0&scene=funnel_cube.nome";
+
 }  // namespace
 
 TEST_CASE("The page keeps its layout in the browser's storage for the next visit", "[app][web]") {
   NOME_NEEDS_WEB_PAGE();
-  const std::string profile = nome::test::private_scratch_dir("web_kept_profile");
-  std::filesystem::remove_all(profile);
-  std::filesystem::create_directories(profile);
+  const std::string profile = empty_profile("web_kept_profile");
   const PageServer server;
-  const std::string query = "threads=0&scene=funnel_cube.nome";
-  const PageRun fresh = open_page(server, query, "fresh.png", "state");
-  const PageRun dark = open_page(server, query, "dark.png", "action theme", {}, {}, profile);
-  const PageRun next_visit = open_page(server, query, "next_visit.png", "state", {}, {}, profile);
+  const PageRun fresh = open_page(server, kept_query, "fresh.png", "state");
+  const PageRun dark = open_page(server, kept_query, "dark.png", "action theme", {}, {}, profile);
+  const PageRun next_visit = open_page(server, kept_query, "next_visit.png", "state", {}, {}, profile);
   INFO(next_visit.log);
   CHECK(sidebar_brightness(fresh.canvas) > 150.0);
   CHECK(sidebar_brightness(dark.canvas) < 100.0);
@@ -282,18 +290,15 @@ TEST_CASE("The page keeps its layout in the browser's storage for the next visit
 
 TEST_CASE("Unsaved changes in the page are offered back on the next visit", "[app][web]") {
   NOME_NEEDS_WEB_PAGE();
-  const std::string profile = nome::test::private_scratch_dir("web_recovery_profile");
-  std::filesystem::remove_all(profile);
-  std::filesystem::create_directories(profile);
+  const std::string profile = empty_profile("web_recovery_profile");
   const PageServer server;
-  const std::string query = "threads=0&scene=funnel_cube.nome";
   // The visit ends without saving, as a closed tab or a crash ends it.
-  const PageRun edited = open_page(server, query, "edited.png", slider_script, {}, {}, profile);
+  const PageRun edited = open_page(server, kept_query, "edited.png", slider_script, {}, {}, profile);
   const std::vector<std::string> edited_states = state_lines(edited.log);
   REQUIRE(edited_states.size() == 2);
   REQUIRE(edited_states[0] != edited_states[1]);
   const PageRun recovered =
-      open_page(server, query, "recovered.png", "recover restore\nstate", {}, {}, profile);
+      open_page(server, kept_query, "recovered.png", "recover restore\nstate", {}, {}, profile);
   INFO(recovered.log);
   const std::vector<std::string> recovered_states = state_lines(recovered.log);
   REQUIRE(recovered_states.size() == 1);
