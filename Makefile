@@ -133,15 +133,17 @@ test-build: deps gltf-validator
 
 # A test case that cannot find the shared examples, llvmpipe, node or the web page fails under CI (`CI` set);
 # elsewhere it skips, writes why to the skip log and is counted here. The web page's tests open build/web in
-# headless Chromium. The three builds run side by side in JOBS slots.
+# headless Chromium. The three builds run side by side in JOBS slots. Then the cases that read ../shared run
+# again with an empty shared folder (skips allowed): a clone without it passes too.
 test:
 	+@$(MAKE) --no-print-directory $(PARALLEL) format-check test-build web
-	@rm -f $(TESTDIR)/skipped_tests.log
+	@rm -f $(TESTDIR)/skipped_tests.log $(TESTDIR)/shared_use.log
 	cd $(TESTDIR) && $(SANITIZER_ENV) ctest --output-on-failure -j$(JOBS)
 	@if [ -s $(TESTDIR)/skipped_tests.log ]; then \
 	  echo "Skipped test cases: $$(wc -l < $(TESTDIR)/skipped_tests.log) (the CI run fails them)"; \
 	  sort $(TESTDIR)/skipped_tests.log | sed 's/^/  /'; \
 	else echo "Skipped test cases: 0"; fi
+	$(SANITIZER_ENV) python3 tests/without_shared.py $(TESTDIR)
 
 # The Khronos glTF validator (npm's gltf-validator) that the .glb export test runs with node; without npm
 # or the network the test skips and says so.

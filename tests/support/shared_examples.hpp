@@ -7,8 +7,10 @@
 namespace nome::test {
 
 // The example files written by others (the `shared` folder's examples/<folder>/ beside the checkout; CI
-// has it):
-// they are read from there, never copied into the project.
+// has it): they are read from there, never copied into the project. NOME_SHARED_DIR names another shared
+// folder: `make test` re-runs the cases that read it with an empty one, as a clone without it would.
+// Each case that asks is written to the file NOME_SHARED_USE_LOG names (its program and its name), which
+// is how that re-run knows them.
 std::string shared_examples_dir(const std::string& folder);
 bool has_shared_examples(const std::string& folder);
 

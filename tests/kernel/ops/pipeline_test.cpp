@@ -382,3 +382,41 @@ TEST_CASE("the result's report, derived from a stage's input, is the one counted
         test::check_same_report(live.result_report(), topology_report(result));
       }
 }
+
+TEST_CASE("results lent out at several stages are taken back when their stage is shown again", "[kernel]") {
+  const Mesh torus = build_mesh(test::torus(8, 6));
+  PipelineSettings s = full_options();
+  Pipeline live;
+  // The caller lends every result it shows, as a viewer does: the offset's, then the subdivision's while
+  // the offset is left out, then the offset's again (its own lent result, cached).
+  std::vector<Mesh> shown;
+  shown.reserve(8);
+  int copies = 0;
+  const auto show = [&](Stage stage) {
+    s.stage = stage;
+    const Mesh& result = live.run(torus, s);
+    Pipeline fresh;
+    const Mesh& expected = fresh.run(torus, s);
+    CHECK(result.positions() == expected.positions());
+    CHECK(result.corner_vertices() == expected.corner_vertices());
+    shown.emplace_back();
+    Mesh& lent = shown.back();
+    if (live.lend_result(lent, [&lent, &copies] { return ++copies, Mesh(lent); }))
+      CHECK(lent.num_faces() == expected.num_faces());
+  };
+  show(Stage::offset);
+  show(Stage::subdivided);
+  show(Stage::offset);
+  CHECK(live.work(Stage::offset) == StageWork::cached);
+  CHECK(copies == 2);  // the subdivision's, then the offset's: neither made again
+  show(Stage::subdivided_offset);
+  show(Stage::subdivided);
+  show(Stage::subdivided_offset);
+  CHECK(live.work(Stage::subdivided_offset) == StageWork::cached);
+  // Another level count makes them anew: no copy is asked for.
+  const int before = copies;
+  s.subdivision_levels = 1;
+  show(Stage::offset);
+  CHECK(live.work(Stage::offset) == StageWork::rebuilt);
+  CHECK(copies == before);
+}

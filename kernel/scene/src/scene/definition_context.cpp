@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string_view>
+
+#include "nome/error.hpp"
 
 namespace nome::scene {
 namespace {
@@ -147,6 +150,21 @@ Color DefinitionContext::surface_color(const Name& surface) {
 
 void DefinitionContext::error(SourceLocation at, std::string message) {
   errors_.push_back(scene_.located(at, std::move(message)));
+}
+
+void DefinitionContext::expect_faces(SourceLocation at, const std::string& what, double faces) const {
+  const SceneOptions& options = scene_.options_;
+  if (faces <= double(options.face_budget)) return;
+  char count[64];
+  // About 150 bytes a face from the scene's pieces to the merged mesh (SceneOptions).
+  std::snprintf(count, sizeof count, "%.0f faces (about %.1f GB)", faces, faces * 150.0 / double(1 << 30));
+  const std::string estimate = what + " would make about " + count;
+  if (faces > double(no_index) - 1) throw EvaluationError(at, estimate + ", more than Nome can number");
+  if (options.force) return;
+  throw BudgetError(scene_
+                        .located(at, estimate + ", over the scene's budget of " +
+                                         std::to_string(options.face_budget) + " faces")
+                        .to_string());
 }
 
 }  // namespace nome::scene

@@ -62,6 +62,10 @@ class DefinitionContext : public DefinitionScope {
   void add_rim(const Name& name, const std::vector<Name>& vertices, bool is_loop);
   Color surface_color(const Name& surface);
   void error(SourceLocation at, std::string message);
+  // Refuses a piece before it is made: `what` (the statement, "torus 't'") would make about `faces`
+  // faces. Over the scene's face budget it throws BudgetError at `at` with the estimate, unless forced;
+  // beyond 32-bit ids, an EvaluationError even when forced.
+  void expect_faces(SourceLocation at, const std::string& what, double faces) const;
 
   Piece& piece() { return piece_; }
   // Where each vertex of the piece was copied from, in order, when every one added through vertex() was

@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
+#include "nome/error.hpp"
 #include "nome/scene/scene.hpp"
 #include "nome/scene/statement_kinds.hpp"
 #include "scene/definition_context.hpp"
@@ -186,6 +187,8 @@ bool Scene::move_vertices(Index placement, Buffer<Vec3>& previous) {
     previous = std::exchange(p.world.soup.positions, std::move(moved.positions));
   } catch (const EvaluationError&) {
     return false;
+  } catch (const BudgetError&) {
+    return false;  // the whole evaluation refuses it again, and says why
   }
   sort_unique(reads);
   p.reads = std::move(reads);
@@ -270,7 +273,13 @@ std::optional<std::string> Scene::evaluate_all(const std::vector<Index>& placeme
       if (placements_[i].references != is_referencing) continue;
       std::vector<Index> reads;
       std::vector<VertexRef> copied_from;
-      Piece piece = evaluate_placement(i, reads, errors, copied_from);
+      Piece piece;
+      try {
+        piece = evaluate_placement(i, reads, errors, copied_from);
+      } catch (const BudgetError& e) {
+        // A statement refused its piece before making it (DefinitionContext::expect_faces).
+        return std::string(e.what());
+      }
       Placement& p = placements_[i];
       if (!is_referencing && is_vertex_index_current_ && piece.soup.vertex_names != p.world.soup.vertex_names)
         is_vertex_index_current_ = false;

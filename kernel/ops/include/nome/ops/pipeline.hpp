@@ -140,8 +140,10 @@ class Pipeline {
   // Lends the last run's result, when it is a subdivision's or an offset's, to a caller that keeps it (a
   // viewer shows it without copying it first): swapped with `mesh`. A later run that takes the stage's
   // result up again (moved vertices, the same topology) calls `copy_back` for a copy of it, positions and
-  // all; one that makes the stage anew, or leaves it out, does not call it. Without `copy_back` that run
-  // makes the result again. Otherwise returns false and changes nothing.
+  // all; one that makes the stage anew does not call it. Runs that leave the stage out keep it lent (a
+  // result shown before another stage's, taken back when that stage is shown again), so several stages
+  // may be lent at once. Without `copy_back` the next run that reaches the stage makes its result again.
+  // Otherwise returns false and changes nothing.
   bool lend_result(Mesh& mesh, std::function<Mesh()> copy_back);
   // The last run's topology report: from its last stage's input where that stage decides it (an offset,
   // a subdivision that outputs every face; subdivided_topology_report, offset_topology_report), else
@@ -174,6 +176,10 @@ class Pipeline {
     int source = -1;            // the stage whose result was the input of its last pass
     PipelineSettings settings;  // of its last pass
     StageWork work = StageWork::skipped;
+    // The result is lent out (lend_result) and not taken back; it stays lent while runs leave the stage
+    // out, so a stage turned off and on again takes it back instead of reading the empty mesh left here.
+    bool is_lent = false;
+    std::function<Mesh()> copy_back;
   };
 
   SceneStage& scene();
@@ -182,8 +188,10 @@ class Pipeline {
   // Runs stage `i` on the result of stage `source` with the pass its change needs; returns what changed
   // in its result, which the stages after it take up.
   Change run_stage(int i, int source, const PipelineSettings& settings);
-  // Whether a lent result can be taken up again: copied back (true), or to be made anew.
-  bool takes_back(Mesh& result);
+  // Whether the slot's lent result can be taken up again: copied back (true), or to be made anew.
+  static bool takes_back(Slot& slot);
+  // The slot's result is made anew or freed: a copy of the lent one is not needed.
+  static void forget_lent(Slot& slot);
   void input_changed(Change change);
   const Mesh& run_stages(const PipelineSettings& settings, const PipelineSettings& budgeted,
                          bool streams_last_level);
@@ -202,8 +210,6 @@ class Pipeline {
   std::vector<Slot> slots_;
   int result_ = -1;       // the stage whose result the last run returned
   int last_result_ = -1;  // the stage whose result the run before last returned
-  int lent_ = -1;         // the stage whose result is lent out (lend_result) and not taken back
-  std::function<Mesh()> copy_back_;
   Change result_change_ = Change::topology;
   std::uint64_t result_topology_version_ = 0;
   std::optional<Refinement> last_level_;  // run_surface's: the last level's quads and positions

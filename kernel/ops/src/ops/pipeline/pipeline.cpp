@@ -148,13 +148,17 @@ void Pipeline::note_result_change(Change change) {
   if (change == Change::topology) ++result_topology_version_;
 }
 
-bool Pipeline::takes_back(Mesh& result) {
-  lent_ = -1;
-  const std::function<Mesh()> copy = std::move(copy_back_);
-  copy_back_ = nullptr;
+bool Pipeline::takes_back(Slot& slot) {
+  const std::function<Mesh()> copy = std::move(slot.copy_back);
+  forget_lent(slot);
   if (!copy) return false;
-  result = copy();
+  slot.stage->result() = copy();
   return true;
+}
+
+void Pipeline::forget_lent(Slot& slot) {
+  slot.is_lent = false;
+  slot.copy_back = nullptr;
 }
 
 Change Pipeline::run_stage(int i, int source, const PipelineSettings& s) {
@@ -168,7 +172,8 @@ Change Pipeline::run_stage(int i, int source, const PipelineSettings& s) {
     change = combined(change, Change::positions);
   if (change == Change::positions && !stage.can_take_positions(input)) change = Change::topology;
   // A result lent out and not copied back is made anew.
-  if (change != Change::topology && lent_ == i && !takes_back(stage.result())) change = Change::topology;
+  if (change != Change::topology && slot.is_lent && !takes_back(slot)) change = Change::topology;
+  if (change == Change::topology) forget_lent(slot);
   slot.pending = Change::none;
   slot.has_result = false;  // until the pass is done: a stage left half done is made anew next time
   const StagePass pass{s, progress_, warnings_};
@@ -207,16 +212,14 @@ const Mesh& Pipeline::run_stages(const PipelineSettings& s, const PipelineSettin
       is_budget_checked = true;
     }
     if (!stage.is_on(s)) {
-      if (stage.free_while_off()) slots_[i].has_result = false;
+      if (stage.free_while_off()) {
+        slots_[i].has_result = false;
+        forget_lent(slots_[i]);
+      }
       continue;
     }
     change = run_stage(i, current, s);
     current = i;
-  }
-  // A result still lent out was made anew or its stage left out: its copy is not needed.
-  if (lent_ >= 0 && lent_ <= last) {
-    lent_ = -1;
-    copy_back_ = nullptr;
   }
   result_ = current;
   note_result_change(change);
@@ -321,9 +324,10 @@ bool Pipeline::exchange_result_positions(Buffer<Vec3>& positions) {
 
 bool Pipeline::lend_result(Mesh& mesh, std::function<Mesh()> copy_back) {
   if (!is_solid_result()) return false;
-  std::swap(slots_[result_].stage->result(), mesh);
-  lent_ = result_;
-  copy_back_ = std::move(copy_back);
+  Slot& slot = slots_[result_];
+  std::swap(slot.stage->result(), mesh);
+  slot.is_lent = true;
+  slot.copy_back = std::move(copy_back);
   return true;
 }
 

@@ -13,6 +13,7 @@ Piece evaluate_cartesian_surface(DefinitionContext& c, Index decl) {
   const std::vector<CompiledExpression> f = read_functions(c, decl, {"func"}, variables);
   const SampleRange x = sample_range(c, a, 0, 4, "x");
   const SampleRange y = sample_range(c, a, 2, 5, "y");
+  expect_generator_faces(c, decl, double(x.segs) * y.segs);
   Piece piece;
   SurfaceGrid grid;
   grid.across = x.segs;

@@ -51,6 +51,7 @@ Piece evaluate_dupin(DefinitionContext& c, Index decl) {
   if (p.u_max == 0 || p.v_max == 0)
     throw EvaluationError((p.u_max == 0 ? a[4] : a[5]).location, "u and v must be above 0");
   p.segs = c.whole(a[6], 3, "segs");
+  expect_generator_faces(c, decl, double(p.segs) * p.segs);
   return dupin(p);
 }
 

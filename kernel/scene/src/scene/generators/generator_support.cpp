@@ -102,6 +102,12 @@ const std::vector<Value>& generator_arguments(const DefinitionContext& context, 
   return context.ast().generators[decl].args;
 }
 
+void expect_generator_faces(const DefinitionContext& context, Index decl, double faces) {
+  const GeneratorDecl& g = context.ast().generators[decl];
+  context.expect_faces(g.name.location,
+                       std::string(statement_kinds()[g.kind].keyword) + " '" + g.name.text + "'", faces);
+}
+
 std::vector<double> generator_numbers(DefinitionContext& context, Index decl) {
   std::vector<double> numbers;
   for (const Value& v : generator_arguments(context, decl)) numbers.push_back(context.number(v));

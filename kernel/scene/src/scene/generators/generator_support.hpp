@@ -11,6 +11,9 @@ namespace nome::scene {
 
 // The arguments of generator `decl`, as written.
 const std::vector<Value>& generator_arguments(const DefinitionContext& context, Index decl);
+// Refuses generator `decl` before it makes its piece when about `faces` faces would pass the scene's
+// budget (DefinitionContext::expect_faces, at the statement's name).
+void expect_generator_faces(const DefinitionContext& context, Index decl, double faces);
 
 // Which of the `known` option words (`botcap`, `topcap`) generator `decl` was written with; an unknown one
 // is an EvaluationError at its place.

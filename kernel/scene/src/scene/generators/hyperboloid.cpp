@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <string>
 
 #include "scene/generators/generator_support.hpp"
 #include "scene/generators/surface_grid.hpp"
@@ -93,32 +95,7 @@ bool is_older_order(DefinitionContext& c, const std::vector<Value>& a) {
          is_whole(a[4], 3, 1e5) && is_whole(a[5], 0, 2);
 }
 
-Piece evaluate_successor_hyperboloid(DefinitionContext& c, const std::vector<Value>& a) {
-  try {
-    SuccessorHyperboloidParams p;
-    p.segs = c.whole(a[0], 3, "segs");
-    p.a = c.positive(a[1], "a");
-    p.b = c.positive(a[2], "b");
-    // JIPCAD takes the whole part of c: the rows are at whole heights.
-    p.rows = int(std::floor(number_in(c, a[3], 1, 100000, "c")));
-    p.is_two_sheets = c.whole(a[4], 0, "sheet") != 0;
-    p.theta = number_in(c, a[5], 0, 2, "theta (a sweep in units of pi)");
-    if (p.theta == 0) throw EvaluationError(a[5].location, "theta (a sweep in units of pi) must be above 0");
-    if (p.is_two_sheets && p.rows < 2)
-      throw EvaluationError(a[3].location, "c must be at least 2 for two sheets (they start at z = +-1)");
-    return successor_hyperboloid(p);
-  } catch (const EvaluationError& e) {
-    if (!is_older_order(c, a)) throw;
-    throw EvaluationError(e.where(), std::string(e.what()) +
-                                         ": the successor's dialect reads hyperboloid as (segs a b c sheet "
-                                         "theta); these arguments are NOME3's older (a c u_max u_segs v_segs "
-                                         "sheet), which the 2016 dialect reads (--dialect 2016)");
-  }
-}
-
-Piece evaluate_hyperboloid(DefinitionContext& c, Index decl) {
-  const std::vector<Value>& a = generator_arguments(c, decl);
-  if (c.ast().dialect.dialect == Dialect::jipcad) return evaluate_successor_hyperboloid(c, a);
+HyperboloidParams older_arguments(DefinitionContext& c, const std::vector<Value>& a) {
   HyperboloidParams p;
   p.a = c.positive(a[0], "a");
   p.c = c.positive(a[1], "c");
@@ -129,7 +106,52 @@ Piece evaluate_hyperboloid(DefinitionContext& c, Index decl) {
   p.sheet = HyperboloidSheet(c.whole(a[5], 0, "sheet"));
   if (int(p.sheet) > 2)
     throw EvaluationError(a[5].location, "sheet must be 0 (one), 1 (paraboloid) or 2 (two)");
+  return p;
+}
+
+Piece older_hyperboloid(DefinitionContext& c, Index decl, const HyperboloidParams& p) {
+  expect_generator_faces(c, decl, double(p.u_segs) * p.v_segs * (p.sheet == HyperboloidSheet::two ? 2 : 1));
   return hyperboloid(p);
+}
+
+SuccessorHyperboloidParams successor_arguments(DefinitionContext& c, const std::vector<Value>& a) {
+  SuccessorHyperboloidParams p;
+  p.segs = c.whole(a[0], 3, "segs");
+  p.a = c.positive(a[1], "a");
+  p.b = c.positive(a[2], "b");
+  // JIPCAD takes the whole part of c: the rows are at whole heights.
+  p.rows = int(std::floor(number_in(c, a[3], 1, 100000, "c")));
+  p.is_two_sheets = c.whole(a[4], 0, "sheet") != 0;
+  p.theta = number_in(c, a[5], 0, 2, "theta (a sweep in units of pi)");
+  if (p.theta == 0) throw EvaluationError(a[5].location, "theta (a sweep in units of pi) must be above 0");
+  if (p.is_two_sheets && p.rows < 2)
+    throw EvaluationError(a[3].location, "c must be at least 2 for two sheets (they start at z = +-1)");
+  return p;
+}
+
+// JIPCAD's own reference documents the hyperboloid in NOME3's older order (its sliders `A C UMax
+// UIncrement VIncrement Sheet`), which JIPCAD's Hyperboloid.cpp no longer reads. Arguments that JIPCAD's
+// order refuses and NOME3's reads are read in NOME3's, with a warning that says so.
+Piece evaluate_successor_hyperboloid(DefinitionContext& c, Index decl, const std::vector<Value>& a) {
+  std::optional<SuccessorHyperboloidParams> p;
+  try {
+    p = successor_arguments(c, a);
+  } catch (const EvaluationError& e) {
+    if (!is_older_order(c, a)) throw;
+    c.warning(a[0].location,
+              std::string("hyperboloid: the successor's dialect reads (segs a b c sheet theta), "
+                          "but ") +
+                  e.what() + ": read as NOME3's older (a c u_max u_segs v_segs sheet)");
+    return older_hyperboloid(c, decl, older_arguments(c, a));
+  }
+  expect_generator_faces(c, decl, double(p->segs) * 2 * p->rows);
+  return successor_hyperboloid(*p);
+}
+
+Piece evaluate_hyperboloid(DefinitionContext& c, Index decl) {
+  const std::vector<Value>& a = generator_arguments(c, decl);
+  if (c.ast().dialect.dialect == Dialect::jipcad) return evaluate_successor_hyperboloid(c, decl, a);
+  return older_hyperboloid(c, decl, older_arguments(c, a));
 }
 
 }  // namespace

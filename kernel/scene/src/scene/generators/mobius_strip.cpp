@@ -49,6 +49,7 @@ Piece evaluate_mobius_strip(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   const MobiusStripParams p{c.positive(a[0], "radius"), c.whole(a[1], 0, "twists"), c.whole(a[2], 0, "cuts"),
                             c.whole(a[3], 3, "segs")};
+  expect_generator_faces(c, decl, double(p.cuts + 1) * p.segs);
   const bool is_jipcad = c.ast().dialect.dialect == Dialect::jipcad;
   return is_jipcad || p.cuts == 0 ? cut_mobius_strip(p) : mobius_strip(p);
 }

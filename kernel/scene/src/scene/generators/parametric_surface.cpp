@@ -15,6 +15,7 @@ Piece evaluate_parametric_surface(DefinitionContext& c, Index decl) {
   const std::vector<CompiledExpression> f = read_functions(c, decl, {"funcX", "funcY", "funcZ"}, variables);
   const SampleRange u = sample_range(c, a, 0, 4, "u");
   const SampleRange v = sample_range(c, a, 2, 5, "v");
+  expect_generator_faces(c, decl, double(u.segs) * v.segs);
   Piece piece;
   SurfaceGrid grid;
   grid.across = u.segs;

@@ -126,8 +126,8 @@ struct AngleNames {
   const char *longitude_max, *latitude_min, *latitude_max, *longitude_segs, *latitude_segs;
 };
 
-Piece evaluate_globe(DefinitionContext& c, const std::vector<Value>& a, size_t first, SphereParams p,
-                     const AngleNames& n) {
+Piece evaluate_globe(DefinitionContext& c, Index decl, size_t first, SphereParams p, const AngleNames& n) {
+  const std::vector<Value>& a = generator_arguments(c, decl);
   p.longitude_max = sweep_degrees(c, a[first], n.longitude_max);
   // The successor's latitudes may run past a pole (JIPCAD's Sphere.cpp sweeps any arc of the meridian).
   const double limit = c.ast().dialect.dialect == Dialect::jipcad ? 1e6 : 90;
@@ -141,6 +141,7 @@ Piece evaluate_globe(DefinitionContext& c, const std::vector<Value>& a, size_t f
                                                      n.latitude_min + " (a whole meridian circle)");
   p.longitude_segs = c.whole(a[first + 3], is_whole_turn(p.longitude_max) ? 3 : 1, n.longitude_segs);
   p.latitude_segs = c.whole(a[first + 4], 2, n.latitude_segs);
+  expect_generator_faces(c, decl, double(p.longitude_segs) * p.latitude_segs);
   return sphere(p);
 }
 
@@ -148,7 +149,7 @@ Piece evaluate_sphere(DefinitionContext& c, Index decl) {
   const std::vector<Value>& a = generator_arguments(c, decl);
   SphereParams p;
   p.radius = p.radius_z = c.positive(a[0], "radius");
-  return evaluate_globe(c, a, 1, p, {"theta_max", "phi_min", "phi_max", "theta_segs", "phi_segs"});
+  return evaluate_globe(c, decl, 1, p, {"theta_max", "phi_min", "phi_max", "theta_segs", "phi_segs"});
 }
 
 Piece evaluate_ellipsoid(DefinitionContext& c, Index decl) {
@@ -156,7 +157,7 @@ Piece evaluate_ellipsoid(DefinitionContext& c, Index decl) {
   SphereParams p;
   p.radius = c.positive(a[0], "radius_x");
   p.radius_z = c.positive(a[1], "radius_y");
-  return evaluate_globe(c, a, 2, p, {"long_max", "latt_min", "latt_max", "segs_long", "segs_latt"});
+  return evaluate_globe(c, decl, 2, p, {"long_max", "latt_min", "latt_max", "segs_long", "segs_latt"});
 }
 
 }  // namespace

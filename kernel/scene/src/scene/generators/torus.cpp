@@ -60,6 +60,7 @@ Piece evaluate_torus(DefinitionContext& c, Index decl) {
   if ((is_whole_turn(p.theta_max) && p.theta_segs < 3) ||
       (is_whole_turn(p.phi_max - p.phi_min) && p.phi_segs < 3))
     throw EvaluationError(where.location, "a whole turn needs at least 3 segments");
+  expect_generator_faces(c, decl, double(p.theta_segs) * p.phi_segs);
   return torus(p);
 }
 

@@ -85,6 +85,7 @@ Piece evaluate_torus_knot(DefinitionContext& c, Index decl) {
                           "rad_min must be positive when turns is 0: the curve would be a point");
   p.circle_segs = c.whole(a[5], 3, "segs_circ");
   p.sweep_segs = c.whole(a[6], 3, "segs_sweep");
+  expect_generator_faces(c, decl, double(p.circle_segs) * p.sweep_segs);
   return torus_knot(p);
 }
 

@@ -1,5 +1,6 @@
 #include "scene/sweeps/sweep_syntax.hpp"
 
+#include <algorithm>
 #include <unordered_map>
 
 #include "nome/error.hpp"
@@ -120,7 +121,12 @@ template <typename Make>
 auto run_sweep(DefinitionContext& context, Index decl, Make make) {
   const SweepDecl& s = context.ast().sweeps[decl];
   const SweepInput in = sweep_input(context, s);
-  const std::string what = std::string(statement_kinds()[s.kind].keyword) + " '" + s.name.text + "': ";
+  const std::string statement = std::string(statement_kinds()[s.kind].keyword) + " '" + s.name.text + "'";
+  const std::string what = statement + ": ";
+  size_t section_points = 0;
+  for (const CrossSection& section : in.sections)
+    section_points = std::max(section_points, section.points.size());
+  context.expect_faces(s.name.location, statement, double(in.path.size()) * double(section_points));
   decltype(make(in)) result;
   try {
     result = make(in);
