@@ -370,6 +370,7 @@ class Mutant:
     mutated: str
     outcome: str = ""  # caught, survived, not covered, equivalent, not compiled
     caught_by: str = ""
+    error: str = ""  # the compiler's first error, for a mutant that does not compile
     tests: list = field(default_factory=list)
     seconds: float = 0.0
 
@@ -418,6 +419,12 @@ def is_declaration(code):
 
 def replaced(line, start, end, text):
     return line[:start] + text + line[end:]
+
+
+def pure_specifier(tokens, k):
+    """Whether the literal is the 0 of `virtual ... = 0;`."""
+    return (tokens[k][1] == "0" and k >= 2 and tokens[k - 1][1] == "=" and tokens[-1][1] == ";"
+            and tokens[k - 2][1] in (")", "const", "override", "noexcept") and k + 2 == len(tokens))
 
 
 def constant_changes(text):
@@ -470,7 +477,7 @@ def line_mutants(path, lineno, line, code, kinds_at, starts_statement):
                 add("arithmetic", start, end, ARITHMETIC[text])
         elif kind == "op" and spaced and depth == 0 and text in COMPARE:
             add("compare", start, end, COMPARE[text])
-        elif kind == "num" and depth == 0:
+        elif kind == "num" and depth == 0 and not pure_specifier(tokens, k):
             for rule, new in constant_changes(text):
                 add(rule, start, end, new)
         elif kind == "id" and text in ("true", "false"):
@@ -713,6 +720,18 @@ class Baseline:
         return sorted(n for n, r in self.results.items() if not r["passed"])
 
 
+def includer(path):
+    """An object file of the build compiled from the file or including it, or None."""
+    shown = subprocess.run(["ninja", "-C", str(BUILD), "-t", "deps"], capture_output=True, text=True).stdout
+    wanted, current = str(ROOT / path), None
+    for line in shown.splitlines():
+        if not line.startswith(" "):
+            current = line.split(": #deps")[0]
+        elif line.strip() == wanted:
+            return current
+    return None
+
+
 def run_mutant(m, cov, tests, baseline, state, jobs):
     """Builds and tests one mutant; sets its outcome, the tests run and the time taken."""
     start = time.monotonic()
@@ -721,23 +740,27 @@ def run_mutant(m, cov, tests, baseline, state, jobs):
     baseline.measure(covering)
     usable = [n for n in covering if baseline.results[n]["passed"]]
     by_program = {p: [tests[n] for n in usable if tests[n].program == p] for p in PROGRAMS}
-    needed = [p for p in PROGRAMS if by_program[p]] or [PROGRAMS[AREAS.index(m.area)]]
+    # A mutant no test runs needs only to compile: one object file tells, where a header would rebuild all
+    # that include it.
+    needed = [p for p in PROGRAMS if by_program[p]] or [includer(m.path) or PROGRAMS[AREAS.index(m.area)]]
     text, mtime_ns = apply(m)
     try:
         m.outcome = "survived" if usable else "not covered"
-        for program in needed:
-            built = build(BUILD, [program], jobs)
+        for target in needed:
+            built = build(BUILD, [target], jobs)
             if built.returncode != 0:
                 m.outcome = "not compiled"
+                errors = [line for line in built.stdout.splitlines() if "error:" in line]
+                m.error = errors[0].replace(f"{ROOT}/", "") if errors else ""
                 break
-            if not by_program[program]:
+            if target not in PROGRAMS:
                 continue
-            m.tests += [t.name for t in by_program[program]]
-            timeout = max(60.0, 10 * sum(baseline.results[t.name]["seconds"] for t in by_program[program]))
-            status, _ = run_tests(by_program[program], timeout)
+            m.tests += [t.name for t in by_program[target]]
+            timeout = max(60.0, 10 * sum(baseline.results[t.name]["seconds"] for t in by_program[target]))
+            status, _ = run_tests(by_program[target], timeout)
             if status != 0:
                 m.outcome = "caught"
-                m.caught_by = f"{program}: " + ("timed out" if status is None else
+                m.caught_by = f"{target}: " + ("timed out" if status is None else
                                                 f"signal {-status}" if status < 0 else f"exit {status}")
                 break
     finally:
@@ -783,7 +806,8 @@ def report(title, made, discarded, failing, seed):
     out = [title, ""]
     out += [describe(m) for m in made]
     if discarded:
-        out += ["", "Discarded (did not compile):"] + [f"  {m.id}: {m.mutated.strip()}" for m in discarded]
+        out += ["", "Discarded (did not compile):"] + [f"  {m.id}: {m.mutated.strip()}\n    {m.error.strip()}"
+                                                        for m in discarded]
     if failing:
         out += ["", "Test files failing unmutated (not used): " + ", ".join(failing)]
     out.append("")
