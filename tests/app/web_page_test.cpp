@@ -310,7 +310,8 @@ TEST_CASE("A script in the page's address that is not one ends with the desktop'
   NOME_NEEDS_WEB_PAGE();
   const std::string dir = nome::test::private_scratch_dir("web_bad_script");
   const std::string script = nome::test::write_script(dir, "subdivide 2\n");
-  const CommandResult desktop = nome::test::run_window(nome::test::assets + "funnel_cube.nome --script " + script);
+  const CommandResult desktop =
+      nome::test::run_window(nome::test::assets + "funnel_cube.nome --script " + script);
   CHECK(desktop.status == 1);
   const std::string error = ":1:1: expected a command (";
   const auto at = desktop.err.find(error);
@@ -326,4 +327,13 @@ TEST_CASE("A script in the page's address that is not one ends with the desktop'
   CHECK(page.log.find("page: first model frame") != std::string::npos);
   const auto [front, back] = model_pixels(page.canvas);
   CHECK(front > 20000);
+  // A command the viewer refuses (a value past its slider) is an error in the log, as on the desktop; the
+  // page goes on with the next command.
+  const PageRun refused =
+      open_page(server, "threads=0&scene=funnel_cube.nome", "refused.png", "set fp_n 99\nstate");
+  INFO(refused.log);
+  CHECK_THAT(refused.log, Catch::Contains("nome: error: page script:1: ") && Catch::Contains("fp_n"));
+  const std::vector<std::string> states = state_lines(refused.log);
+  REQUIRE(states.size() == 1);
+  CHECK_THAT(states[0], Catch::Contains(", F 48,"));
 }
