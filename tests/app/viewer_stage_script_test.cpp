@@ -17,8 +17,8 @@ using nome::test::write_script;
 TEST_CASE("the viewer turns the offset off and on again, levels changed between, and shows the solid",
           "[app]") {
   const std::string dir = nome::test::private_scratch_dir("viewer_offset_again");
-  const std::string steps[] = {"offset 0.05", "offset 0", "offset 0.05", "subdiv 1",   "offset 0.05",
-                               "offset 0",    "offset 0.05", "subdiv 2", "offset 0",    "offset 0.04",
+  const std::string steps[] = {"offset 0.05", "offset 0",    "offset 0.05", "subdiv 1", "offset 0.05",
+                               "offset 0",    "offset 0.05", "subdiv 2",    "offset 0", "offset 0.04",
                                "offset 0",    "subdiv 2",    "offset 0.05"};
   std::string script;
   for (const std::string& step : steps) script += step + "\nstate\n";
