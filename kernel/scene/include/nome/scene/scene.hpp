@@ -25,6 +25,7 @@ struct Parameter {
   std::string name;       // within its bank
   std::string full_name;  // BANK_NAME
   double value = 0, min = 0, max = 0, step = 0;
+  double file_value = 0;  // what the file's `set` gives it: `value` differs where the slider was moved
 };
 
 // A slider panel.
