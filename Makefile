@@ -32,7 +32,7 @@ PREFIX     ?= /usr/local
 PACKAGEDIR := build/package
 
 .PHONY: web web-one web-threads web-deps serve web-bench gltf-validator run test sanitize-full deps release test-build format format-check lint bench clean soak fuzz fuzz-build tsan references gallery layers \
-        install package package-test icon hardening mutants
+        install package package-test icon hardening mutants mutants-sample
 
 deps:
 	@missing=""; for p in $(PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -221,6 +221,15 @@ hardening:
 # source while it runs (restored after each mutation): commit first.
 mutants: deps
 	tests/mutants/mutants.py --build build/mutants
+
+# Sampled mutations: MUTANTS mutants drawn at random (random.Random(SEED)) from the lines of kernel/ and
+# app/, half from each, each run against the test files that execute its line (a coverage build maps them,
+# cached until the sources change). Edits the source while it runs (restored after each mutant): commit
+# first. Report in build/mutants-sample/report-seed$(SEED).txt.
+SEED    ?= 1
+MUTANTS ?= 60
+mutants-sample: deps
+	tests/mutants/sample.py --seed $(SEED) --mutants $(MUTANTS) --jobs $(JOBS)
 
 format-check: deps
 	@clang-format --dry-run --Werror $(SOURCES) && echo "clang-format: $(words $(SOURCES)) files clean"
