@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <vector>
 
 #include "nome/error.hpp"
 #include "scene/fresh_scene_oracle.hpp"
@@ -36,6 +37,7 @@ std::string refusal_text(double s, double t) {
          "instance late needs translate (0 0 -4) endinstance\n";
 }
 
+// What a refused value must leave as it was: the geometry, each instance's, the sliders, the document's.
 struct Snapshot {
   PolygonSoup combined;
   std::vector<Buffer<Vec3>> instance_positions;

@@ -385,6 +385,7 @@ TEST_CASE("near-miss places are listed thinnest first, each at its thinnest vert
       CHECK(place.size == 4);
       CHECK(place.distance == Approx(expected[i].gap).margin(1e-12));
       CHECK(place.position == solid.position(expected[i].thinnest));
+      REQUIRE(place.face != no_index);
       CHECK(solid.face_component(place.face) == solid.vertex_component(expected[i].thinnest));
       CHECK(solid.face_component(place.other_face) == solid.vertex_component(0));
     }
