@@ -14,6 +14,9 @@ struct ViewerOptions {
   int height = 800;
   bool has_size = false;           // --size given: otherwise the window opens at the size it last had
   bool pair_sif_triangles = true;  // .sif triangles paired into quads (`--triangles`: not)
+  // A script that cannot be read closes the window with status 1 (the desktop); otherwise the window
+  // stays on its file with the error in the log, the script ended (a web page cannot close itself).
+  bool quits_on_bad_script = true;
 };
 
 // Opens the window and runs until the user (or the script) quits. Returns the exit status: 0, or 1 when

@@ -50,7 +50,7 @@ Window::Window(Platform& platform, render::SceneRenderer& renderer, const Viewer
     } catch (const Error& e) {
       log_.error(e.what());
       exit_status_ = 1;
-      should_close_ = true;
+      should_close_ = options.quits_on_bad_script;
     }
   }
   sessions_.set_sif_pairing(options.pair_sif_triangles);

@@ -113,3 +113,67 @@ TEST_CASE("nome export keeps an OBJ's OpenSubdiv tags without subdivision and ap
   CHECK_THAT(nome::test::run_nome_in_process(std::string("export --help")).out,
              Catch::Contains("--boundary none|edge-only|edge-and-corner") && Catch::Contains("t crease"));
 }
+
+namespace {
+
+// Four parts whose counts all differ, and a vertex in no face: a Möbius band of six quads with its third
+// quad turned over (Möbius edges: the twist's rung and the turned quad's two rungs), a tetrahedron, a strip
+// of two quads and a cube. Every number of the report is worked out here by hand.
+const char* const four_parts_obj =
+    // Möbius band: a0..a5 (1..6) on top, b0..b5 (7..12) below.
+    "v 2 0 0.5\nv 1 1.7 0.5\nv -1 1.7 0.5\nv -2 0 0.5\nv -1 -1.7 0.5\nv 1 -1.7 0.5\n"
+    "v 2 0 -0.5\nv 1 1.7 -0.5\nv -1 1.7 -0.5\nv -2 0 -0.5\nv -1 -1.7 -0.5\nv 1 -1.7 -0.5\n"
+    "f 1 2 8 7\nf 2 3 9 8\nf 9 10 4 3\nf 4 5 11 10\nf 5 6 12 11\nf 6 7 1 12\n"
+    // Tetrahedron (13..16).
+    "v 5 0 0\nv 6 0 0\nv 5 1 0\nv 5 0 1\n"
+    "f 13 15 14\nf 13 14 16\nf 14 15 16\nf 13 16 15\n"
+    // Strip of two quads (17..22).
+    "v 8 0 0\nv 9 0 0\nv 10 0 0\nv 8 1 0\nv 9 1 0\nv 10 1 0\n"
+    "f 17 18 21 20\nf 18 19 22 21\n"
+    // Cube (23..30).
+    "v 12 0 0\nv 13 0 0\nv 13 1 0\nv 12 1 0\nv 12 0 1\nv 13 0 1\nv 13 1 1\nv 12 1 1\n"
+    "f 23 26 25 24\nf 27 28 29 30\nf 23 24 28 27\nf 25 26 30 29\nf 23 27 30 26\nf 24 25 29 28\n"
+    // A vertex in no face.
+    "v 20 20 20\n";
+
+}  // namespace
+
+// Each number under its own label: V 12 + 4 + 6 + 8 = 30, E 18 + 6 + 7 + 12 = 43, F 6 + 4 + 2 + 6 = 18,
+// chi 0 + 2 + 1 + 2 = 5 (the vertex in no face counts in no part), 4 parts, borders 1 + 1 = 2, Möbius
+// edges 3; the band's chi 0 = 2 - k - 1 gives one cross-cap.
+TEST_CASE("nome info puts every count under its own label, in text and in JSON", "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("info_labels");
+  std::ofstream(dir + "/parts.obj") << four_parts_obj;
+  const auto text = nome::test::run_nome_in_process("info " + dir + "/parts.obj");
+  INFO(text.err);
+  REQUIRE(text.status == 0);
+  CHECK(text.out ==
+        "vertices 30, edges 43, faces 18, chi 5\n"
+        "components 4, orientable no, borders 2, Möbius edges 3\n"
+        "isolated vertices (in no face) 1\n"
+        "  part 0: V 12, E 18, F 6, chi 0, non-orientable, borders 1, cross-caps 1, Möbius edges 3\n"
+        "  part 1: V 4, E 6, F 4, chi 2, orientable, borders 0, genus 0, Möbius edges 0\n"
+        "  part 2: V 6, E 7, F 2, chi 1, orientable, borders 1, genus 0, Möbius edges 0\n"
+        "  part 3: V 8, E 12, F 6, chi 2, orientable, borders 0, genus 0, Möbius edges 0\n");
+  const auto json = nome::test::run_nome_in_process("info " + dir + "/parts.obj --json");
+  REQUIRE(json.status == 0);
+  CHECK(json.out ==
+        "{\"vertices\": 30, \"edges\": 43, \"faces\": 18, \"chi\": 5, \"orientable\": false, \"borders\": 2, "
+        "\"components\": 4, \"mobius_edges\": 3, \"manifold\": true, \"isolated_vertices\": 1, \"parts\": ["
+        "{\"vertices\": 12, \"edges\": 18, \"faces\": 6, \"chi\": 0, \"orientable\": false, \"borders\": 1, "
+        "\"genus\": 1, \"mobius_edges\": 3}, "
+        "{\"vertices\": 4, \"edges\": 6, \"faces\": 4, \"chi\": 2, \"orientable\": true, \"borders\": 0, "
+        "\"genus\": 0, \"mobius_edges\": 0}, "
+        "{\"vertices\": 6, \"edges\": 7, \"faces\": 2, \"chi\": 1, \"orientable\": true, \"borders\": 1, "
+        "\"genus\": 0, \"mobius_edges\": 0}, "
+        "{\"vertices\": 8, \"edges\": 12, \"faces\": 6, \"chi\": 2, \"orientable\": true, \"borders\": 0, "
+        "\"genus\": 0, \"mobius_edges\": 0}]}\n");
+
+  // One subdivision level: a point per vertex, edge and face (30 + 43 + 18 = 91), each edge halved and an
+  // edge from each face's centre to each of its sides (2 * 43 + 14 * 4 + 4 * 3 = 154), a quad per corner
+  // (14 * 4 + 4 * 3 = 68); chi, borders and parts stay, each Möbius rung halved into two.
+  const auto subdivided = nome::test::run_nome_in_process("info " + dir + "/parts.obj --subdiv 1");
+  REQUIRE(subdivided.status == 0);
+  CHECK_THAT(subdivided.out, Catch::Contains("vertices 91, edges 154, faces 68, chi 5\n"
+                                             "components 4, orientable no, borders 2, Möbius edges 6\n"));
+}

@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,8 +19,8 @@ using nome::test::write_script;
 TEST_CASE("the viewer turns the offset off and on again, levels changed between, and shows the solid",
           "[app]") {
   const std::string dir = nome::test::private_scratch_dir("viewer_offset_again");
-  const std::string steps[] = {"offset 0.05", "offset 0", "offset 0.05", "subdiv 1",   "offset 0.05",
-                               "offset 0",    "offset 0.05", "subdiv 2", "offset 0",    "offset 0.04",
+  const std::string steps[] = {"offset 0.05", "offset 0",    "offset 0.05", "subdiv 1", "offset 0.05",
+                               "offset 0",    "offset 0.05", "subdiv 2",    "offset 0", "offset 0.04",
                                "offset 0",    "subdiv 2",    "offset 0.05"};
   std::string script;
   for (const std::string& step : steps) script += step + "\nstate\n";
@@ -62,4 +64,68 @@ TEST_CASE("a slider moved to a size past the budget is refused and put back, wit
   CHECK(states[0].faces == 64);
   CHECK(states[1].faces == 64);  // put back: the shape of n = 8
   CHECK(states[2].faces == 100);
+}
+
+// The viewer opens a scene at the stage its blocks ask for: the highest subdivision level of several
+// blocks, the thickest offset; the script's `subdiv` and `offset` (the control panel's) then win over them.
+// Measured on what the viewer exports: a unit square in z = 0 thickened by D spans 2 D in z.
+TEST_CASE("the viewer opens at the stage and levels the scene's blocks ask for, and its own settings win",
+          "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_stage_blocks");
+  const std::string square =
+      "point a (0 0 0) endpoint point b (1 0 0) endpoint point c (1 1 0) endpoint point d (0 1 0) endpoint\n"
+      "mesh m face f (a b c d) endface endmesh\n";
+  auto thickness = [](const std::string& obj) {
+    std::ifstream in(obj);
+    double low = 1e9, high = -1e9;
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("v ", 0) == 0) {
+        std::istringstream words(line.substr(2));
+        double x = 0, y = 0, z = 0;
+        words >> x >> y >> z;
+        low = std::min(low, z);
+        high = std::max(high, z);
+      }
+    return high - low;
+  };
+
+  // Levels 1 and 2 and offsets 0.1 and 0.3, the larger of each in the second block.
+  std::ofstream(dir + "/blocks.nom") << square
+                                     << "subdivision s1 sd_level 1 instance i m endinstance endsubdivision\n"
+                                        "subdivision s2 sd_level 2 endsubdivision\n"
+                                        "offset o1 height 0.1 endoffset\noffset o2 height 0.3 endoffset\n";
+  const std::string script =
+      write_script(dir, "state\nexport " + dir + "/own.obj\noffset 0.05\nstate\nexport " + dir +
+                            "/thin.obj\nsubdiv 1\nstate\noffset 0\nstate\nsubdiv 0\nstate\nquit\n");
+  const auto r = run_window(dir + "/blocks.nom --script " + script);
+  INFO(r.err);
+  CHECK(r.status == 0);
+  const std::vector<test::ViewerState> states = logged_states(r.err);
+  REQUIRE(states.size() == 5);
+  // Two sheets of 16 quads and a rim quad on each of the 16 border edges.
+  CHECK(states[0].stage == "offset");
+  CHECK(states[0].faces == 2 * 16 + 16);
+  CHECK(thickness(dir + "/own.obj") == Approx(0.6).margin(1e-6));
+  CHECK(states[1].stage == "offset");
+  CHECK(states[1].faces == 2 * 16 + 16);
+  CHECK(thickness(dir + "/thin.obj") == Approx(0.1).margin(1e-6));
+  CHECK(states[2].faces == 2 * 4 + 8);
+  CHECK(states[3].stage == "subdivided");
+  CHECK(states[3].faces == 4);
+  CHECK(states[4].faces == 1);
+
+  // Subdivision blocks alone: the subdivided stage, at the highest level whichever block comes first.
+  for (const char* blocks : {"subdivision s1 sd_level 2 instance i m endinstance endsubdivision\n"
+                             "subdivision s2 sd_level 1 endsubdivision\n",
+                             "subdivision s1 sd_level 1 instance i m endinstance endsubdivision\n"
+                             "subdivision s2 sd_level 2 endsubdivision\n"}) {
+    INFO(blocks);
+    std::ofstream(dir + "/levels.nom") << square << blocks;
+    const auto levels = run_window(dir + "/levels.nom --script " + write_script(dir, "state\nquit\n"));
+    INFO(levels.err);
+    const std::vector<test::ViewerState> shown = logged_states(levels.err);
+    REQUIRE(shown.size() == 1);
+    CHECK(shown[0].stage == "subdivided");
+    CHECK(shown[0].faces == 16);
+  }
 }

@@ -38,7 +38,12 @@ function finish(status, message) {
   browser.once('exit', leave);
   browser.kill('SIGKILL');
 }
-setTimeout(() => finish(1, 'the page did not finish within ' + patienceMs / 1000 + ' s'), patienceMs);
+// The page's log so far, once the page answers: what a page that never finishes printed says why.
+let pageLog = async () => '';
+setTimeout(async () => {
+  const log = await Promise.race([pageLog().catch(() => ''), new Promise((r) => setTimeout(() => r(''), 2000))]);
+  finish(1, log + 'the page did not finish within ' + patienceMs / 1000 + ' s');
+}, patienceMs);
 
 // Chromium prints its DevTools address on stderr once it listens.
 function devtoolsAddress() {
@@ -86,6 +91,7 @@ async function main() {
     while (!(await evaluate(expression))) await new Promise((resolve) => setTimeout(resolve, 50));
   };
   const scriptsDone = () => evaluate('Number(document.body.dataset.scriptsDone || 0)');
+  pageLog = () => evaluate('document.getElementById("log").textContent');
 
   await send('Page.enable');
   await send('Emulation.setDeviceMetricsOverride', { width: 1280, height: 800, deviceScaleFactor: 1, mobile: false });
@@ -111,7 +117,7 @@ async function main() {
   await evaluate('new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))');
   const shot = await send('Page.captureScreenshot', { format: 'png' });
   fs.writeFileSync(picture, Buffer.from(shot.data, 'base64'));
-  process.stdout.write(await evaluate('document.getElementById("log").textContent'));
+  process.stdout.write(await pageLog());
   // A download is written after its click: wait until no partial file is left.
   if (downloads) {
     const isWritten = () => fs.readdirSync(downloads).length > 0 &&

@@ -304,3 +304,36 @@ TEST_CASE("Unsaved changes in the page are offered back on the next visit", "[ap
   REQUIRE(recovered_states.size() == 1);
   CHECK(recovered_states[0] == edited_states[1]);
 }
+
+TEST_CASE("A script in the page's address that is not one ends with the desktop's located error in the log",
+          "[app][web]") {
+  NOME_NEEDS_WEB_PAGE();
+  const std::string dir = nome::test::private_scratch_dir("web_bad_script");
+  const std::string script = nome::test::write_script(dir, "subdivide 2\n");
+  const CommandResult desktop =
+      nome::test::run_window(nome::test::assets + "funnel_cube.nome --script " + script);
+  CHECK(desktop.status == 1);
+  const std::string error = ":1:1: expected a command (";
+  const auto at = desktop.err.find(error);
+  REQUIRE(at != std::string::npos);
+  const std::string message = desktop.err.substr(at, desktop.err.find('\n', at) - at);
+  CHECK_THAT(message, Catch::EndsWith("found 'subdivide'"));
+
+  const PageServer server;
+  const PageRun page = open_page(server, "threads=0&scene=funnel_cube.nome&script=subdivide%202", "bad.png");
+  INFO(page.log);
+  // The page's script file, named as the desktop names its own, with the same message; the scene stays.
+  CHECK_THAT(page.log, Catch::Contains("nome: error: /tmp/page_script.txt" + message));
+  CHECK(page.log.find("page: first model frame") != std::string::npos);
+  const auto [front, back] = model_pixels(page.canvas);
+  CHECK(front > 20000);
+  // A command the viewer refuses (a value past its slider) is an error in the log, as on the desktop; the
+  // page goes on with the next command.
+  const PageRun refused =
+      open_page(server, "threads=0&scene=funnel_cube.nome", "refused.png", "set fp_n 99\nstate");
+  INFO(refused.log);
+  CHECK_THAT(refused.log, Catch::Contains("nome: error: page script:1: ") && Catch::Contains("fp_n"));
+  const std::vector<std::string> states = state_lines(refused.log);
+  REQUIRE(states.size() == 1);
+  CHECK_THAT(states[0], Catch::Contains(", F 48,"));
+}

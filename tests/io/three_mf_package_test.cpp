@@ -4,7 +4,9 @@
 // be exact in a float and in short decimals.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -19,6 +21,7 @@
 
 #include "nome/error.hpp"
 #include "nome/io/three_mf.hpp"
+#include "nome/ops/pipeline.hpp"
 #include "support/scratch_files.hpp"
 
 using namespace nome;
@@ -330,3 +333,97 @@ TEST_CASE("a 3MF written by hand reads with its unit and its coordinates as writ
   }
 }
 #endif
+
+namespace {
+
+// A strip of five unit quads along x (face i spans x i..i+1), coloured red, none, blue, none, green: the
+// faces without a colour come after a coloured one, and the first face has one.
+PolygonSoup tmf_partly_coloured_strip() {
+  PolygonSoup soup;
+  for (int i = 0; i <= 5; ++i) {
+    soup.add_vertex(Vec3(i, 0, 0));
+    soup.add_vertex(Vec3(i, 1, 0));
+  }
+  for (Index i = 0; i < 5; ++i) soup.add_face({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
+  soup.face_colors = {Color(1, 0, 0), no_face_color, Color(0, 0, 1), no_face_color, Color(0, 1, 0)};
+  return soup;
+}
+
+// Each written triangle's colour as the model XML gives it (#RRGGBBAA): the colour group its `pid` names
+// at its `p1`, or the object's own `pid` and `pindex` for a triangle without one; with the x of its
+// corners' centre.
+std::vector<std::pair<double, std::string>> tmf_triangle_colors(const fs::path& path) {
+  const std::map<std::string, std::string> files = tmf_unzip(test::file_bytes(path));
+  REQUIRE(files.count("3D/3dmodel.model") == 1);
+  const std::string& xml = files.at("3D/3dmodel.model");
+  std::map<std::string, std::vector<std::string>> groups;
+  for (std::size_t at = xml.find("<m:colorgroup"); at != std::string::npos;
+       at = xml.find("<m:colorgroup", at + 1)) {
+    std::vector<std::string>& colors = groups[tmf_attribute(xml, at, "id")];
+    const std::size_t end = xml.find("</m:colorgroup>", at);
+    for (std::size_t c = xml.find("<m:color ", at); c < end; c = xml.find("<m:color ", c + 1))
+      colors.push_back(tmf_attribute(xml, c, "color"));
+  }
+  std::vector<std::pair<double, std::string>> triangles;
+  for (std::size_t at = xml.find("<object"); at != std::string::npos; at = xml.find("<object", at + 1)) {
+    const std::string object_group = tmf_attribute(xml, at, "pid"),
+                      object_index = tmf_attribute(xml, at, "pindex");
+    const std::size_t end = xml.find("</object>", at);
+    std::vector<double> xs;
+    for (std::size_t v = xml.find("<vertex ", at); v < end; v = xml.find("<vertex ", v + 1))
+      xs.push_back(std::strtod(tmf_attribute(xml, v, "x").c_str(), nullptr));
+    for (std::size_t t = xml.find("<triangle ", at); t < end; t = xml.find("<triangle ", t + 1)) {
+      double x = 0;
+      for (const char* corner : {"v1", "v2", "v3"})
+        x += xs.at(std::size_t(std::atoi(tmf_attribute(xml, t, corner).c_str())));
+      std::string group = tmf_attribute(xml, t, "pid"), index = tmf_attribute(xml, t, "p1");
+      if (index.empty()) {
+        group = object_group;
+        index = object_index;
+      }
+      REQUIRE_FALSE(index.empty());
+      triangles.push_back({x / 3, groups.at(group).at(std::size_t(std::atoi(index.c_str())))});
+    }
+  }
+  return triangles;
+}
+
+// The colour the face under x has: the faces without one are written light grey (0.75, 191 a channel).
+std::string tmf_strip_color(double x) {
+  const char* const colors[] = {"#FF0000FF", "#BFBFBFFF", "#0000FFFF", "#BFBFBFFF", "#00FF00FF"};
+  return colors[std::size_t(std::clamp(int(std::floor(x)), 0, 4))];
+}
+
+}  // namespace
+
+TEST_CASE("a 3MF writes the faces of a partly coloured mesh without a colour light grey, not a neighbour's",
+          "[io]") {
+  const PolygonSoup soup = tmf_partly_coloured_strip();
+  const fs::path path = test::scratch_path("nome_3mf_package", "strip.3mf");
+  write_3mf(path, build_mesh(soup), {});
+  const auto triangles = tmf_triangle_colors(path);
+  REQUIRE(triangles.size() == 10);
+  for (const auto& [x, color] : triangles) {
+    INFO("triangle at x " << x);
+    CHECK(color == tmf_strip_color(x));
+  }
+
+  // Subdivided and thickened: every face of the solid takes its source face's colour, or grey.
+  Pipeline pipeline;
+  pipeline.set_input(PipelineInput{soup, {}, {}});
+  PipelineSettings settings;
+  settings.subdivision_levels = 1;
+  settings.offset_distance = 0.1;
+  write_3mf(path, pipeline.run(settings), {});
+  const auto solid = tmf_triangle_colors(path);
+  CHECK(solid.size() > 40);
+  std::map<std::string, int> counted;
+  for (const auto& [x, color] : solid) {
+    // A centre on a boundary between faces (a rim's end) cannot tell which face it came from.
+    if (std::abs(x - std::round(x)) < 0.05) continue;
+    INFO("triangle at x " << x);
+    CHECK(color == tmf_strip_color(x));
+    ++counted[color];
+  }
+  CHECK(counted.size() == 4);
+}

@@ -1,5 +1,10 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <set>
+#include <string>
+#include <vector>
+
 #include "scene/scene_support.hpp"
 
 using nome::test::scene_errors;
@@ -182,4 +187,60 @@ TEST_CASE("a repeated instance name is drawn under a name of its own, with a war
   REQUIRE(s.warnings().size() == 1);
   CHECK(s.warnings()[0].to_string() ==
         "t.nome:3:10: warning: instance name 'i' repeated (first at 2:10): this one is named 'i_3'");
+}
+
+// Each repeat takes the first `name_k` (k = 2, 3, ...) that no statement of its list is written with and no
+// earlier repeat took; the warning names the place of the name's first statement.
+TEST_CASE("a name repeated four times among instances gives four names of their own, none taken twice",
+          "[scene]") {
+  const nome::scene::Scene s = nome::scene::Scene::from_text(
+      "funnel fun (4 1 0 1) endfunnel\n"
+      "instance i fun endinstance\n"
+      "instance i fun translate (0 0 1) endinstance\n"
+      "instance i_2 fun translate (0 0 2) endinstance\n"
+      "instance i fun translate (0 0 3) endinstance\n"
+      "instance i_4 fun translate (0 0 4) endinstance\n"
+      "instance i fun translate (0 0 5) endinstance\n"
+      "instance i_2 fun translate (0 0 6) endinstance\n"
+      "group g\n"
+      "  instance p fun endinstance\n"
+      "  instance p fun translate (1 0 0) endinstance\n"
+      "  instance p fun translate (2 0 0) endinstance\n"
+      "endgroup\n"
+      "instance gi g translate (9 0 0) endinstance\n",
+      "t.nome");
+  std::vector<std::string> names;
+  for (const auto& instance : s.instances()) names.push_back(instance.name);
+  CHECK(names == std::vector<std::string>{"i", "i_3", "i_2", "i_5", "i_4", "i_6", "i_2_2", "gi"});
+  const std::vector<std::string> expected_warnings = {
+      "t.nome:3:10: warning: instance name 'i' repeated (first at 2:10): this one is named 'i_3'",
+      "t.nome:5:10: warning: instance name 'i' repeated (first at 2:10): this one is named 'i_5'",
+      "t.nome:7:10: warning: instance name 'i' repeated (first at 2:10): this one is named 'i_6'",
+      "t.nome:8:10: warning: instance name 'i_2' repeated (first at 4:10): this one is named 'i_2_2'",
+      "t.nome:11:12: warning: instance name 'p' repeated (first at 10:12): this one is named 'p_2'",
+      "t.nome:12:12: warning: instance name 'p' repeated (first at 10:12): this one is named 'p_3'"};
+  std::vector<std::string> warnings;
+  for (const auto& w : s.warnings()) warnings.push_back(w.to_string());
+  std::sort(warnings.begin(), warnings.end(), [](const std::string& a, const std::string& b) {
+    const auto line = [](const std::string& w) { return std::stoi(w.substr(w.find(':') + 1)); };
+    return line(a) < line(b);
+  });
+  CHECK(warnings == expected_warnings);
+  // Every vertex is drawn under a name of its own, each instance's under its new name, where it was placed.
+  const nome::PolygonSoup soup = s.combined_soup();
+  const std::vector<std::string>& vertex_names = soup.vertex_names;
+  CHECK(std::set<std::string>(vertex_names.begin(), vertex_names.end()).size() == vertex_names.size());
+  const nome::Index per_funnel = s.instances()[0].geometry.soup.num_vertices();
+  REQUIRE(soup.num_vertices() == 10 * per_funnel);
+  const double heights[] = {0, 1, 2, 3, 4, 5, 6};
+  for (nome::Index k = 0; k < 7; ++k) {
+    const std::string& first = vertex_names[k * per_funnel];
+    CHECK(first.substr(0, names[k].size() + 1) == names[k] + "_");
+    CHECK(soup.positions[k * per_funnel].z ==
+          soup.positions[0].z + heights[k]);  // the statement's own translate, so its own instance
+  }
+  for (const char* path : {"gi_p_", "gi_p_2_", "gi_p_3_"})
+    CHECK(std::count_if(vertex_names.begin(), vertex_names.end(), [&](const std::string& n) {
+            return n.rfind(path, 0) == 0 && n.find('_', std::string(path).size()) == std::string::npos;
+          }) == per_funnel);
 }

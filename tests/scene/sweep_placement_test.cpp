@@ -82,6 +82,18 @@ double sweep_de_boor(const std::vector<double>& control, int p, double x) {
   return d[std::size_t(p)];
 }
 
+// The Bézier curve over `control` at t by its Bernstein form, sum of C(n, i) t^i (1 - t)^(n - i) c_i: a
+// control point's scale as the curve blends it.
+double sweep_bernstein(const std::vector<double>& control, double t) {
+  const int n = int(control.size()) - 1;
+  double sum = 0.0, binomial = 1.0;
+  for (int i = 0; i <= n; ++i) {
+    sum += binomial * std::pow(t, i) * std::pow(1 - t, n - i) * control[std::size_t(i)];
+    binomial = binomial * (n - i) / (i + 1);
+  }
+  return sum;
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -441,4 +453,31 @@ TEST_CASE("sweepmorph along a Bézier path blends its end control points' sectio
       check_sweep_point(test::vertex_position(s, "i_v" + std::to_string(k) + "_" + std::to_string(j)),
                         sweep_on_z(2 * w, p, 0));
     }
+}
+
+TEST_CASE("a Bézier path blends its control points' scale by the Bernstein weights, its ends' scales too",
+          "[scene]") {
+  // A straight path along +z with unevenly spaced points, so the frame is known (N = +y, B = -x); every
+  // control point scales x and y differently, the end points too (a Bézier curve passes through them).
+  const std::string text = std::string(sweep_triangle_text) +
+                           "point a (0 0 0) endpoint\npoint b (0 0 0.5) endpoint\npoint c (0 0 2) endpoint\n"
+                           "point d (0 0 3) endpoint\n"
+                           "controlpoint ka point a scale (0.5 2 0) endcontrolpoint\n"
+                           "controlpoint kb point b scale (3 1 0) endcontrolpoint\n"
+                           "controlpoint kd point d scale (1.5 0.25 0) endcontrolpoint\n"
+                           "beziercurve p (ka kb c kd) segs 6 endbeziercurve\n"
+                           "sweep s crosssection tri endcrosssection path p endpath endsweep\n"
+                           "instance i s endinstance\n";
+  const Scene s = Scene::from_text(text, "t.nome");
+  for (int k = 0; k <= 6; ++k) {
+    const double t = k / 6.0;
+    const double z = sweep_bernstein({0, 0.5, 2, 3}, t);
+    const double sx = sweep_bernstein({0.5, 3, 1, 1.5}, t), sy = sweep_bernstein({2, 1, 1, 0.25}, t);
+    for (int j = 0; j < 3; ++j) {
+      INFO("sample " << k << ", point " << j);
+      const glm::dvec2 q = sweep_triangle.points[std::size_t(j)];
+      check_sweep_point(test::vertex_position(s, "i_v" + std::to_string(k) + "_" + std::to_string(j)),
+                        sweep_on_z(z, {sx * q.x, sy * q.y}, 0));
+    }
+  }
 }

@@ -109,6 +109,7 @@ viewer::ViewerOptions options_from(int argc, char** argv) {
     else
       options.file = argv[i];
   }
+  options.quits_on_bad_script = false;
   const glm::ivec2 size = stage_size();
   options.width = size.x;
   options.height = size.y;
@@ -174,6 +175,8 @@ int main(int argc, char** argv) {
   page.renderer = render::make_gl_scene_renderer();
   page.window = std::make_unique<viewer::Window>(*page.platform, *page.renderer, options,
                                                  viewer::ViewerStores::from_environment());
+  // The address's script is reported done even when it could not be read (the error is in the log).
+  page.was_running_script = options.script.has_value();
   emscripten_set_main_loop(web::frame, 0, false);
   return 0;
 }

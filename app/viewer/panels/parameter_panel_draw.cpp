@@ -27,7 +27,8 @@ void draw_slider_menu(const scene::Parameter& p, Index id, ParameterPanelState& 
   ImGui::SetNextItemWidth(160);
   if (ImGui::InputDouble("value", &state.typed_value, 0.0, 0.0, "%.6g",
                          ImGuiInputTextFlags_EnterReturnsTrue)) {
-    moved = std::clamp(state.typed_value, range.first, range.second);
+    // As a value typed with Ctrl+click: on the slider's step, within its range.
+    moved = snap_to_step(p, state.typed_value, range);
     ImGui::CloseCurrentPopup();
   }
   ImGui::SetNextItemWidth(160);

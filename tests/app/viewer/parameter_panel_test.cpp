@@ -76,3 +76,74 @@ TEST_CASE("the banks a selected vertex depends on come first", "[app]") {
   CHECK(viewer::bank_order(scene, {})[7] == 7);
   CHECK(scene.parameters_of_vertex("no_such_vertex").empty());
 }
+
+// What a value typed into a slider (Ctrl+click, or the slider menu's value field) or dragged becomes: on
+// the slider's step counted from its minimum, within the range shown. The expected values are worked out
+// by hand for each case.
+TEST_CASE("a typed slider value is clamped to the range and snapped to the step counted from the minimum",
+          "[app]") {
+  auto slider = [](double min, double max, double step) {
+    scene::Parameter p;
+    p.min = min;
+    p.max = max;
+    p.step = step;
+    return p;
+  };
+  const auto snapped = [](const scene::Parameter& p, double value) {
+    return viewer::snap_to_step(p, value, {p.min, p.max});
+  };
+
+  SECTION("a positive range whose steps start off zero: 0.1, 0.35, 0.6, 0.85") {
+    const scene::Parameter p = slider(0.1, 1.1, 0.25);
+    CHECK(snapped(p, 0.3) == Approx(0.35));   // from zero the nearest step would be 0.25
+    CHECK(snapped(p, 0.5) == Approx(0.6));    // 1.6 steps: rounded up, not cut down
+    CHECK(snapped(p, 0.44) == Approx(0.35));  // 1.36 steps: rounded down
+    CHECK(snapped(p, 0.85) == Approx(0.85));  // on a step already
+    CHECK(snapped(p, 0.1) == 0.1);
+    CHECK(snapped(p, -7.0) == 0.1);  // below the minimum: the minimum
+    CHECK(snapped(p, 0.0) == 0.1);
+    CHECK(snapped(p, 42.0) == 1.1);  // above the maximum: the maximum
+    CHECK(snapped(p, 1.1) == 1.1);
+  }
+  SECTION("a range below zero: -3, -2.5, ..., -1") {
+    const scene::Parameter p = slider(-3.0, -1.0, 0.5);
+    CHECK(snapped(p, -2.2) == Approx(-2.0));  // 1.6 steps from -3
+    CHECK(snapped(p, -2.3) == Approx(-2.5));  // 1.4 steps
+    CHECK(snapped(p, -1.1) == Approx(-1.0));
+    CHECK(snapped(p, -2.9) == Approx(-3.0));
+    CHECK(snapped(p, -5.0) == -3.0);
+    CHECK(snapped(p, 0.0) == -1.0);
+    CHECK(snapped(p, 3.0) == -1.0);
+  }
+  SECTION("a range across zero with a step that does not divide it: -1, -0.3, 0.4, 1.1, and 1.5 the top") {
+    const scene::Parameter p = slider(-1.0, 1.5, 0.7);
+    CHECK(snapped(p, 0.0) == Approx(-0.3));   // 1.43 steps
+    CHECK(snapped(p, 0.1) == Approx(0.4));    // 1.57 steps
+    CHECK(snapped(p, -0.7) == Approx(-1.0));  // 0.43 steps
+    CHECK(snapped(p, -0.6) == Approx(-0.3));  // 0.57 steps
+    CHECK(snapped(p, 1.0) == Approx(1.1));
+    CHECK(snapped(p, 2.0) == 1.5);  // above: the maximum, though off the steps
+    CHECK(snapped(p, -1.2) == -1.0);
+  }
+  SECTION("whole steps: a count slider rounds to the nearest whole number") {
+    const scene::Parameter p = slider(3.0, 10.0, 1.0);
+    CHECK(snapped(p, 5.4) == 5.0);
+    CHECK(snapped(p, 5.6) == 6.0);
+    CHECK(snapped(p, 2.4) == 3.0);
+    CHECK(snapped(p, 11.7) == 10.0);
+  }
+  SECTION("a range the sculptor narrowed: clamped to it, stepped from the file's minimum") {
+    const scene::Parameter p = slider(-1.0, 1.0, 0.25);
+    const std::pair<double, double> narrowed{-0.4, 0.6};
+    CHECK(viewer::snap_to_step(p, 0.3, narrowed) == Approx(0.25));
+    CHECK(viewer::snap_to_step(p, 0.9, narrowed) == 0.6);    // the narrowed top, not the file's 1
+    CHECK(viewer::snap_to_step(p, -0.9, narrowed) == -0.4);  // the narrowed bottom, not the file's -1
+    CHECK(viewer::snap_to_step(p, -0.3, narrowed) == Approx(-0.25));
+  }
+  SECTION("no step: the value as typed, only clamped") {
+    const scene::Parameter p = slider(-2.0, 2.0, 0.0);
+    CHECK(snapped(p, 0.123456) == 0.123456);
+    CHECK(snapped(p, -2.5) == -2.0);
+    CHECK(snapped(p, 2.5) == 2.0);
+  }
+}

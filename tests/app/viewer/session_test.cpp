@@ -67,3 +67,76 @@ TEST_CASE("an .anom file applies its saved sliders and working mesh to the open 
   CHECK_THROWS_WITH(flat.apply_anom(original + "kleinbottle_s1.anom"),
                     Catch::Contains("open its .nome first"));
 }
+
+// A reload of a scene changed on disk (another program's write, the text pane's Apply) keeps the values
+// the user moved the sliders to where the file still has the slider and its range holds the value; a
+// slider the user left, a new one, and one whose new range excludes the user's value take the file's
+// value. Read on the sliders and on the positions the scene is evaluated at.
+TEST_CASE("reloading a changed scene keeps the sliders the user moved, where they still are and fit",
+          "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("session_reload_sliders");
+  const std::string file = dir + "/s.nome";
+  const std::string geometry =
+      "point p ({expr $b_keep} {expr $b_edge} {expr $b_narrowed}) endpoint\n"
+      "point q ({expr $b_untouched} 2 0) endpoint\n"
+      "point r (0 3 {expr $b_%s}) endpoint\n"
+      "mesh m face f (p q r) endface endmesh\ninstance i m endinstance\n";
+  auto scene_text = [&](const std::string& bank, const std::string& last) {
+    std::string text = geometry;
+    text.replace(text.find("%s"), 2, last);
+    return "bank b\n" + bank + "endbank\n" + text;
+  };
+  std::ofstream(file) << scene_text(
+      "  set keep 0.5 0 1 0.1\n  set edge 0.5 0 1 0.1\n  set narrowed 0.5 0 1 0.1\n"
+      "  set untouched 0.5 0 1 0.1\n  set gone 0.5 0 1 0.1\n  set back 0.5 0 1 0.1\n",
+      "gone");
+  Session session = Session::open(file);
+  auto value = [&](const std::string& name) {
+    const auto id = session.scene()->find_parameter(name);
+    REQUIRE(id);
+    return session.scene()->parameters()[*id].value;
+  };
+  auto position = [&](const std::string& vertex) {
+    const auto& names = session.polygons().vertex_names;
+    const auto at = std::find(names.begin(), names.end(), vertex);
+    REQUIRE(at != names.end());
+    return session.positions()[Index(at - names.begin())];
+  };
+  session.set_parameter("b_keep", 0.7);
+  session.set_parameter("b_edge", 0.9);
+  session.set_parameter("b_narrowed", 0.8);
+  session.set_parameter("b_gone", 0.1);
+  session.set_parameter("b_back", 0.2);
+  session.set_parameter("b_back", 0.5);  // moved and put back: the file's value
+  REQUIRE(position("i_p") == Vec3(0.7, 0.9, 0.8));
+
+  // The file narrows two ranges to 0.9 and 0.6, gives `untouched` and `back` new values, drops `gone`
+  // and adds `fresh`.
+  std::ofstream(file) << scene_text(
+      "  set keep 0.5 0 1 0.1\n  set edge 0.5 0 0.9 0.1\n  set narrowed 0.3 0 0.6 0.1\n"
+      "  set untouched 0.2 0 1 0.1\n  set fresh 0.4 0 1 0.1\n  set back 0.6 0 1 0.1\n",
+      "fresh");
+  session.reload();
+  CHECK(value("b_keep") == 0.7);       // moved, still in range
+  CHECK(value("b_edge") == 0.9);       // moved to what is now the top of the range: still in it
+  CHECK(value("b_narrowed") == 0.3);   // moved past the new top: the file's value
+  CHECK(value("b_untouched") == 0.2);  // never moved: the file's new value
+  CHECK(value("b_back") == 0.6);       // moved back to the file's value: the file's new value
+  CHECK(value("b_fresh") == 0.4);      // new: the file's value
+  CHECK_FALSE(session.scene()->find_parameter("b_gone"));
+  CHECK(position("i_p") == Vec3(0.7, 0.9, 0.3));
+  CHECK(position("i_q") == Vec3(0.2, 2, 0));
+  CHECK(position("i_r") == Vec3(0, 3, 0.4));
+
+  // Another change: the file's own value of a slider the user moved does not take it back.
+  std::ofstream(file) << scene_text(
+      "  set keep 0.6 0 1 0.1\n  set edge 0.5 0 0.9 0.1\n  set narrowed 0.3 0 0.6 0.1\n"
+      "  set untouched 0.25 0 1 0.1\n  set fresh 0.45 0 1 0.1\n  set back 0.6 0 1 0.1\n",
+      "fresh");
+  session.reload();
+  CHECK(value("b_keep") == 0.7);
+  CHECK(value("b_untouched") == 0.25);
+  CHECK(value("b_fresh") == 0.45);
+  CHECK(position("i_p") == Vec3(0.7, 0.9, 0.3));
+  CHECK(position("i_r") == Vec3(0, 3, 0.45));
+}

@@ -1,6 +1,9 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "app/viewer_support.hpp"
 #include "nome/edit/scene_document.hpp"
@@ -115,4 +118,116 @@ TEST_CASE(
   const SceneDocument back = SceneDocument::from_scene(read_scene(dir + "/weighted.nome"));
   const SceneDocument in_text = SceneDocument::from_scene(scene::Scene::from_text(text, "t.nome"));
   CHECK(edge_mode_subdivided(back, 3) == edge_mode_subdivided(in_text, 3));
+}
+
+namespace {
+
+using EdgeName = std::pair<std::string, std::string>;
+using SharpWeights = std::map<EdgeName, float>;
+
+EdgeName ordered(EdgeName e) {
+  if (e.second < e.first) std::swap(e.first, e.second);
+  return e;
+}
+
+// Three edges of the cube that clicks in edge mode pick, each with its pixel.
+std::vector<std::pair<glm::dvec2, EdgeName>> clickable_edges(const Mesh& mesh) {
+  const ScreenProjection projection = nome::test::viewer_projection(mesh, 30.0, 25.0);
+  std::vector<std::pair<glm::dvec2, EdgeName>> found;
+  for (Index e = 0; e < mesh.num_edges() && found.size() < 3; ++e) {
+    const auto [u, w] = mesh.edge(e).vertices;
+    if (const auto at = nome::test::edge_click(mesh, projection, e))
+      found.push_back({*at, ordered({mesh.vertex_names()[u], mesh.vertex_names()[w]})});
+  }
+  REQUIRE(found.size() == 3);
+  return found;
+}
+
+// The sharp edges a saved scene holds, by their vertex names.
+SharpWeights saved_sharp(const std::string& path) {
+  SharpWeights weights;
+  const SceneDocument saved = SceneDocument::from_scene(read_scene(path));
+  for (const NamedSharpEdge& e : saved.edits().sharp_edges()) weights[ordered({e.a, e.b})] = e.weight;
+  return weights;
+}
+
+// Whether the texts occur in the log in this order.
+bool logged_in_order(const std::string& log, const std::vector<std::string>& texts) {
+  std::size_t at = 0;
+  for (const std::string& text : texts) {
+    at = log.find(text, at);
+    if (at == std::string::npos) {
+      UNSCOPED_INFO("not found in order: " << text);
+      return false;
+    }
+    at += text.size();
+  }
+  return true;
+}
+
+}  // namespace
+
+// K on several edges: every selected edge takes the Edit section's sharpness, unless every one has it
+// already, when all become smooth; the message counts the edges that changed. Undo gives each edge its own
+// weight from before, redo the one after. Each step is read back from the scene the script saves.
+TEST_CASE("K on edges of mixed sharpness gives them all the sharpness unless all have it; undo each its own",
+          "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("sharp_mixed");
+  std::ofstream(dir + "/cube.nome") << edge_mode_cube_text;
+  const auto edges = clickable_edges(glue_faces(read_scene(dir + "/cube.nome").combined_soup()).mesh);
+  const EdgeName e1 = edges[0].second, e2 = edges[1].second, e3 = edges[2].second;
+  auto clicks = [&](std::initializer_list<int> which) {
+    std::string lines;
+    for (int i : which) lines += click_line(edges[size_t(i)].first);
+    return lines;
+  };
+  int saves = 0;
+  auto save = [&] { return "save " + dir + "/s" + std::to_string(++saves) + ".nome\n"; };
+  std::string script = "view 30 25\nmode edge\n";
+  script += clicks({0}) + "key K\n" + save();                                 // s1: e1 alone, from smooth
+  script += clicks({0, 1, 2}) + "key K\n" + save();                           // s2: one of three sharp
+  script += clicks({0, 1}) + "key K\n" + save();                              // s3: both sharp: smooth
+  script += "setting sharpness 2.5\n" + clicks({2, 0}) + "key K\n" + save();  // s4: sharp and smooth
+  script += clicks({0, 1, 2}) + "key K\n" + save();                           // s5: two of three at 2.5
+  script += "setting sharpness infinite\n" + clicks({0, 2}) + "key K\n" + save();  // s6: all 2.5
+  script += "setting sharpness 2.5\n" + clicks({0, 1}) + "key K\n" + save();       // s7: infinite and 2.5
+  script += clicks({0, 1}) + "key K\n" + save();                                   // s8: both at 2.5: smooth
+  for (int undo = 0; undo < 3; ++undo) script += "key Ctrl+Z\n" + save();          // s9..s11
+  script += "action redo\n" + save() + "quit\n";                                   // s12
+  viewer::ViewerOptions options;
+  options.file = dir + "/cube.nome";
+  options.script = nome::test::write_script(dir, script);
+  nome::test::TestViewer viewer(options);
+  CHECK(viewer.run() == 0);
+  const std::string log = viewer.messages();
+  INFO(log);
+  CHECK(logged_in_order(
+      log, {"sharp: 1 edge marked sharp", "sharp: 2 edges marked sharp", "sharp: 2 edges marked smooth",
+            "sharp: 2 edges given sharpness 2.5", "sharp: 1 edge given sharpness 2.5",
+            "sharp: 2 edges marked sharp", "sharp: 1 edge given sharpness 2.5",
+            "sharp: 2 edges marked smooth", "undone", "undone", "undone", "redone"}));
+  const float infinite = infinite_sharpness;
+  const SharpWeights s1{{e1, infinite}};
+  const SharpWeights s2{{e1, infinite}, {e2, infinite}, {e3, infinite}};
+  const SharpWeights s3{{e3, infinite}};
+  const SharpWeights s4{{e1, 2.5f}, {e3, 2.5f}};
+  const SharpWeights s5{{e1, 2.5f}, {e2, 2.5f}, {e3, 2.5f}};
+  const SharpWeights s6{{e1, infinite}, {e2, 2.5f}, {e3, infinite}};
+  const SharpWeights s7{{e1, 2.5f}, {e2, 2.5f}, {e3, infinite}};
+  const SharpWeights s8{{e3, infinite}};
+  const std::vector<SharpWeights> expected = {s1, s2, s3, s4, s5, s6, s7, s8, s7, s6, s5, s6};
+  REQUIRE(saves == int(expected.size()));
+  for (int i = 0; i < saves; ++i) {
+    INFO("s" << i + 1);
+    CHECK(saved_sharp(dir + "/s" + std::to_string(i + 1) + ".nome") == expected[size_t(i)]);
+  }
+  // The shown mesh after the redo: each edge with its weight, the others smooth.
+  const Mesh& shown = *viewer.window().shown()->mesh;
+  SharpWeights drawn;
+  for (Index e = 0; e < shown.num_edges(); ++e)
+    if (shown.edge_sharpness(e) > 0) {
+      const auto [u, w] = shown.edge(e).vertices;
+      drawn[ordered({shown.vertex_names()[u], shown.vertex_names()[w]})] = shown.edge_sharpness(e);
+    }
+  CHECK(drawn == s6);
 }

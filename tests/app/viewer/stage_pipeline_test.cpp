@@ -9,6 +9,7 @@
 
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/offset_normals.hpp"
+#include "render/display_settings.hpp"
 #include "support/same_report.hpp"
 #include "support/shapes.hpp"
 #include "viewer/session/session.hpp"
@@ -247,4 +248,51 @@ TEST_CASE("a new solid is read by a frame while the pipeline copies it and the n
     StagePipeline fresh;
     CHECK(moved->mesh->positions() == run(fresh)->mesh->positions());
   }
+}
+
+// Automatic shading draws a result smooth when Catmull-Clark ran on the way to the stage shown: levels
+// before the offset at the subdivided stage or later, or levels after it at the subdivided offset stage.
+// Checked for every stage and combination of levels before, offset and levels after, against that rule
+// and against the result itself (a level ran when the shown mesh has more faces than with no levels).
+TEST_CASE(
+    "automatic shading is smooth exactly when a subdivision level ran before the stage shown, "
+    "the levels after the offset alone included",
+    "[app]") {
+  StagePipeline pipeline;
+  const PipelineInput soup = two_pieces();
+  for (const Stage stage : all_stages)
+    for (const int before : {0, 2})
+      for (const double distance : {0.0, 0.05})
+        for (const int after : {0, 1}) {
+          if (after > 0 && distance == 0.0) continue;  // levels after need an offset (refused)
+          INFO(to_string(stage) << ", " << before << " levels, offset " << distance << ", " << after
+                                << " after");
+          PipelineSettings settings = viewer::initial_settings();
+          settings.stage = stage;
+          settings.subdivision_levels = before;
+          settings.offset_distance = distance;
+          settings.subdivision_after = after;
+          const bool reaches_subdivision =
+              stage == Stage::subdivided || stage == Stage::offset || stage == Stage::subdivided_offset;
+          const bool expected = (reaches_subdivision && before > 0) ||
+                                (stage == Stage::subdivided_offset && distance > 0.0 && after > 0);
+          const auto result = pipeline.run(soup, settings, nome::stop_token{});
+          REQUIRE(result);
+          CHECK(result->is_smoothed == expected);
+          CHECK(render::shown_shading(render::Shading::automatic, result->is_smoothed) ==
+                (expected ? render::Shading::smooth : render::Shading::flat));
+          CHECK(settings.is_smoothing() == expected);
+          // The same stage with no levels at all: fewer faces exactly when a level ran.
+          PipelineSettings unsmoothed = settings;
+          unsmoothed.subdivision_levels = 0;
+          unsmoothed.subdivision_after = 0;
+          const auto plain = pipeline.run(soup, unsmoothed, nome::stop_token{});
+          REQUIRE(plain);
+          CHECK_FALSE(plain->is_smoothed);
+          CHECK((result->mesh->num_faces() > plain->mesh->num_faces()) == expected);
+          // A shading chosen in the View menu wins either way.
+          CHECK(render::shown_shading(render::Shading::flat, result->is_smoothed) == render::Shading::flat);
+          CHECK(render::shown_shading(render::Shading::smooth, result->is_smoothed) ==
+                render::Shading::smooth);
+        }
 }

@@ -136,3 +136,32 @@ TEST_CASE("the offset after an added stage reads that stage's result", "[kernel]
   CHECK(pipeline.work("scaled") == StageWork::cached);
   CHECK(pipeline.work(Stage::offset) == StageWork::positions);
 }
+
+TEST_CASE("a writer's surface runs a stage added after the subdivision or before the offset", "[kernel]") {
+  const PolygonSoup band = test::mobius_band(12, 2);
+  for (const Stage stop : {Stage::subdivided_offset, Stage::offset}) {
+    PipelineSettings s = subdivided_twice();
+    s.stage = stop;
+    s.offset_distance = stop == Stage::offset ? 0.05 : 0.0;
+    CAPTURE(to_string(stop));
+    PassCounts counts;
+    Pipeline pipeline = scaling_pipeline(counts);
+    pipeline.set_input(PipelineInput{band, {}, {}});
+    // run()'s mesh is the oracle: the writer's quads or offset surface must hold the same positions.
+    const Buffer<Vec3> expected = pipeline.run(s).positions();
+    Pipeline streamed = scaling_pipeline(counts);
+    streamed.set_input(PipelineInput{band, {}, {}});
+    const PipelineSurface surface = streamed.run_surface(s);
+    CHECK(streamed.work("scaled") != StageWork::skipped);
+    if (surface.mesh) {
+      CHECK(surface.mesh->positions() == expected);
+    } else if (surface.solid) {
+      REQUIRE(surface.solid->num_vertices() == expected.size());
+      for (Index v = 0; v < expected.size(); ++v) CHECK(surface.solid->position(v) == expected[v]);
+    } else {
+      REQUIRE(surface.quads);
+      CHECK(std::equal(surface.quads->positions.begin(), surface.quads->positions.end(), expected.begin(),
+                       expected.end()));
+    }
+  }
+}

@@ -38,6 +38,11 @@ int loop_sense(const Mesh& mesh, Index v, Index around) {
   return 0;
 }
 
+std::vector<Vec3> scaled(std::vector<Vec3> chain, double factor) {
+  for (Vec3& p : chain) p *= factor;
+  return chain;
+}
+
 Mesh with_faces(const Mesh& mesh, const ZipperFaces& strip) {
   PolygonSoup soup = to_soup(mesh);
   for (const auto& face : strip.faces) soup.add_face(face);
@@ -205,4 +210,62 @@ TEST_CASE("zipper refuses mismatched or overlapping selections", "[kernel]") {
   CHECK_THROWS_AS(zipper_borders(tube, {0, 0, false}, {12, 14, false}), InvalidInputError);
   CHECK_THROWS_AS(zipper_borders(tube, {0, 3, false}, {2, 5, false}), InvalidInputError);
   CHECK_THROWS_AS(zipper_borders(tube, {6, 6, false}, {0, 0, false}), InvalidInputError);  // 6 is inside
+}
+
+// The cost model's lengths are all relative to the model: a model in millimetres or in kilometres zips as
+// it does in units.
+TEST_CASE("the zipper pairs the same rungs on a model a thousand times larger or smaller", "[kernel]") {
+  std::mt19937 rng{42};
+  std::uniform_int_distribution<Index> size(2, 12);
+  int penalty_matters = 0, skew_matters = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const std::vector<Vec3> a = test::random_chain(rng, size(rng), 0.0),
+                            b = test::random_chain(rng, size(rng), 1.0);
+    std::map<std::pair<double, double>, std::vector<Index>> faces;
+    for (const double skew : {0.0, 1.0, 3.0})
+      for (const double penalty : {0.5, 1.0, 1.3, 2.0, 4.0}) {
+        INFO("trial " << trial << ", skew weight " << skew << ", triangle penalty " << penalty);
+        ZipperOptions options;
+        options.triangle_penalty = penalty;
+        options.skew_weight = skew;
+        const ZipperStrip unit = zipper_strip(a, b, options);
+        faces[{skew, penalty}] = std::vector<Index>(unit.face_vertices.begin(), unit.face_vertices.end());
+        for (const double factor : {1000.0, 0.001}) {
+          INFO("scaled by " << factor);
+          const ZipperStrip strip = zipper_strip(scaled(a, factor), scaled(b, factor), options);
+          CHECK(strip.face_offsets == unit.face_offsets);
+          CHECK(strip.face_vertices == unit.face_vertices);
+          CHECK(strip.cost == Approx(factor * unit.cost).epsilon(1e-9));
+        }
+      }
+    penalty_matters += faces[{1.0, 0.5}] != faces[{1.0, 4.0}];
+    skew_matters += faces[{0.0, 1.0}] != faces[{3.0, 1.0}];
+  }
+  // The chains are such that both terms change the strip: the checks above compare choices, not defaults.
+  CHECK(penalty_matters > 10);
+  CHECK(skew_matters > 10);
+}
+
+TEST_CASE("zipping borders of a model scaled by 1000 or 0.001 gives the same faces", "[kernel]") {
+  // Two strips of quads of different lengths whose facing borders (7 and 5 vertices) need triangles.
+  PolygonSoup lower = test::grid(6, 1), upper = test::grid(4, 1);
+  for (Vec3& p : upper.positions) p = Vec3(p.x * 1.5, p.y + 2.0, 0.3 * p.x);
+  const PolygonSoup both = test::disjoint_union(lower, upper);
+  const Mesh unit_mesh = build_mesh(both);
+  const BorderSelection a{7, 13, loop_sense(unit_mesh, 7, 1000) < 0},
+      b{14, 18, loop_sense(unit_mesh, 14, 1000) < 0};
+  for (const double penalty : {1.0, 1.3, 3.0}) {
+    ZipperOptions options;
+    options.triangle_penalty = penalty;
+    const ZipperFaces unit = zipper_borders(unit_mesh, a, b, options);
+    for (const double factor : {1000.0, 0.001}) {
+      INFO("penalty " << penalty << ", scaled by " << factor);
+      PolygonSoup soup = both;
+      for (Vec3& p : soup.positions) p *= factor;
+      const ZipperFaces strip = zipper_borders(build_mesh(std::move(soup)), a, b, options);
+      CHECK(strip.faces == unit.faces);
+      CHECK(strip.triangles == unit.triangles);
+      CHECK(strip.cost == Approx(factor * unit.cost).epsilon(1e-9));
+    }
+  }
 }

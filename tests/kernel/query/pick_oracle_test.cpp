@@ -99,6 +99,18 @@ ScreenProjection pick_oracle_flat_camera() {
   return p;
 }
 
+// The camera of pick_oracle_perspective(1, 1), not turned, over 400 x 400 pixels: camera point (x, y, z)
+// is pixel (200 (1 - x / z), 200 (1 + y / z)).
+glm::dvec2 pick_oracle_pixel(const Vec3& p) {
+  return {200.0 * (1.0 - p.x / p.z), 200.0 * (1.0 + p.y / p.z)};
+}
+
+// That camera's ray through a pixel: from the near plane (z = -1) at t = 0 to the far plane (z = -3), t = 1.
+Ray pick_oracle_ray(glm::dvec2 pixel) {
+  const Vec3 near(pixel.x / 200.0 - 1.0, 1.0 - pixel.y / 200.0, -1.0);
+  return Ray{near, 2.0 * near, 0.0, 1.0};
+}
+
 Index pick_oracle_edge(const Mesh& mesh, Index u, Index w) {
   for (Index e = 0; e < mesh.num_edges(); ++e) {
     const auto [a, b] = mesh.edge(e).vertices;
@@ -371,4 +383,83 @@ TEST_CASE("rim cubes and their entry depths computed by hand", "[kernel]") {
   REQUIRE(back);
   CHECK(back->vertex == 1);
   CHECK(back->depth == Approx(1.5).epsilon(1e-14));
+}
+
+TEST_CASE("of several corners in reach the one nearest on screen wins, on the frontmost of stacked faces",
+          "[kernel]") {
+  // Tilted hexagons stacked in front of the camera, added in random order with their corners starting
+  // anywhere: the frontmost face is often neither the first face hit by index nor the BVH's first
+  // triangle, and several of its corners at different depths lie within the reach.
+  ScreenProjection p;
+  p.projection = pick_oracle_perspective(1.0, 1.0);
+  p.viewport = {400.0, 400.0};
+  const double reach = 40.0;
+  std::mt19937 rng{42};
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int tested = 0, not_first_in_reach = 0, not_last_in_reach = 0, not_first_face = 0, deeper_wins = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<std::vector<Vec3>> layers;
+    for (int k = 0; k < 5; ++k) {
+      const double depth = -1.3 - 1.3 * unit(rng), radius = 0.25 + 0.2 * unit(rng);
+      const Vec3 centre(0.1 * depth * (unit(rng) - 0.5), 0.1 * depth * (unit(rng) - 0.5), depth);
+      const glm::dmat4 tilt =
+          glm::rotate(glm::rotate(glm::dmat4(1.0), 1.4 * (unit(rng) - 0.5), Vec3(1, 0, 0)),
+                      1.4 * (unit(rng) - 0.5), Vec3(0, 1, 0));
+      const double start = 6.283185307179586 * unit(rng);
+      std::vector<Vec3> corners;
+      for (int i = 0; i < 6; ++i) {
+        const double a = start + 6.283185307179586 * i / 6.0;
+        corners.push_back(centre +
+                          Vec3(tilt * glm::dvec4(radius * std::cos(a), radius * std::sin(a), 0.0, 0.0)));
+      }
+      layers.push_back(std::move(corners));
+    }
+    PolygonSoup soup;
+    for (const auto& corners : layers) {
+      std::vector<Index> face;
+      for (const Vec3& c : corners) face.push_back(soup.add_vertex(c));
+      soup.add_face(face);
+    }
+    const Mesh mesh = build_mesh(std::move(soup));
+    const TriangleBvh bvh(mesh);
+    const glm::dvec2 cursor = pick_oracle_pixel(Vec3(0.0, 0.0, -2.0)) +
+                              glm::dvec2(60.0 * (unit(rng) - 0.5), 60.0 * (unit(rng) - 0.5));
+    // The oracle: the nearest hit by Möller-Trumbore, then the face's corner nearest the cursor by hand.
+    const auto hits = pick_oracle_hits(mesh, pick_oracle_ray(cursor));
+    if (hits.empty()) {
+      CHECK_FALSE(pick_vertex(mesh, bvh, p, cursor, reach));
+      continue;
+    }
+    if (hits[0].margin < 1e-9 || (hits.size() > 1 && hits[1].depth - hits[0].depth < 1e-9)) continue;
+    const Index front = hits[0].face;
+    std::vector<Index> in_reach;
+    Index nearest = no_index;
+    double nearest_distance = reach;
+    for (const Index v : mesh.face_vertices(front)) {
+      const double d = glm::length(pick_oracle_pixel(mesh.position(v)) - cursor);
+      if (d > reach) continue;
+      in_reach.push_back(v);
+      if (d < nearest_distance) nearest_distance = d, nearest = v;
+    }
+    INFO("trial " << trial);
+    CHECK(pick_face(bvh, p, cursor) == front);
+    if (nearest == no_index) {
+      CHECK_FALSE(pick_vertex(mesh, bvh, p, cursor, reach));
+      continue;
+    }
+    CHECK(pick_vertex(mesh, bvh, p, cursor, reach) == nearest);
+    ++tested;
+    not_first_in_reach += nearest != in_reach.front();
+    not_last_in_reach += nearest != in_reach.back();
+    not_first_face += front != std::min_element(hits.begin(), hits.end(), [](const auto& a, const auto& b) {
+                                 return a.face < b.face;
+                               })->face;
+    for (const Index v : in_reach) deeper_wins += mesh.position(v).z > mesh.position(nearest).z;
+  }
+  // Each case named above occurred: the checks compared real choices.
+  CHECK(tested > 100);
+  CHECK(not_first_in_reach > 10);
+  CHECK(not_last_in_reach > 10);
+  CHECK(not_first_face > 10);
+  CHECK(deeper_wins > 10);
 }

@@ -319,3 +319,75 @@ TEST_CASE("a tube's offset folds over exactly when the distance passes its radiu
     CHECK(find_fold_overs(tube, compute_normals(tube), r * (1.0 + 1e-6)).size() == tube.num_faces());
   }
 }
+
+TEST_CASE("near-miss places are listed thinnest first, each at its thinnest vertex", "[kernel]") {
+  // Three unit cubes, tipped a little, over a wide slab whose top is z = 0: each cube's lowest corner is
+  // the given gap above it, its other bottom corners a little higher (all within the wall), so each cube
+  // is one place of 4 vertices whose gaps are their heights. Written in vertex order 0.05, 0.02, 0.07.
+  const double wall = 0.1;
+  PolygonSoup soup = print_oracle_box(Vec3(10.0, 10.0, 1.0), Vec3(-5.0, -5.0, -1.0));
+  const struct {
+    double x, gap, tip_x, tip_y;
+  } cubes[] = {{-3.5, 0.05, 0.012, 0.009}, {-0.5, 0.02, 0.008, -0.014}, {2.5, 0.07, 0.01, -0.011}};
+  for (const auto& c : cubes) {
+    PolygonSoup cube = print_oracle_box(Vec3(1.0), Vec3(c.x, -0.5, 0.0));
+    const Vec3 centre(c.x + 0.5, 0.0, 0.5);
+    const glm::dmat4 tip =
+        glm::rotate(glm::rotate(glm::dmat4(1.0), c.tip_x, Vec3(1, 0, 0)), c.tip_y, Vec3(0, 1, 0));
+    double lowest = 1e300;
+    for (Vec3& p : cube.positions) {
+      p = centre + Vec3(tip * glm::dvec4(p - centre, 0.0));
+      lowest = std::min(lowest, p.z);
+    }
+    for (Vec3& p : cube.positions) p.z += c.gap - lowest;
+    soup = test::disjoint_union(soup, cube);
+  }
+  const Mesh solid = build_mesh(std::move(soup));
+  // The oracle: each cube's bottom corners, their gaps the heights above the slab.
+  struct Expected {
+    double gap;
+    Index thinnest;
+  };
+  std::vector<Expected> expected;
+  std::vector<Index> near_vertices;
+  for (Index k = 0; k < 3; ++k) {
+    Expected e{1e300, no_index};
+    for (Index v = 8 * (k + 1); v < 8 * (k + 2); ++v) {
+      const double gap = solid.position(v).z;
+      if (gap >= wall) continue;
+      near_vertices.push_back(v);
+      if (gap < e.gap) e = {gap, v};
+    }
+    expected.push_back(e);
+  }
+  REQUIRE(near_vertices.size() == 12);
+  // The thinnest corner of a cube is its first near vertex for one cube and not for another.
+  CHECK(expected[0].thinnest != near_vertices[0]);
+  CHECK(expected[1].thinnest == near_vertices[4]);
+  std::sort(expected.begin(), expected.end(),
+            [](const Expected& a, const Expected& b) { return a.gap < b.gap; });
+  for (const int threads : {1, 2}) {
+    INFO(threads << " threads");
+    PrintCheckOptions options;
+    options.min_wall = wall;
+    options.threads = threads;
+    const PrintCheck check = check_printability(solid, options);
+    REQUIRE(check.near_misses.size() == near_vertices.size());
+    for (std::size_t i = 0; i < near_vertices.size(); ++i) {
+      CHECK(check.near_misses[i].vertex == near_vertices[i]);
+      CHECK(check.near_misses[i].distance == Approx(solid.position(near_vertices[i]).z).margin(1e-12));
+    }
+    REQUIRE(check.places.size() == 3);
+    for (std::size_t i = 0; i < 3; ++i) {
+      INFO("place " << i);
+      const PrintPlace& place = check.places[i];
+      CHECK(place.kind == FindingKind::near_miss);
+      CHECK(place.size == 4);
+      CHECK(place.distance == Approx(expected[i].gap).margin(1e-12));
+      CHECK(place.position == solid.position(expected[i].thinnest));
+      REQUIRE(place.face != no_index);
+      CHECK(solid.face_component(place.face) == solid.vertex_component(expected[i].thinnest));
+      CHECK(solid.face_component(place.other_face) == solid.vertex_component(0));
+    }
+  }
+}

@@ -84,10 +84,11 @@ void SceneDocument::reload(scene::Scene fresh) {
   // The file's own edits are those the document holds already.
   fresh.take_edits();
   if (scene_) {
-    // The user's slider values survive an edit of the text (where the slider is still there and in range).
+    // The values the user moved sliders to survive an edit of the text (where the slider is still there
+    // and in range); a slider left at the file's value takes the file's new one.
     for (const scene::Parameter& p : scene_->parameters()) {
       const auto id = fresh.find_parameter(p.full_name);
-      if (!id) continue;
+      if (!id || p.value == p.file_value) continue;
       const scene::Parameter& q = fresh.parameters()[*id];
       if (p.value != q.value && p.value >= q.min && p.value <= q.max) fresh.set_parameter(*id, p.value);
     }

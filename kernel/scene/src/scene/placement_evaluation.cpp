@@ -145,6 +145,7 @@ Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std:
     const std::optional<Color> color = placement_color(placement, reads);
     Piece piece = definition_piece(p, reads, errors, copied_from);
     place_points(piece.soup.positions, m);
+    p.colors_own_faces = piece.has_face_colors();
     p.color = color;
     p.is_mirrored = glm::determinant(m) < 0;
     if (p.is_mirrored) reverse_faces(piece.soup);
@@ -198,7 +199,9 @@ bool Scene::move_vertices(Index placement, Buffer<Vec3>& previous) {
 
 bool Scene::move_copied_vertices(Index placement, Buffer<Vec3>& previous) {
   Placement& p = placements_[placement];
-  if (p.copied_from.empty() || p.copied_from.size() != p.world.soup.positions.size()) return false;
+  // Copying positions would keep the colours of faces whose own surfaces may read the slider.
+  if (p.copied_from.empty() || p.colors_own_faces || p.copied_from.size() != p.world.soup.positions.size())
+    return false;
   std::vector<Index> reads;
   Buffer<Vec3> moved(p.copied_from.size());
   try {

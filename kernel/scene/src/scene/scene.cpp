@@ -63,9 +63,9 @@ void Scene::register_parameters(std::vector<Diagnostic>& errors) {
   for (const BankDecl& b : ast_.banks) {
     Bank bank{b.name.text, {}, {}};
     for (const SliderDecl& s : b.sliders) {
-      Parameter p{b.name.text,     s.name.text,   b.name.text + "_" + s.name.text,
-                  s.value.literal, s.min.literal, s.max.literal,
-                  s.step.literal};
+      Parameter p{b.name.text,     s.name.text,    b.name.text + "_" + s.name.text,
+                  s.value.literal, s.min.literal,  s.max.literal,
+                  s.step.literal,  s.value.literal};
       if (parameter_ids_.count(p.full_name)) {
         errors.push_back(located(s.name.location, "duplicate parameter '" + p.full_name + "'"));
         continue;
@@ -237,14 +237,19 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
     else
       remade.push_back(i);
   }
+  // What evaluating a placement changes, to put back when the value is refused.
   struct Kept {
     Piece world;
     std::vector<Index> reads;
     std::vector<VertexRef> copied_from;
+    std::optional<Color> color;
+    bool is_mirrored;
+    bool colors_own_faces;
   };
   std::vector<Kept> backup;
   const auto keep = [&](Index i) {
-    backup.push_back({placements_[i].world, placements_[i].reads, placements_[i].copied_from});
+    const Placement& p = placements_[i];
+    backup.push_back({p.world, p.reads, p.copied_from, p.color, p.is_mirrored, p.colors_own_faces});
   };
   // A placement made again may still have only moved (a generator with no positions of its own).
   std::vector<Index> new_topology;
@@ -289,9 +294,13 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
     if (is_slider) parameters_[parameter].value = old_value;
     for (auto& [i, previous] : moved) placements_[i].world.soup.positions = std::move(previous);
     for (size_t k = 0; k < remade.size(); ++k) {
-      placements_[remade[k]].world = std::move(backup[k].world);
-      placements_[remade[k]].reads = std::move(backup[k].reads);
-      placements_[remade[k]].copied_from = std::move(backup[k].copied_from);
+      Placement& p = placements_[remade[k]];
+      p.world = std::move(backup[k].world);
+      p.reads = std::move(backup[k].reads);
+      p.copied_from = std::move(backup[k].copied_from);
+      p.color = backup[k].color;
+      p.is_mirrored = backup[k].is_mirrored;
+      p.colors_own_faces = backup[k].colors_own_faces;
     }
     is_vertex_index_current_ = false;
     if (over_budget) throw BudgetError(*over_budget);

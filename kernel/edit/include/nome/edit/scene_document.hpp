@@ -62,8 +62,9 @@ class SceneDocument {
   // the consolidated faces). Throws InvalidInputError for flat geometry, SceneError (nothing changes)
   // when its names or values do not fit the scene.
   void apply_anom(std::string_view text, const std::string& file);
-  // The file read again (best with SceneOptions::shows_edits false), keeping the edits and (where still
-  // in range) the slider values.
+  // The file read again (best with SceneOptions::shows_edits false), keeping the edits and the values the
+  // user moved sliders to (where the slider is still there and its range holds the value; the others take
+  // the file's values).
   void reload(scene::Scene fresh);
   void reload(PolygonSoup polygons);
 

@@ -193,7 +193,13 @@ class Pipeline {
   // The slot's result is made anew or freed: a copy of the lent one is not needed.
   static void forget_lent(Slot& slot);
   void input_changed(Change change);
-  const Mesh& run_stages(const PipelineSettings& settings, const PipelineSettings& budgeted,
+  // The index of settings.stage in the list; throws InvalidInputError when it is not there.
+  int stop(const PipelineSettings& settings) const;
+  // The last stage up to settings.stage that is on (its result is run()'s), or 0, the scene.
+  int last_on_stage(const PipelineSettings& settings) const;
+  // Runs the list down to stage `last` (at most settings.stage's), checking every stage settings.stage
+  // runs through.
+  const Mesh& run_stages(int last, const PipelineSettings& settings, const PipelineSettings& budgeted,
                          bool streams_last_level);
   // Sets result_change() to what the stages that made the result changed, or to a new topology when
   // the result is another stage's mesh than last time.
@@ -203,6 +209,9 @@ class Pipeline {
   // run(), with the budget checked for `budgeted` (the last level as quads when `streams_last_level`).
   const Mesh& run(const PipelineSettings& settings, const PipelineSettings& budgeted,
                   bool streams_last_level);
+  // run_stages, the caches started over for the stages that threw.
+  const Mesh& run_to(int last, const PipelineSettings& settings, const PipelineSettings& budgeted,
+                     bool streams_last_level);
   // run_surface's offset of `input` (run_to_last_offset's).
   PipelineSurface run_offset_surface(const Mesh& input, const PipelineSettings& settings, bool needs_creases);
 

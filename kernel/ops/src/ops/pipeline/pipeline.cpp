@@ -132,8 +132,13 @@ const Mesh& Pipeline::run(const PipelineSettings& s) {
 
 const Mesh& Pipeline::run(const PipelineSettings& s, const PipelineSettings& budgeted,
                           bool streams_last_level) {
+  return run_to(stop(s), s, budgeted, streams_last_level);
+}
+
+const Mesh& Pipeline::run_to(int last, const PipelineSettings& s, const PipelineSettings& budgeted,
+                             bool streams_last_level) {
   try {
-    return run_stages(s, budgeted, streams_last_level);
+    return run_stages(last, s, budgeted, streams_last_level);
   } catch (...) {
     // Stages that threw start over: whatever the next run shows is a new topology to its caller.
     last_result_ = -1;
@@ -192,25 +197,40 @@ Change Pipeline::run_stage(int i, int source, const PipelineSettings& s) {
   return change;
 }
 
-const Mesh& Pipeline::run_stages(const PipelineSettings& s, const PipelineSettings& budgeted,
-                                 bool streams_last_level) {
-  last_level_.reset();
-  warnings_.clear();
+int Pipeline::stop(const PipelineSettings& s) const {
   const int last = find(to_string(s.stage));
   if (last < 0)
     throw InvalidInputError(std::string("pipeline: no stage ") + to_string(s.stage) + " in the pipeline");
-  for (int i = 0; i <= last; ++i) slots_[i].stage->check(s);
+  return last;
+}
+
+int Pipeline::last_on_stage(const PipelineSettings& s) const {
+  const int end = stop(s);
+  int last = 0;
+  for (int i = 1; i <= end; ++i)
+    if (slots_[i].stage->is_on(s)) last = i;
+  return last;
+}
+
+const Mesh& Pipeline::run_stages(int last, const PipelineSettings& s, const PipelineSettings& budgeted,
+                                 bool streams_last_level) {
+  last_level_.reset();
+  warnings_.clear();
+  const int end = stop(s);
+  for (int i = 0; i <= end; ++i) slots_[i].stage->check(s);
   for (Slot& slot : slots_) slot.work = StageWork::skipped;
   int current = 0;  // the stage whose result the next stage reads
   Change change = Change::none;
   bool is_budget_checked = false;
-  for (int i = 0; i <= last; ++i) {
+  // Up to settings.stage for the budget, which counts the computed stages from the mesh they start from
+  // (also those a caller streams after `last`); up to `last` for the passes.
+  for (int i = 0; i <= end; ++i) {
     PipelineStage& stage = *slots_[i].stage;
-    // The budget counts the computed stages from the mesh they start from.
     if (!stage.is_editable() && !is_budget_checked) {
       check_budget(slots_[current].stage->result(), budgeted, streams_last_level);
       is_budget_checked = true;
     }
+    if (i > last) break;
     if (!stage.is_on(s)) {
       if (stage.free_while_off()) {
         slots_[i].has_result = false;
@@ -235,23 +255,22 @@ bool has_sharp_edge(const Mesh& mesh) {
 
 }  // namespace
 
+// The stages are found in the list by what they are, not by the settings' stage names: a stage added
+// after a subdivision or before the offset is then run, not skipped.
 LastSubdivision Pipeline::run_to_last_subdivision(const PipelineSettings& s, bool needs_creases) {
-  const bool is_after_offset = s.levels_after() > 0;
-  const int levels = is_after_offset ? s.levels_after() : s.distance() > 0 ? 0 : s.levels_before();
-  if (levels == 0) return {&run(s), 0};
-  PipelineSettings before = s;
-  (is_after_offset ? before.subdivision_after : before.subdivision_levels) = 0;
-  const Mesh& input = run(before, s, true);
+  const int last = last_on_stage(s);
+  const auto* subdivision = dynamic_cast<const SubdivisionStage*>(slots_[last].stage.get());
+  if (!subdivision) return {&run(s), 0};
+  const Mesh& input = run_to(last - 1, s, s, true);
   if (!subdivision_outputs_every_face(input, s.boundary) || (needs_creases && has_sharp_edge(input)))
     return {&run(s), 0};
-  return {&input, levels};
+  return {&input, subdivision->levels(s)};
 }
 
 const Mesh* Pipeline::run_to_last_offset(const PipelineSettings& s) {
-  if (!(s.distance() > 0 && s.levels_after() == 0)) return nullptr;
-  PipelineSettings before = s;
-  before.stage = Stage::subdivided;
-  return &run(before, s, false);
+  const int last = last_on_stage(s);
+  if (!dynamic_cast<const OffsetStage*>(slots_[last].stage.get())) return nullptr;
+  return &run_to(last - 1, s, s, false);
 }
 
 Normals Pipeline::offset_normals(const Mesh& input, int threads) {

@@ -9,7 +9,6 @@ class SubdivideStage final : public SubdivisionStage {
  public:
   std::string_view name() const override { return "subdivided"; }
 
- protected:
   int levels(const PipelineSettings& s) const override { return s.levels_before(); }
 };
 

@@ -15,7 +15,6 @@ class SubdividedOffsetStage final : public SubdivisionStage {
       throw InvalidInputError("pipeline: subdivision after the offset needs an offset distance");
   }
 
- protected:
   int levels(const PipelineSettings& s) const override { return s.levels_after(); }
 };
 

@@ -29,8 +29,6 @@ class SubdivisionStage : public PipelineStage {
   bool free_while_off() override;
   void free_positions_data() override { refinement_.reset(); }
   std::optional<TopologyReport> derived_report(const Mesh& input) const override;
-
- protected:
   // The levels the stage makes under these settings (0: off).
   virtual int levels(const PipelineSettings& s) const = 0;
 

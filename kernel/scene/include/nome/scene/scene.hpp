@@ -25,6 +25,7 @@ struct Parameter {
   std::string name;       // within its bank
   std::string full_name;  // BANK_NAME
   double value = 0, min = 0, max = 0, step = 0;
+  double file_value = 0;  // what the file's `set` gives it: `value` differs where the slider was moved
 };
 
 // A slider panel.
@@ -225,8 +226,9 @@ class Scene {
     std::vector<VertexRef> copied_from;
     Piece world;
     std::vector<Index> reads;
-    std::optional<Color> color;  // the instance colour its faces took
-    bool is_mirrored = false;    // its world matrix reverses its faces
+    std::optional<Color> color;     // the instance colour its faces took
+    bool is_mirrored = false;       // its world matrix reverses its faces
+    bool colors_own_faces = false;  // its definition gives faces colours (a face's own surface)
   };
   Scene() = default;
   // instance_colors.cpp: the placement of an instance path (throws InvalidInputError for none).
@@ -282,7 +284,8 @@ class Scene {
   // hands back the previous positions. False: the placement must be evaluated whole.
   bool move_vertices(Index placement, Buffer<Vec3>& previous);
   // The same for a placement whose vertices are all copies of other placements' (saved faces over placed
-  // vertices): copies their positions again. Its sources have moved already; none of them is remade.
+  // vertices) and whose faces take no colour of their own: copies their positions again. Its sources
+  // have moved already; none of them is remade.
   bool move_copied_vertices(Index placement, Buffer<Vec3>& previous);
 
   // vertex_names.cpp: names by unique suffix, indexed on the first lookup after they changed (a scene
