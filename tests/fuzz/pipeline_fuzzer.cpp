@@ -14,7 +14,7 @@ namespace {
 // and levels after it, threads.
 nome::PipelineSettings settings_from(const uint8_t* b) {
   nome::PipelineSettings s;
-  s.stage = nome::all_stages[b[0] % 5];
+  s.stage = nome::builtin_stage_order()[b[0] % nome::builtin_stage_order().size()];
   s.should_merge = (b[0] >> 3) & 1;
   s.subdivision_levels = (b[0] >> 4) % 3;
   s.rule = (b[0] >> 6) & 1 ? nome::SubdivisionRule::report : nome::SubdivisionRule::classic;

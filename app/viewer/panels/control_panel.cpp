@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <span>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -28,11 +30,12 @@ void draw_crease_controls(CreaseOptions& creases) {
 }
 
 void draw_stage_section(const ActionRegistry& actions, PipelineSettings& settings) {
-  int stage = int(settings.stage);
-  const char* stages[] = {to_string(Stage::scene), to_string(Stage::merged), to_string(Stage::subdivided),
-                          to_string(Stage::offset), to_string(Stage::subdivided_offset)};
+  const std::span<const Stage> order = builtin_stage_order();
+  std::vector<const char*> names;
+  for (Stage stage : order) names.push_back(to_string(stage));
+  int shown = int(std::find(order.begin(), order.end(), settings.stage) - order.begin());
   set_width_part(0.7f);
-  if (ImGui::Combo("show", &stage, stages, IM_ARRAYSIZE(stages))) settings.stage = Stage(stage);
+  if (ImGui::Combo("show", &shown, names.data(), int(names.size()))) settings.stage = order[size_t(shown)];
   if (ImGui::Button("Merge")) actions.run(Action::merge);
   ImGui::SameLine();
   float tolerance = float(settings.merge_tolerance);

@@ -260,7 +260,7 @@ TEST_CASE(
     "[app]") {
   StagePipeline pipeline;
   const PipelineInput soup = two_pieces();
-  for (const Stage stage : all_stages)
+  for (const Stage stage : builtin_stage_order())
     for (const int before : {0, 2})
       for (const double distance : {0.0, 0.05})
         for (const int after : {0, 1}) {

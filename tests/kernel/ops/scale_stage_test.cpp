@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include <iterator>
+#include <span>
 #include <string_view>
 
 #include "nome/ops/pipeline.hpp"
@@ -65,10 +65,19 @@ Buffer<Vec3> scaled(Buffer<Vec3> positions, double factor) {
 
 }  // namespace
 
-TEST_CASE("the built-in stages are listed in the order of the stage names", "[kernel]") {
+TEST_CASE("the stage order and the editable stages are read from the built-in list", "[kernel]") {
   const std::vector<std::unique_ptr<PipelineStage>> stages = builtin_stages();
-  REQUIRE(stages.size() == std::size(all_stages));
-  for (size_t i = 0; i < stages.size(); ++i) CHECK(stages[i]->name() == to_string(all_stages[i]));
+  const std::span<const Stage> order = builtin_stage_order();
+  REQUIRE(stages.size() == order.size());
+  for (size_t i = 0; i < stages.size(); ++i) {
+    CHECK(stages[i]->name() == to_string(order[i]));
+    CHECK(stages[i]->is_editable() == is_editable(order[i]));
+    CHECK(parse_stage(stages[i]->name()) == order[i]);
+  }
+  CHECK(is_editable(Stage::merged));
+  CHECK_FALSE(is_editable(Stage::subdivided));
+  CHECK(parse_stage("subdivided-offset") == Stage::subdivided_offset);
+  CHECK_FALSE(parse_stage("smoothed"));
   CHECK(passes_through(Stage::offset, Stage::subdivided));
   CHECK_FALSE(passes_through(Stage::subdivided, Stage::offset));
   CHECK(is_solid(Stage::subdivided_offset));

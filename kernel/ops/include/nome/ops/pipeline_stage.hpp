@@ -80,7 +80,7 @@ class PipelineStage {
   }
 };
 
-// The built-in stages in order: scene, merged, subdivided, offset, subdivided offset (all_stages). The one
+// The built-in stages in order: scene, merged, subdivided, offset, subdivided offset. The one
 // place the list is made; a new built-in stage is one line here.
 std::vector<std::unique_ptr<PipelineStage>> builtin_stages();
 

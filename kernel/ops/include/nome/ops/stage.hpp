@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace nome {
@@ -10,17 +11,17 @@ namespace nome {
 // The command line and the panels select the stage shown by these names; the values have no order.
 enum class Stage { scene, merged, subdivided, offset, subdivided_offset };
 
-// The built-in stages in the order of the pipeline's list (builtin_stages).
-inline constexpr Stage all_stages[] = {Stage::scene, Stage::merged, Stage::subdivided, Stage::offset,
-                                       Stage::subdivided_offset};
+// The built-in stages in the order of the pipeline's list, read from that list (builtin_stages): the one
+// place the order is written.
+std::span<const Stage> builtin_stage_order();
 
 // "scene", "merged", "subdivided", "offset", "subdivided offset": for panels, logs and messages.
 const char* to_string(Stage stage);
 // The names of to_string, with '-' or '_' for the space; none for anything else.
 std::optional<Stage> parse_stage(std::string_view name);
 
-// Edits name the scene's vertices and faces, which only the scene and merged stages show: the later
-// stages are computed from them.
+// Whether edits name the stage's vertices and faces (the scene's, the merge's; later stages are computed
+// from them): the stage's own PipelineStage::is_editable.
 bool is_editable(Stage stage);
 
 // Whether a pipeline that stops at `last` makes `stage` on its way: `stage` is `last` or comes before it in
