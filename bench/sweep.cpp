@@ -116,7 +116,7 @@ void scene_figures() {
                 pipeline.set_input(PipelineInput{scene->combined_soup(), {}, {}});
                 pipeline.run(settings);
               }));
-  const Index lift = *scene->find_parameter("b_lift");
+  const scene::ParameterId lift = *scene->find_parameter("b_lift");
   double value = 0;
   std::printf("  slider move: re-evaluate the sweep             %8.2f\n",
               best_ms(5, [&] { scene->set_parameter(lift, value = value > 0.5 ? 0 : value + 0.1); }));

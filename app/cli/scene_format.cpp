@@ -29,7 +29,7 @@ std::string scene_text(const scene::Scene& scene) {
   out << "  dialect " << dialect_text(scene.dialect()) << "\n";
   for (const scene::Bank& bank : scene.banks()) {
     out << "  bank " << bank.name << "\n";
-    for (Index id : bank.parameters) {
+    for (scene::ParameterId id : bank.parameters) {
       const scene::Parameter& p = scene.parameters()[id];
       out << "    $" << p.full_name << " = " << format_number(p.value) << "  [" << format_number(p.min)
           << ", " << format_number(p.max) << "] step " << format_number(p.step) << "\n";

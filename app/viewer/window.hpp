@@ -145,7 +145,7 @@ class Window : private ScriptHost {
   void draw_browser();
   double take_scroll(ScrolledPanel panel);
   // The sliders the selected vertices and faces depend on.
-  std::vector<Index> selection_parameters(const scene::Scene& scene) const;
+  std::vector<scene::ParameterId> selection_parameters(const scene::Scene& scene) const;
   void print_layout() override { is_layout_print_pending_ = true; }
   void print_state() override;
   void scroll(ScrolledPanel panel, double pixels) override;

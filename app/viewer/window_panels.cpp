@@ -62,7 +62,7 @@ render::PixelRect Window::viewport_pixels() const {
   return {{int(low.x), height - int(high.y)}, glm::max(glm::ivec2(high - low), glm::ivec2(1))};
 }
 
-std::vector<Index> Window::selection_parameters(const scene::Scene& scene) const {
+std::vector<scene::ParameterId> Window::selection_parameters(const scene::Scene& scene) const {
   const Mesh* mesh = stage_.shown_mesh();
   if (!mesh || selection_.is_empty()) return {};
   std::vector<Index> vertices = selection_.vertices();
@@ -70,10 +70,10 @@ std::vector<Index> Window::selection_parameters(const scene::Scene& scene) const
     for (Index v : mesh->face_vertices(f)) vertices.push_back(v);
   // Computed stages have no names: their vertices depend on no slider that a name could tell.
   const auto& names = mesh->vertex_names();
-  std::vector<Index> parameters;
+  std::vector<scene::ParameterId> parameters;
   for (Index v : vertices)
     if (v < names.size() || rims_.is_rim(v))
-      for (Index p : scene.parameters_of_vertex(rims_.name(*mesh, v))) parameters.push_back(p);
+      for (scene::ParameterId p : scene.parameters_of_vertex(rims_.name(*mesh, v))) parameters.push_back(p);
   return parameters;
 }
 

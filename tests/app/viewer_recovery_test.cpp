@@ -58,7 +58,7 @@ TEST_CASE("after a crash the viewer offers the unsaved changes, and restoring an
   INFO(r.err);
   CHECK(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("restored the unsaved changes of funnel.nome"));
-  CHECK(Session::open(crashed.document).scene()->parameters()[0].value == 1.7);
+  CHECK(Session::open(crashed.document).scene()->parameters().front().value == 1.7);
   CHECK_FALSE(fs::exists(crashed.recovery));
   fs::remove_all(crashed.dir);
 }
@@ -68,7 +68,7 @@ TEST_CASE("after a crash the offered changes can be discarded, and the file stay
   const auto r = crashed.run_viewer("recover discard\nquit\n");
   INFO(r.err);
   CHECK(r.status == 0);
-  CHECK(Session::open(crashed.document).scene()->parameters()[0].value == 1.0);
+  CHECK(Session::open(crashed.document).scene()->parameters().front().value == 1.0);
   CHECK_FALSE(fs::exists(crashed.recovery));
 
   // Nothing is offered any more, and a clean quit after a slider move leaves no recovery file.

@@ -48,7 +48,7 @@ NOME_FUZZ_TARGET(pipeline) {
     // Each step: a slider and its value, and the subdivision levels before and after the offset.
     settings.subdivision_levels = data[i + 2] % 3;
     settings.subdivision_after = settings.offset_distance > 0 ? (data[i + 2] >> 2) % 2 : 0;
-    const nome::Index id = data[i] % nome::Index(scene.parameters().size());
+    const nome::scene::ParameterId id(data[i] % nome::Index(scene.parameters().size()));
     const nome::scene::Parameter& p = scene.parameters()[id];
     // Odd bytes: anywhere in the range; even ones: on the slider's steps (whole counts among them).
     const double anywhere = p.min + (p.max - p.min) * data[i + 1] / 255.0;

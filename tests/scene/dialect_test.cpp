@@ -94,7 +94,7 @@ TEST_CASE("saving keeps the file's dialect and reads back the same", "[scene]") 
       "point a (0 0 0) endpoint point c (1 0 0) endpoint\npolyline l (a c) closed endpolyline\n",
       "l.nom");
   REQUIRE(listed.banks().size() == 1);
-  CHECK(listed.banks()[0].shown == std::vector<Index>{1});
+  CHECK(listed.banks()[0].shown == std::vector<ParameterId>{ParameterId(1)});
   const std::string listed_saved = to_nome_text(listed);
   CHECK_THAT(listed_saved, Catch::Contains("    list (m)\n"));
   CHECK_THAT(listed_saved, Catch::Contains(" closed endpolyline"));
@@ -164,11 +164,11 @@ TEST_CASE("a slider's initial value outside its range is kept, with a warning", 
       "instance i f endinstance\n",
       "t.nome");
   CHECK(has_warning(s, "value 12 of 'b_n' is outside its slider range [3, 10]: kept until the slider"));
-  CHECK(s.parameters()[0].value == 12);
+  CHECK(s.parameters().front().value == 12);
   CHECK(s.combined_soup().num_faces() == 12);
-  s.set_parameter(0, 10);
+  s.set_parameter(scene::ParameterId(0), 10);
   CHECK(s.combined_soup().num_faces() == 10);
-  CHECK_THROWS_AS(s.set_parameter(0, 12), InvalidInputError);
+  CHECK_THROWS_AS(s.set_parameter(scene::ParameterId(0), 12), InvalidInputError);
 }
 
 TEST_CASE("sharp takes a weight and several chains, the weight as OpenSubdiv's sharpness", "[scene]") {

@@ -96,7 +96,7 @@ TEST_CASE("a slider re-evaluates only the placements that read it", "[scene]") {
   const auto before = s.instances()[0].geometry.soup.positions;
   const auto changed = s.set_parameter(*s.find_parameter("tp3_x"), -1);
   CHECK(s.placement_evaluations() - at_load == 1);
-  CHECK(changed == std::vector<Index>{0});
+  CHECK(changed == std::vector<scene::InstanceId>{scene::InstanceId(0)});
   CHECK(vertex_position(s, "kb_t3_hc0").x == Approx(-1 + 0.2));
   CHECK(s.instances()[0].geometry.soup.positions[0] == before[0]);  // t1 untouched
   const auto topology = s.instances()[0].topology_version;
@@ -121,10 +121,12 @@ TEST_CASE("a failing slider value is refused and the scene keeps the previous on
       "point p ({expr 1 / $b_k} 0 0) endpoint point q (0 1 0) endpoint point r (0 0 1) endpoint\n"
       "face f (p q r) endface instance i f endinstance\n",
       "t.nome");
-  CHECK_THROWS_WITH(s.set_parameter(0, 0), Catch::Contains("t.nome:2:18: division by zero"));
-  CHECK(s.parameters()[0].value == 1);
+  CHECK_THROWS_WITH(s.set_parameter(scene::ParameterId(0), 0),
+                    Catch::Contains("t.nome:2:18: division by zero"));
+  CHECK(s.parameters().front().value == 1);
   CHECK(vertex_position(s, "i_p").x == 1);
-  CHECK_THROWS_WITH(s.set_parameter(0, 3), Catch::Contains("outside its slider range [0, 2]"));
+  CHECK_THROWS_WITH(s.set_parameter(scene::ParameterId(0), 3),
+                    Catch::Contains("outside its slider range [0, 2]"));
 }
 
 TEST_CASE("mirror reflects in a plane and reverses the winding", "[scene]") {

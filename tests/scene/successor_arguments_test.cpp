@@ -226,7 +226,7 @@ TEST_CASE("succ: the hyperboloids of JIPCAD's reference, in NOME3's older order,
   // A slider that keeps the older order keeps the shape in it; arguments neither order reads: only what
   // is wrong, at its place.
   Scene moved = Scene::from_text(documented_hyperboloid(0), "doc.nom", {.dialect = Dialect::jipcad});
-  const std::optional<Index> slider = moved.find_parameter("hyp.C");
+  const std::optional<ParameterId> slider = moved.find_parameter("hyp.C");
   REQUIRE(slider);
   moved.set_parameter(*slider, 2.0);
   CHECK(succ_gap(moved, "i_v0_" + std::to_string(u_segs), {a * std::cosh(u_max), 0, 2.0 * std::sinh(u_max)}) <

@@ -229,7 +229,7 @@ TEST_CASE("a sweep follows its points' sliders, control points scale and turn it
   const Vec3 middle = test::vertex_position(s, "i_v1_0");
   CHECK(glm::length(Vec3(middle.x, middle.y, 0)) == Approx(2 * std::sqrt(0.5)));
   CHECK(std::min(std::abs(middle.x), std::abs(middle.y)) == Approx(0).margin(1e-12));
-  const Index h = *s.find_parameter("b_h");
+  const ParameterId h = *s.find_parameter("b_h");
   CHECK(s.set_parameter(h, 5).size() == 1);
   CHECK(test::vertex_position(s, "i_v2_0").z == Approx(5));
   CHECK(test::vertex_position(s, "i_v1_0").z == Approx(2.5));

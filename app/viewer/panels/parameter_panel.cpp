@@ -13,11 +13,11 @@ void ParameterPanelState::track(const scene::Scene& scene) {
   ranges.clear();
 }
 
-bool ParameterPanelState::is_moved(const scene::Parameter& p, Index id) const {
-  return id < file_values.size() && p.value != file_values[id];
+bool ParameterPanelState::is_moved(const scene::Parameter& p, scene::ParameterId id) const {
+  return file_values.contains(id) && p.value != file_values[id];
 }
 
-std::pair<double, double> ParameterPanelState::range(const scene::Parameter& p, Index id) const {
+std::pair<double, double> ParameterPanelState::range(const scene::Parameter& p, scene::ParameterId id) const {
   const auto it = ranges.find(id);
   return it == ranges.end() ? std::pair{p.min, p.max} : it->second;
 }
@@ -31,24 +31,24 @@ std::string lower(std::string s) {
 
 }  // namespace
 
-std::vector<Index> filtered_parameters(const scene::Scene& scene, const scene::Bank& bank,
-                                       const std::string& filter) {
-  const std::vector<Index>& shown = bank.shown.empty() ? bank.parameters : bank.shown;
+std::vector<scene::ParameterId> filtered_parameters(const scene::Scene& scene, const scene::Bank& bank,
+                                                    const std::string& filter) {
+  const std::vector<scene::ParameterId>& shown = bank.shown.empty() ? bank.parameters : bank.shown;
   const std::string wanted = lower(filter);
   if (wanted.empty() || lower(bank.name).find(wanted) != std::string::npos) return shown;
-  std::vector<Index> kept;
-  for (Index id : shown)
+  std::vector<scene::ParameterId> kept;
+  for (scene::ParameterId id : shown)
     if (lower(scene.parameters()[id].name).find(wanted) != std::string::npos) kept.push_back(id);
   return kept;
 }
 
-bool holds_any(const scene::Bank& bank, const std::vector<Index>& parameters) {
-  return std::any_of(bank.parameters.begin(), bank.parameters.end(), [&](Index id) {
+bool holds_any(const scene::Bank& bank, const std::vector<scene::ParameterId>& parameters) {
+  return std::any_of(bank.parameters.begin(), bank.parameters.end(), [&](scene::ParameterId id) {
     return std::find(parameters.begin(), parameters.end(), id) != parameters.end();
   });
 }
 
-std::vector<Index> bank_order(const scene::Scene& scene, const std::vector<Index>& first) {
+std::vector<Index> bank_order(const scene::Scene& scene, const std::vector<scene::ParameterId>& first) {
   std::vector<Index> leading, rest;
   for (Index b = 0; b < scene.banks().size(); ++b)
     (holds_any(scene.banks()[b], first) ? leading : rest).push_back(b);
@@ -56,10 +56,11 @@ std::vector<Index> bank_order(const scene::Scene& scene, const std::vector<Index
   return leading;
 }
 
-std::vector<std::pair<Index, double>> bank_reset(const scene::Scene& scene, const scene::Bank& bank,
-                                                 const ParameterPanelState& state) {
-  std::vector<std::pair<Index, double>> moves;
-  for (Index id : bank.parameters)
+std::vector<std::pair<scene::ParameterId, double>> bank_reset(const scene::Scene& scene,
+                                                              const scene::Bank& bank,
+                                                              const ParameterPanelState& state) {
+  std::vector<std::pair<scene::ParameterId, double>> moves;
+  for (scene::ParameterId id : bank.parameters)
     if (state.is_moved(scene.parameters()[id], id)) moves.push_back({id, state.file_values[id]});
   return moves;
 }

@@ -14,8 +14,8 @@ namespace nome::viewer {
 // What the parameter panel keeps over a session: the file's slider values (for "reset"), ranges the
 // sculptor narrowed for this session, and the filter text.
 struct ParameterPanelState {
-  std::vector<double> file_values;  // by parameter id
-  std::map<Index, std::pair<double, double>> ranges;
+  IdVector<scene::ParameterId, double> file_values;
+  std::map<scene::ParameterId, std::pair<double, double>> ranges;
   std::array<char, 64> filter{};
   // What the slider menu's fields hold while it is open.
   double typed_value = 0.0;
@@ -23,26 +23,27 @@ struct ParameterPanelState {
 
   // Takes the scene's present values as the file's (on open); again when the file's sliders changed.
   void track(const scene::Scene& scene);
-  bool is_moved(const scene::Parameter& p, Index id) const;
+  bool is_moved(const scene::Parameter& p, scene::ParameterId id) const;
   // The slider's range now: the file's, or the one narrowed for the session.
-  std::pair<double, double> range(const scene::Parameter& p, Index id) const;
+  std::pair<double, double> range(const scene::Parameter& p, scene::ParameterId id) const;
 };
 
 // A bank's sliders the filter lets through, in the bank's order (all for an empty filter). The filter
 // matches part of a slider's name or its bank's name, ignoring case.
-std::vector<Index> filtered_parameters(const scene::Scene& scene, const scene::Bank& bank,
-                                       const std::string& filter);
+std::vector<scene::ParameterId> filtered_parameters(const scene::Scene& scene, const scene::Bank& bank,
+                                                    const std::string& filter);
 
 // The bank has one of the sliders.
-bool holds_any(const scene::Bank& bank, const std::vector<Index>& parameters);
+bool holds_any(const scene::Bank& bank, const std::vector<scene::ParameterId>& parameters);
 
 // The banks in the panel's order: those holding one of the `first` sliders (the ones the selection
 // depends on), then the others, each group in the file's order.
-std::vector<Index> bank_order(const scene::Scene& scene, const std::vector<Index>& first);
+std::vector<Index> bank_order(const scene::Scene& scene, const std::vector<scene::ParameterId>& first);
 
 // The moves that return the bank's moved sliders to the file's values ("reset bank").
-std::vector<std::pair<Index, double>> bank_reset(const scene::Scene& scene, const scene::Bank& bank,
-                                                 const ParameterPanelState& state);
+std::vector<std::pair<scene::ParameterId, double>> bank_reset(const scene::Scene& scene,
+                                                              const scene::Bank& bank,
+                                                              const ParameterPanelState& state);
 
 // A slider value on its step from the minimum, within the range.
 double snap_to_step(const scene::Parameter& p, double value, std::pair<double, double> range);
@@ -50,7 +51,7 @@ double snap_to_step(const scene::Parameter& p, double value, std::pair<double, d
 // The slider moves of one frame (a reset bank moves several), and whether they continue a drag that
 // began in an earlier frame (the undo history merges such moves into one step).
 struct ParameterMoves {
-  std::vector<std::pair<Index, double>> moves;
+  std::vector<std::pair<scene::ParameterId, double>> moves;
   bool continues = false;
 };
 
@@ -59,7 +60,8 @@ struct ParameterMoves {
 // step the slider under the mouse; moved sliders are marked. Returns the slider moves of this frame;
 // adds the bank headers that are wholly visible to `report`.
 // `selected`: the sliders the selection depends on, whose banks come first (marked).
-ParameterMoves draw_parameter_section(const scene::Scene& scene, const std::vector<Index>& selected,
+ParameterMoves draw_parameter_section(const scene::Scene& scene,
+                                      const std::vector<scene::ParameterId>& selected,
                                       ParameterPanelState& state, LayoutReport& report);
 
 }  // namespace nome::viewer

@@ -12,7 +12,7 @@ namespace {
 // Tints the frame of a slider moved from its file value.
 const ImVec4 moved_color(0.95f, 0.75f, 0.30f, 0.55f);
 
-void draw_slider_menu(const scene::Parameter& p, Index id, ParameterPanelState& state,
+void draw_slider_menu(const scene::Parameter& p, scene::ParameterId id, ParameterPanelState& state,
                       std::optional<double>& moved) {
   if (!ImGui::BeginPopupContextItem("slider menu")) return;
   const auto range = state.range(p, id);
@@ -21,7 +21,7 @@ void draw_slider_menu(const scene::Parameter& p, Index id, ParameterPanelState& 
     state.typed_range = {float(range.first), float(range.second)};
   }
   ImGui::TextDisabled("$%s", p.full_name.c_str());
-  const double file_value = id < state.file_values.size() ? state.file_values[id] : p.value;
+  const double file_value = state.file_values.contains(id) ? state.file_values[id] : p.value;
   const std::string reset = "Reset to the file's value (" + std::to_string(file_value) + ")";
   if (ImGui::MenuItem(reset.c_str())) moved = file_value;
   ImGui::SetNextItemWidth(160);
@@ -44,9 +44,9 @@ void draw_slider_menu(const scene::Parameter& p, Index id, ParameterPanelState& 
 }
 
 // One slider row; returns the value the user moved it to. `continues`: by a drag begun earlier.
-std::optional<double> draw_slider(const scene::Parameter& p, Index id, ParameterPanelState& state,
-                                  bool& continues) {
-  ImGui::PushID(int(id));
+std::optional<double> draw_slider(const scene::Parameter& p, scene::ParameterId id,
+                                  ParameterPanelState& state, bool& continues) {
+  ImGui::PushID(int(id.index()));
   std::optional<double> moved;
   const bool is_moved = state.is_moved(p, id);
   const auto range = state.range(p, id);
@@ -84,10 +84,11 @@ void report_header(const std::string& name, LayoutReport& report) {
   report.banks.push_back({name, {{min.x, min.y}, {max.x - min.x, max.y - min.y}}});
 }
 
-void draw_bank(const scene::Scene& scene, const scene::Bank& bank, const std::vector<Index>& shown,
-               bool is_selected, ParameterPanelState& state, LayoutReport& report, ParameterMoves& moves) {
+void draw_bank(const scene::Scene& scene, const scene::Bank& bank,
+               const std::vector<scene::ParameterId>& shown, bool is_selected, ParameterPanelState& state,
+               LayoutReport& report, ParameterMoves& moves) {
   std::size_t moved_count = 0;
-  for (Index id : bank.parameters) moved_count += state.is_moved(scene.parameters()[id], id);
+  for (scene::ParameterId id : bank.parameters) moved_count += state.is_moved(scene.parameters()[id], id);
   std::string label = bank.name;
   if (is_selected) label += "  (selection)";
   if (moved_count > 0) label += "  (" + std::to_string(moved_count) + " moved)";
@@ -96,7 +97,7 @@ void draw_bank(const scene::Scene& scene, const scene::Bank& bank, const std::ve
   report_header(bank.name, report);
   if (!is_open) return;
   ImGui::PushID(bank.name.c_str());
-  for (Index id : shown) {
+  for (scene::ParameterId id : shown) {
     bool continues = false;
     if (const auto value = draw_slider(scene.parameters()[id], id, state, continues)) {
       moves.moves.push_back({id, *value});
@@ -112,7 +113,8 @@ void draw_bank(const scene::Scene& scene, const scene::Bank& bank, const std::ve
 
 }  // namespace
 
-ParameterMoves draw_parameter_section(const scene::Scene& scene, const std::vector<Index>& selected,
+ParameterMoves draw_parameter_section(const scene::Scene& scene,
+                                      const std::vector<scene::ParameterId>& selected,
                                       ParameterPanelState& state, LayoutReport& report) {
   ParameterMoves moves;
   state.track(scene);
@@ -128,7 +130,7 @@ ParameterMoves draw_parameter_section(const scene::Scene& scene, const std::vect
   const std::vector<Index> order = bank_order(scene, selected);
   for (std::size_t i = 0; i < order.size(); ++i) {
     const scene::Bank& bank = scene.banks()[order[i]];
-    const std::vector<Index> shown = filtered_parameters(scene, bank, filter);
+    const std::vector<scene::ParameterId> shown = filtered_parameters(scene, bank, filter);
     if (shown.empty()) continue;
     is_any_shown = true;
     draw_bank(scene, bank, shown, holds_any(bank, selected), state, report, moves);

@@ -135,7 +135,7 @@ bool Session::redo() {
   return is_done;
 }
 
-void Session::set_parameter(Index parameter, double value) {
+void Session::set_parameter(scene::ParameterId parameter, double value) {
   if (!scene()) throw InvalidInputError("set: " + path_.filename().string() + " has no sliders");
   document_.set_parameter(parameter, value);
   is_modified_ = true;

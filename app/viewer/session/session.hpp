@@ -64,7 +64,7 @@ class Session {
   // Moves a slider and re-evaluates what reads it. Throws InvalidInputError outside the slider's range
   // or for an unknown name (naming close ones), SceneError when the scene cannot be evaluated with the
   // value (nothing changes then).
-  void set_parameter(Index parameter, double value);
+  void set_parameter(scene::ParameterId parameter, double value);
   void set_parameter(const std::string& name, double value);
   // The print preparation saved with the scene, an unsaved change. Throws InvalidInputError for flat
   // geometry.

@@ -150,7 +150,7 @@ void SessionController::set_parameter(const std::string& name, double value) {
     throw InvalidInputError("set " + name + ": the sliders are locked while editing (uncheck \"lock " +
                             "generator parameters while editing\" to move them)");
   const scene::Scene* scene = session_->scene();
-  const std::optional<Index> id = scene ? scene->find_parameter(name) : std::nullopt;
+  const std::optional<scene::ParameterId> id = scene ? scene->find_parameter(name) : std::nullopt;
   const double before = id ? scene->parameters()[*id].value : 0.0;
   const std::vector<UnresolvedEdit> unresolved = session_->document().unresolved();
   session_->set_parameter(name, value);
@@ -158,7 +158,7 @@ void SessionController::set_parameter(const std::string& name, double value) {
   if (id) history_.push(slider_step({{*id, before}}, {{*id, value}}));
 }
 
-bool SessionController::apply_moves(const std::vector<std::pair<Index, double>>& moves) {
+bool SessionController::apply_moves(const std::vector<std::pair<scene::ParameterId, double>>& moves) {
   const std::vector<UnresolvedEdit> unresolved = session_->document().unresolved();
   try {
     for (const auto& [parameter, value] : moves) session_->set_parameter(parameter, value);
@@ -171,15 +171,16 @@ bool SessionController::apply_moves(const std::vector<std::pair<Index, double>>&
   }
 }
 
-UndoHistory::Step SessionController::slider_step(std::vector<std::pair<Index, double>> before,
-                                                 std::vector<std::pair<Index, double>> after) {
-  const std::string key = after.size() == 1 ? "slider " + std::to_string(after[0].first) : "";
+UndoHistory::Step SessionController::slider_step(std::vector<std::pair<scene::ParameterId, double>> before,
+                                                 std::vector<std::pair<scene::ParameterId, double>> after) {
+  const std::string key = after.size() == 1 ? "slider " + std::to_string(after[0].first.index()) : "";
   // Undone in the reverse order, so that a batch returns exactly to where it started.
   std::reverse(before.begin(), before.end());
   return {[this, before] { return apply_moves(before); }, [this, after] { return apply_moves(after); }, key};
 }
 
-void SessionController::move_sliders(const std::vector<std::pair<Index, double>>& moves, bool continues) {
+void SessionController::move_sliders(const std::vector<std::pair<scene::ParameterId, double>>& moves,
+                                     bool continues) {
   if (!session_ || !session_->scene() || moves.empty()) return;
   if (are_parameters_locked()) {
     log_.warning(
@@ -187,7 +188,7 @@ void SessionController::move_sliders(const std::vector<std::pair<Index, double>>
         "to move them)");
     return;
   }
-  std::vector<std::pair<Index, double>> before, done;
+  std::vector<std::pair<scene::ParameterId, double>> before, done;
   for (const auto& [parameter, value] : moves) {
     const double old = session_->scene()->parameters()[parameter].value;
     if (!apply_moves({{parameter, value}})) break;

@@ -72,7 +72,7 @@ class SessionController {
   bool are_parameters_locked() const;
   // The panel's slider moves of one frame, one undo step (errors logged); `continues`: the same drag as
   // the last step's, which it merges into.
-  void move_sliders(const std::vector<std::pair<Index, double>>& moves, bool continues);
+  void move_sliders(const std::vector<std::pair<scene::ParameterId, double>>& moves, bool continues);
   // A change the window makes (stage settings, colours) as a step of the same history.
   void push_step(UndoHistory::Step step, bool continues) { history_.push(std::move(step), continues); }
   bool can_undo() const { return history_.can_undo(); }
@@ -129,7 +129,7 @@ class SessionController {
 
   // session_text.cpp: reloads the session from the file's text or `text`, keeping text_errors().
   bool reload(const std::string* text);
-  bool apply_moves(const std::vector<std::pair<Index, double>>& moves);
+  bool apply_moves(const std::vector<std::pair<scene::ParameterId, double>>& moves);
   // session_colors.cpp: names the instances' surfaces (an undo or redo of colours).
   using InstanceSurfaces = std::vector<std::pair<std::string, std::optional<std::string>>>;
   bool set_instance_surfaces(const InstanceSurfaces& surfaces);
@@ -137,8 +137,8 @@ class SessionController {
   void report_unresolved(const std::vector<UnresolvedEdit>& before);
   // The scene's warnings (a face left out, a name defined again), each with its place in the text.
   void report_scene_warnings();
-  UndoHistory::Step slider_step(std::vector<std::pair<Index, double>> before,
-                                std::vector<std::pair<Index, double>> after);
+  UndoHistory::Step slider_step(std::vector<std::pair<scene::ParameterId, double>> before,
+                                std::vector<std::pair<scene::ParameterId, double>> after);
 };
 
 }  // namespace nome::viewer

@@ -50,14 +50,14 @@ TEST_CASE("autosave keeps unsaved changes in a recovery file: at once per edit, 
   session.set_parameter("b_h", 1.5);
   autosave.update(session, 1.0);
   REQUIRE(fs::exists(recovery));
-  CHECK(Session::restore(document, recovery).scene()->parameters()[0].value == 1.5);
+  CHECK(Session::restore(document, recovery).scene()->parameters().front().value == 1.5);
 
   // Slider moves wait for the interval...
   session.set_parameter("b_h", 1.8);
   autosave.update(session, 10.0);
-  CHECK(Session::restore(document, recovery).scene()->parameters()[0].value == 1.5);
+  CHECK(Session::restore(document, recovery).scene()->parameters().front().value == 1.5);
   autosave.update(session, 1.0 + Autosave::interval_seconds);
-  CHECK(Session::restore(document, recovery).scene()->parameters()[0].value == 1.8);
+  CHECK(Session::restore(document, recovery).scene()->parameters().front().value == 1.8);
 
   // ...an accepted edit does not.
   delete_first_face(session);
@@ -104,11 +104,11 @@ TEST_CASE("a recovery file newer than its document is offered, and restoring it 
 
   Session restored = Session::restore(document, recovery);
   CHECK(restored.is_modified());
-  CHECK(restored.scene()->parameters()[0].value == 0.7);
+  CHECK(restored.scene()->parameters().front().value == 0.7);
   CHECK(restored.polygons().num_faces() == 3);
   restored.save(document);  // Save writes the document itself
   const Session reopened = Session::open(document);
-  CHECK(reopened.scene()->parameters()[0].value == 0.7);
+  CHECK(reopened.scene()->parameters().front().value == 0.7);
   CHECK(reopened.polygons().num_faces() == 3);
 
   // A document saved after the recovery file was written is not offered it.

@@ -13,7 +13,7 @@ TEST_CASE("the filter keeps the sliders whose name (or bank's name) holds the te
   const scene::Scene& scene = *session.scene();
   const scene::Bank& b3 = scene.banks()[3];
   CHECK(viewer::filtered_parameters(scene, b3, "").size() == 4);
-  const std::vector<Index> ro = viewer::filtered_parameters(scene, b3, "RO");
+  const std::vector<scene::ParameterId> ro = viewer::filtered_parameters(scene, b3, "RO");
   REQUIRE(ro.size() == 1);
   CHECK(scene.parameters()[ro[0]].full_name == "b3_ro");
   CHECK(viewer::filtered_parameters(scene, b3, "b3").size() == 4);  // the bank's name: all of it
@@ -50,9 +50,9 @@ TEST_CASE("a slider snaps to its step within the range the sculptor narrowed", "
   CHECK(viewer::snap_to_step(p, 0.3, {p.min, p.max}) == 0.25);
   CHECK(viewer::snap_to_step(p, 0.9, {-0.5, 0.5}) == 0.5);
   viewer::ParameterPanelState state;
-  state.ranges[0] = {0.0, 0.5};
-  CHECK(state.range(p, 0) == std::pair{0.0, 0.5});
-  CHECK(state.range(p, 1) == std::pair{-1.0, 1.0});
+  state.ranges[scene::ParameterId(0)] = {0.0, 0.5};
+  CHECK(state.range(p, scene::ParameterId(0)) == std::pair{0.0, 0.5});
+  CHECK(state.range(p, scene::ParameterId(1)) == std::pair{-1.0, 1.0});
 }
 
 TEST_CASE("the banks a selected vertex depends on come first", "[app]") {
@@ -64,9 +64,9 @@ TEST_CASE("the banks a selected vertex depends on come first", "[app]") {
   const auto vertex =
       std::find_if(names.begin(), names.end(), [](const std::string& n) { return n.starts_with("i7_"); });
   REQUIRE(vertex != names.end());
-  const std::vector<Index> parameters = scene.parameters_of_vertex(*vertex);
+  const std::vector<scene::ParameterId> parameters = scene.parameters_of_vertex(*vertex);
   REQUIRE_FALSE(parameters.empty());
-  for (Index p : parameters) CHECK(scene.parameters()[p].bank == "b7");
+  for (scene::ParameterId p : parameters) CHECK(scene.parameters()[p].bank == "b7");
   const std::vector<Index> order = viewer::bank_order(scene, parameters);
   REQUIRE(order.size() == 12);
   CHECK(order[0] == 7);

@@ -41,7 +41,7 @@ TEST_CASE("a slider drag is one undo step, undone to the file's positions, betwe
   viewer::SessionController sessions(log, nome::test::TestViewer::private_stores());
   REQUIRE(sessions.open(dir + "/twelve.nome"));
   const auto file_positions = sessions.session()->positions();
-  const Index ro = *sessions.scene()->find_parameter("b2_ro");
+  const scene::ParameterId ro = *sessions.scene()->find_parameter("b2_ro");
   // One drag over five frames: the first move starts the step, the others continue it.
   for (int frame = 0; frame < 5; ++frame) sessions.move_sliders({{ro, 0.5 + 0.1 * frame}}, frame > 0);
   CHECK(sessions.scene()->parameters()[ro].value == Approx(0.9));

@@ -55,7 +55,7 @@ TEST_CASE(
   CHECK_FALSE(std::filesystem::exists(dir + "/low.nome"));
   CHECK_THAT(log, Catch::Contains("1 edits back with their vertices: edit1"));
   CHECK_THAT(log, Catch::Contains("set fb_n: the sliders are locked while editing"));
-  CHECK(viewer.window().sessions().scene()->parameters()[0].value == 6);
+  CHECK(viewer.window().sessions().scene()->parameters().front().value == 6);
   CHECK(viewer.window().exit_status() == 1);  // the refused save and the locked slider failed
 
   // What was saved once the slider came back holds the edit, and reads back with it.

@@ -36,9 +36,9 @@ void SceneDocument::set_print_setup(std::optional<PrintPlacementOptions> setup) 
   scene_->set_print_setup(setup);
 }
 
-std::vector<Index> SceneDocument::set_parameter(Index parameter, double value) {
+std::vector<scene::InstanceId> SceneDocument::set_parameter(scene::ParameterId parameter, double value) {
   if (!scene_) throw InvalidInputError("set: flat geometry has no sliders");
-  std::vector<Index> changed = scene_->set_parameter(parameter, value);
+  std::vector<scene::InstanceId> changed = scene_->set_parameter(parameter, value);
   if (scene_->last_change_moved_vertices_only())
     document_.move_scene_vertices(scene_->combined_positions());
   else
@@ -46,7 +46,7 @@ std::vector<Index> SceneDocument::set_parameter(Index parameter, double value) {
   return changed;
 }
 
-std::vector<Index> SceneDocument::set_parameter(const std::string& name, double value) {
+std::vector<scene::InstanceId> SceneDocument::set_parameter(const std::string& name, double value) {
   if (!scene_) throw InvalidInputError("set: flat geometry has no sliders");
   const auto id = scene_->find_parameter(name);
   if (!id) {

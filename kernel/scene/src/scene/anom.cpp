@@ -29,7 +29,7 @@ void Scene::apply_anom(std::string_view text, const std::string& file) {
          format_number(p.min) + ", " + format_number(p.max) + "]");
       continue;
     }
-    next.values_[*id] = value;
+    next.values_[id->index()] = value;
     next.parameters_[*id].value = value;
   }
   if (!errors.empty()) throw SceneError(std::move(errors));

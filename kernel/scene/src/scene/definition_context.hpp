@@ -41,7 +41,7 @@ class DefinitionScope {
 // copied), faces, rim lines, and the errors found on the way.
 class DefinitionContext : public DefinitionScope {
  public:
-  DefinitionContext(const Scene& scene, std::vector<Index>& reads, std::vector<Diagnostic>& errors)
+  DefinitionContext(const Scene& scene, ParameterReads& reads, std::vector<Diagnostic>& errors)
       : DefinitionScope(scene), reads_(reads), errors_(errors) {}
 
   double number(const Value& v);
@@ -74,7 +74,7 @@ class DefinitionContext : public DefinitionScope {
   std::vector<Scene::VertexRef> copied_from() const;
 
  private:
-  std::vector<Index>& reads_;
+  ParameterReads& reads_;
   std::vector<Diagnostic>& errors_;
   Piece piece_;
   std::unordered_map<std::string, Index> local_;  // "p:NAME" (a point) or "r:NAME" (a reference) -> vertex

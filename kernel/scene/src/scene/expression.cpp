@@ -173,7 +173,7 @@ double apply_operator(ExprOp op, double a, double b) {
 }
 
 double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> parameters,
-                std::vector<Index>* reads) {
+                ParameterReads* reads) {
   const ExprNode& n = pool.node(id);
   auto arg = [&](int i) { return evaluate(pool, n.args[i], parameters, reads); };
   switch (n.op) {
@@ -182,10 +182,10 @@ double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> p
     case ExprOp::pi:
       return std::numbers::pi;
     case ExprOp::parameter:
-      if (n.parameter >= parameters.size())
+      if (!n.parameter.is_valid() || n.parameter.index() >= parameters.size())
         throw EvaluationError(n.location, "unknown parameter '$" + n.parameter_name + "'");
       if (reads) reads->push_back(n.parameter);
-      return parameters[n.parameter];
+      return parameters[n.parameter.index()];
     case ExprOp::negate:
       return -arg(0);
     case ExprOp::call: {
@@ -214,7 +214,7 @@ double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> p
 }
 
 double evaluate(const ExpressionPool& pool, const Value& value, std::span<const double> parameters,
-                std::vector<Index>* reads) {
+                ParameterReads* reads) {
   return value.expr == no_index ? value.literal : evaluate(pool, value.expr, parameters, reads);
 }
 

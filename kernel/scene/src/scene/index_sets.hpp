@@ -8,7 +8,8 @@
 namespace nome::scene {
 
 // Sorts the ids and drops repeats: the set of sliders a placement reads, or of instances to rebuild.
-inline void sort_unique(std::vector<Index>& v) {
+template <class IdType>
+void sort_unique(std::vector<IdType>& v) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }

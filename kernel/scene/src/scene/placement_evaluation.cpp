@@ -61,7 +61,7 @@ void place_points(Buffer<Vec3>& points, const glm::dmat4& m) {
 
 }  // namespace
 
-glm::dmat4 Scene::instance_matrix(const InstanceDecl& decl, std::vector<Index>& reads) const {
+glm::dmat4 Scene::instance_matrix(const InstanceDecl& decl, ParameterReads& reads) const {
   glm::dmat4 local(1.0);
   for (const TransformDecl& t : decl.transforms) {
     double a[4];
@@ -72,14 +72,14 @@ glm::dmat4 Scene::instance_matrix(const InstanceDecl& decl, std::vector<Index>& 
   return local;
 }
 
-glm::dmat4 Scene::world_matrix(Index placement, std::vector<Index>& reads) const {
+glm::dmat4 Scene::world_matrix(Index placement, ParameterReads& reads) const {
   glm::dmat4 m(1.0);
   for (Index p = placement; p != no_index; p = placements_[p].parent)
     if (const InstanceDecl* decl = statement(placements_[p])) m = instance_matrix(*decl, reads) * m;
   return m;
 }
 
-Color Scene::surface_color(const Name& surface, std::vector<Index>& reads) const {
+Color Scene::surface_color(const Name& surface, ParameterReads& reads) const {
   const auto it = surfaces_.find(surface.text);
   if (it == surfaces_.end()) {
     std::vector<std::string> names;
@@ -94,7 +94,7 @@ Color Scene::surface_color(const Name& surface, std::vector<Index>& reads) const
   return c;
 }
 
-std::optional<Color> Scene::placement_color(Index placement, std::vector<Index>& reads) const {
+std::optional<Color> Scene::placement_color(Index placement, ParameterReads& reads) const {
   for (Index p = placement; p != no_index; p = placements_[p].parent) {
     const InstanceDecl* decl = statement(placements_[p]);
     if (decl && decl->surface) return surface_color(*decl->surface, reads);
@@ -102,7 +102,7 @@ std::optional<Color> Scene::placement_color(Index placement, std::vector<Index>&
   return std::nullopt;
 }
 
-Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads, std::vector<Diagnostic>& errors,
+Piece Scene::definition_piece(const Placement& p, ParameterReads& reads, std::vector<Diagnostic>& errors,
                               std::vector<VertexRef>& copied_from) {
   DefinitionContext context(*this, reads, errors);
   if (p.target.kind != consolidated_kind) {
@@ -134,7 +134,7 @@ Piece Scene::definition_piece(const Placement& p, std::vector<Index>& reads, std
   return std::move(context.piece());
 }
 
-Piece Scene::evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors,
+Piece Scene::evaluate_placement(Index placement, ParameterReads& reads, std::vector<Diagnostic>& errors,
                                 std::vector<VertexRef>& copied_from) {
   ++placement_evaluations_;
   reads.clear();
@@ -173,7 +173,7 @@ bool Scene::move_vertices(Index placement, Buffer<Vec3>& previous) {
   if (p.target.kind == consolidated_kind || p.references || p.world.topology_key == 0) return false;
   const StatementKind& kind = statement_kinds()[p.target.kind];
   if (!kind.evaluate_positions) return false;
-  std::vector<Index> reads;
+  ParameterReads reads;
   std::vector<Diagnostic> errors;  // any error: the whole evaluation runs and reports it
   try {
     const glm::dmat4 m = world_matrix(placement, reads);
@@ -202,7 +202,7 @@ bool Scene::move_copied_vertices(Index placement, Buffer<Vec3>& previous) {
   // Copying positions would keep the colours of faces whose own surfaces may read the slider.
   if (p.copied_from.empty() || p.colors_own_faces || p.copied_from.size() != p.world.soup.positions.size())
     return false;
-  std::vector<Index> reads;
+  ParameterReads reads;
   Buffer<Vec3> moved(p.copied_from.size());
   try {
     const glm::dmat4 m = world_matrix(placement, reads);
@@ -274,7 +274,7 @@ std::optional<std::string> Scene::evaluate_all(const std::vector<Index>& placeme
   for (const bool is_referencing : {false, true}) {
     for (Index i : placements) {
       if (placements_[i].references != is_referencing) continue;
-      std::vector<Index> reads;
+      ParameterReads reads;
       std::vector<VertexRef> copied_from;
       Piece piece;
       try {

@@ -83,7 +83,7 @@ void Scene::register_parameters(std::vector<Diagnostic>& errors) {
   }
   // Animation clocks every scene has: values expressions read, but no slider (not saved, not on a panel).
   for (const char* name : {time_parameter, frame_parameter}) {
-    parameter_ids_[name] = Index(values_.size());
+    parameter_ids_[name] = ParameterId(Index(values_.size()));
     values_.push_back(0);
   }
   std::vector<std::string> parameter_names;
@@ -100,13 +100,11 @@ void Scene::register_parameters(std::vector<Diagnostic>& errors) {
   }
 }
 
-Index Scene::add_parameter(Parameter p) {
+ParameterId Scene::add_parameter(Parameter p) {
   // Sliders come first: a slider's id is its index in parameters_ and in values_.
-  const Index id = Index(parameters_.size());
-  parameter_ids_[p.full_name] = id;
   values_.push_back(p.value);
-  parameters_.push_back(std::move(p));
-  return id;
+  const std::string name = p.full_name;
+  return parameter_ids_[name] = parameters_.push_back(std::move(p));
 }
 
 // Names of definitions: surfaces, points and geometry each have their own namespace. Definitions are
@@ -192,15 +190,15 @@ void Scene::build(std::vector<Diagnostic>& errors) {
   resolve_text_sharps(errors);
 }
 
-std::optional<Index> Scene::find_parameter(const std::string& name) const {
+std::optional<ParameterId> Scene::find_parameter(const std::string& name) const {
   const auto it = parameter_ids_.find(normalize_name(name));
-  if (it == parameter_ids_.end() || it->second >= parameters_.size()) return std::nullopt;
+  if (it == parameter_ids_.end() || !parameters_.contains(it->second)) return std::nullopt;
   return it->second;
 }
 
-std::vector<Index> Scene::set_parameter(Index parameter, double value) {
-  if (parameter >= parameters_.size())
-    throw InvalidInputError("Scene::set_parameter: no parameter " + std::to_string(parameter));
+std::vector<InstanceId> Scene::set_parameter(ParameterId parameter, double value) {
+  if (!parameters_.contains(parameter))
+    throw InvalidInputError("Scene::set_parameter: no parameter " + std::to_string(parameter.index()));
   const Parameter& param = parameters_[parameter];
   if (!std::isfinite(value) || value < param.min || value > param.max)
     throw InvalidInputError(param.full_name + "=" + format_number(value) + " is outside its slider range [" +
@@ -208,7 +206,7 @@ std::vector<Index> Scene::set_parameter(Index parameter, double value) {
   return change_value(parameter, value);
 }
 
-std::vector<Index> Scene::set_clock(const std::string& name, double value) {
+std::vector<InstanceId> Scene::set_clock(const std::string& name, double value) {
   if (name != time_parameter && name != frame_parameter)
     throw InvalidInputError("Scene::set_clock: no built-in parameter '$" + name + "'");
   if (!std::isfinite(value))
@@ -218,10 +216,10 @@ std::vector<Index> Scene::set_clock(const std::string& name, double value) {
 
 // Sets value `parameter` (a slider's, or a clock's past the sliders) and re-evaluates what reads it: the
 // placements whose topology stays only move their vertices, the others are made again.
-std::vector<Index> Scene::change_value(Index parameter, double value) {
-  const bool is_slider = parameter < parameters_.size();
-  const double old_value = values_[parameter];
-  values_[parameter] = value;
+std::vector<InstanceId> Scene::change_value(ParameterId parameter, double value) {
+  const bool is_slider = parameters_.contains(parameter);
+  const double old_value = values_[parameter.index()];
+  values_[parameter.index()] = value;
   if (is_slider) parameters_[parameter].value = value;
   std::vector<Index> remade, copies;
   std::vector<std::pair<Index, Buffer<Vec3>>> moved;
@@ -240,7 +238,7 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
   // What evaluating a placement changes, to put back when the value is refused.
   struct Kept {
     Piece world;
-    std::vector<Index> reads;
+    ParameterReads reads;
     std::vector<VertexRef> copied_from;
     std::optional<Color> color;
     bool is_mirrored;
@@ -290,7 +288,7 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
   if (moves_sharpness) check_text_sharp_weights(errors);
   if (!errors.empty() || over_budget) {
     // The scene keeps the previous value and geometry.
-    values_[parameter] = old_value;
+    values_[parameter.index()] = old_value;
     if (is_slider) parameters_[parameter].value = old_value;
     for (auto& [i, previous] : moved) placements_[i].world.soup.positions = std::move(previous);
     for (size_t k = 0; k < remade.size(); ++k) {
@@ -307,7 +305,7 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
     throw SceneError(std::move(errors));
   }
   has_only_moved_vertices_ = new_topology.empty() && !moves_sharpness;
-  std::vector<Index> tops, remade_tops;
+  std::vector<Index> tops, remade_tops;  // the placements' top-level instances
   for (Index i : remade) remade_tops.push_back(placements_[i].top);
   sort_unique(remade_tops);
   tops = remade_tops;
@@ -319,7 +317,9 @@ std::vector<Index> Scene::change_value(Index parameter, double value) {
     else
       assemble(t);
   }
-  return tops;
+  std::vector<InstanceId> changed;
+  for (Index t : tops) changed.push_back(InstanceId(t));
+  return changed;
 }
 
 const std::vector<std::string>& Scene::shown_deletions() const {

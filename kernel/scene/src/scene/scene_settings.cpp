@@ -81,7 +81,7 @@ RenderDefaults Scene::render_defaults() const {
         light.color = color(find_field(r, "color")).value_or(Color(1.0f));
         if (const RenderField* d = find_field(r, "direction"); d && d->values.size() == 3)
           light.direction = Vec3(current(d->values[0]), current(d->values[1]), current(d->values[2]));
-        std::vector<Index> reads;
+        ParameterReads reads;
         light.direction = glm::dmat3(instance_matrix(placed, reads)) * light.direction;
         const double length = glm::length(light.direction);
         light.direction = length > 0.0 ? light.direction / length : Vec3(0.0, 1.0, 0.0);

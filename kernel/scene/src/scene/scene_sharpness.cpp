@@ -85,8 +85,7 @@ void mark_text_sharp(PolygonSoup& soup, const NamedEdges& named, const std::vect
 
 }  // namespace
 
-void Scene::check_weight(const SharpDecl& s, std::vector<Diagnostic>& errors,
-                         std::vector<Index>* reads) const {
+void Scene::check_weight(const SharpDecl& s, std::vector<Diagnostic>& errors, ParameterReads* reads) const {
   if (!s.weight) return;
   try {
     if (const double w = evaluate(ast_.expressions, *s.weight, values_, reads); w < 0)

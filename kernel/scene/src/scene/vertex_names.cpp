@@ -71,7 +71,7 @@ std::string Scene::resolve_vertex_name(const std::string& name) const {
   return placements_[ref->placement].world.soup.vertex_names[ref->vertex];
 }
 
-std::vector<Index> Scene::parameters_of_vertex(const std::string& name) const {
+std::vector<ParameterId> Scene::parameters_of_vertex(const std::string& name) const {
   if (!is_vertex_index_current_) build_vertex_index();
   const auto it = vertex_suffixes_.find(name);
   if (it == vertex_suffixes_.end() || it->second.size() != 1) return {};

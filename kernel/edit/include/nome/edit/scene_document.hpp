@@ -46,8 +46,8 @@ class SceneDocument {
   // top-level instances whose geometry changed. Throws InvalidInputError outside the slider's range or
   // for an unknown name (naming close ones), SceneError when the scene cannot be evaluated with the value
   // (nothing changes then).
-  std::vector<Index> set_parameter(Index parameter, double value);
-  std::vector<Index> set_parameter(const std::string& name, double value);
+  std::vector<scene::InstanceId> set_parameter(scene::ParameterId parameter, double value);
+  std::vector<scene::InstanceId> set_parameter(const std::string& name, double value);
   // The print preparation saved with the scene (Scene::print_setup). Throws InvalidInputError for flat
   // geometry.
   void set_print_setup(std::optional<PrintPlacementOptions> setup);

@@ -8,6 +8,7 @@
 #include "nome/error.hpp"
 #include "nome/mesh/types.hpp"
 #include "nome/scene/diagnostic.hpp"
+#include "nome/scene/ids.hpp"
 
 namespace nome::scene {
 
@@ -73,7 +74,7 @@ struct ExprNode {
   ExprOp op = ExprOp::number;
   double number = 0;                      // ExprOp::number
   std::string parameter_name;             // ExprOp::parameter, normalised `bank_name`
-  Index parameter = no_index;             // resolved index into the scene's parameters
+  ParameterId parameter;                  // resolved: the scene's value it reads
   Function function = Function::sin;      // ExprOp::call
   ExprId args[2] = {no_index, no_index};  // operands / call arguments
   SourceLocation location;
@@ -111,9 +112,9 @@ class EvaluationError : public Error {
 // Evaluates with the given parameter values (radians for trigonometry). Appends every parameter read to
 // `reads` when given. Throws EvaluationError with the location of the offending operation.
 double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> parameters,
-                std::vector<Index>* reads = nullptr);
+                ParameterReads* reads = nullptr);
 double evaluate(const ExpressionPool& pool, const Value& value, std::span<const double> parameters,
-                std::vector<Index>* reads = nullptr);
+                ParameterReads* reads = nullptr);
 
 // The expression as source text that parses back to the same tree (`$bank_name` references).
 std::string to_source(const ExpressionPool& pool, ExprId id);

@@ -10,10 +10,12 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "nome/id_vector.hpp"
 #include "nome/mesh/named_sharp_edge.hpp"
 #include "nome/ops/boundary_mode.hpp"
 #include "nome/ops/pipeline_settings.hpp"
 #include "nome/scene/ast.hpp"
+#include "nome/scene/ids.hpp"
 #include "nome/scene/piece.hpp"
 #include "nome/scene/scene_edits.hpp"
 
@@ -31,8 +33,8 @@ struct Parameter {
 // A slider panel.
 struct Bank {
   std::string name;
-  std::vector<Index> parameters;
-  std::vector<Index> shown;  // the successor's `list (ids)`, in its order; all parameters without one
+  std::vector<ParameterId> parameters;
+  std::vector<ParameterId> shown;  // the successor's `list (ids)`, in its order; all parameters without one
 };
 
 // The built-in parameters $time and $frame (0 unless set: `nome render --time T`, the viewer's clock).
@@ -143,15 +145,15 @@ class Scene {
   void set_print_setup(std::optional<PrintPlacementOptions> setup) { ast_.print_setup = setup; }
 
   const std::vector<Bank>& banks() const { return banks_; }
-  const std::vector<Parameter>& parameters() const { return parameters_; }
+  const IdVector<ParameterId, Parameter>& parameters() const { return parameters_; }
   // By `bank_name` or `bank.name`.
-  std::optional<Index> find_parameter(const std::string& name) const;
+  std::optional<ParameterId> find_parameter(const std::string& name) const;
   // Moves a slider and re-evaluates what reads it; returns the top-level instances whose geometry
   // changed. Throws InvalidInputError for a value outside the slider's range, SceneError when the scene
   // cannot be evaluated with the new value (the scene then keeps the previous value).
-  std::vector<Index> set_parameter(Index parameter, double value);
+  std::vector<InstanceId> set_parameter(ParameterId parameter, double value);
   // Sets $time or $frame (any finite value) and re-evaluates what reads it, as set_parameter does.
-  std::vector<Index> set_clock(const std::string& name, double value);
+  std::vector<InstanceId> set_clock(const std::string& name, double value);
 
   const std::vector<SceneInstance>& instances() const { return instances_; }
   // Every top-level instance as parts of one soup (a disjoint union; merging is a later stage).
@@ -177,7 +179,7 @@ class Scene {
   // The sliders a vertex's position reads (its placement's and its ancestors' transforms, its
   // definition's numbers), sorted, by a unique suffix of its hierarchical name; none for an unknown or
   // ambiguous name. The viewer lists the banks a selection depends on first.
-  std::vector<Index> parameters_of_vertex(const std::string& name) const;
+  std::vector<ParameterId> parameters_of_vertex(const std::string& name) const;
 
   // Instance colours (report 8.4: colours given to selected instances). An instance is named by its
   // placement's path (`sh_tun1`); the path of the instance that placed a face (the longest placement path
@@ -225,7 +227,7 @@ class Scene {
     // Where each of its vertices was copied from, when all were (DefinitionContext::copied_from).
     std::vector<VertexRef> copied_from;
     Piece world;
-    std::vector<Index> reads;
+    ParameterReads reads;
     std::optional<Color> color;     // the instance colour its faces took
     bool is_mirrored = false;       // its world matrix reverses its faces
     bool colors_own_faces = false;  // its definition gives faces colours (a face's own surface)
@@ -235,8 +237,8 @@ class Scene {
   Index placement_of_instance(const std::string& path) const;
   // scene.cpp: the sliders and the names of definitions, then the whole evaluation.
   void register_parameters(std::vector<Diagnostic>& errors);
-  Index add_parameter(Parameter p);
-  std::vector<Index> change_value(Index parameter, double value);
+  ParameterId add_parameter(Parameter p);
+  std::vector<InstanceId> change_value(ParameterId parameter, double value);
   // scene_settings.cpp: a value of the file's stage and render statements, now.
   double current(const Value& v) const;
   void check_settings(std::vector<Diagnostic>& errors);
@@ -267,15 +269,15 @@ class Scene {
   bool is_leaf(const Placement& p) const { return !is_group(p.target); }
 
   // placement_evaluation.cpp: one placement's piece in world space, and the passes over many.
-  Piece evaluate_placement(Index placement, std::vector<Index>& reads, std::vector<Diagnostic>& errors,
+  Piece evaluate_placement(Index placement, ParameterReads& reads, std::vector<Diagnostic>& errors,
                            std::vector<VertexRef>& copied_from);
-  Piece definition_piece(const Placement& p, std::vector<Index>& reads, std::vector<Diagnostic>& errors,
+  Piece definition_piece(const Placement& p, ParameterReads& reads, std::vector<Diagnostic>& errors,
                          std::vector<VertexRef>& copied_from);
-  glm::dmat4 world_matrix(Index placement, std::vector<Index>& reads) const;
+  glm::dmat4 world_matrix(Index placement, ParameterReads& reads) const;
   // The instance statement's own transforms, in order, as one matrix.
-  glm::dmat4 instance_matrix(const InstanceDecl& decl, std::vector<Index>& reads) const;
-  std::optional<Color> placement_color(Index placement, std::vector<Index>& reads) const;
-  Color surface_color(const Name& surface, std::vector<Index>& reads) const;
+  glm::dmat4 instance_matrix(const InstanceDecl& decl, ParameterReads& reads) const;
+  std::optional<Color> placement_color(Index placement, ParameterReads& reads) const;
+  Color surface_color(const Name& surface, ParameterReads& reads) const;
   void mark_references(const std::vector<Index>& placements);
   // Returns the BudgetError message when the pieces' faces passed the face budget (evaluation stopped).
   std::optional<std::string> evaluate_all(const std::vector<Index>& placements,
@@ -307,7 +309,7 @@ class Scene {
   // with its placement, whose border is walked when the soup is made), and the sliders their weights read.
   void resolve_text_sharps(std::vector<Diagnostic>& errors);
   // A weight must evaluate to 0 or more (`reads` collects the sliders it reads).
-  void check_weight(const SharpDecl& s, std::vector<Diagnostic>& errors, std::vector<Index>* reads) const;
+  void check_weight(const SharpDecl& s, std::vector<Diagnostic>& errors, ParameterReads* reads) const;
   void check_text_sharp_weights(std::vector<Diagnostic>& errors) const;
   // Marks the text's top-level creases and corners, then the viewer's sharp edits, on the combined soup.
   void add_sharpness(PolygonSoup& soup) const;
@@ -322,9 +324,9 @@ class Scene {
   SceneOptions options_;
   mutable std::vector<Diagnostic> warnings_;
   std::vector<Bank> banks_;
-  std::vector<Parameter> parameters_;
+  IdVector<ParameterId, Parameter> parameters_;
   std::vector<double> values_;
-  std::unordered_map<std::string, Index> parameter_ids_;
+  std::unordered_map<std::string, ParameterId> parameter_ids_;
   std::unordered_map<std::string, Definition> definitions_;
   std::unordered_map<std::string, Index> points_;
   std::unordered_map<std::string, Index> control_points_;  // share the points' names
@@ -341,7 +343,7 @@ class Scene {
     Index placement = no_index;         // a border's: the placement whose border it is
   };
   std::vector<TextSharp> text_sharps_;
-  std::vector<Index> text_sharp_reads_;  // sorted
+  ParameterReads text_sharp_reads_;  // sorted
   std::size_t placement_evaluations_ = 0;
   std::size_t vertex_moves_ = 0;
   bool has_only_moved_vertices_ = false;

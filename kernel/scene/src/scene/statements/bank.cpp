@@ -77,7 +77,7 @@ void save_bank(SceneWriter& writer, Index) {
   const Scene& scene = writer.scene();
   for (const Bank& bank : scene.banks()) {
     writer.out() << "bank " << bank.name << "\n";
-    for (Index id : bank.parameters) {
+    for (ParameterId id : bank.parameters) {
       const Parameter& p = scene.parameters()[id];
       writer.out() << "    set " << p.name << " " << format_number(p.value) << " " << format_number(p.min)
                    << " " << format_number(p.max) << " " << format_number(p.step) << "\n";
