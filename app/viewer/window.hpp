@@ -204,10 +204,9 @@ class Window : private ScriptHost {
   bool is_framing_pending_ = false;  // framing waits for the first layout
   bool is_layout_print_pending_ = false;
   std::array<double, 3> pending_scroll_{};
-  int settle_frames_ = 0;
+  int settle_frames_ = 0;               // frames a script waits for ImGui to apply a scroll
   ViewState recorded_{};                // the stage settings and colours the undo history last saw
-  bool is_settings_drag_open_ = false;  // a held widget's changes merge into one step  // frames a script
-                                        // waits for ImGui to apply a scroll
+  bool is_settings_drag_open_ = false;  // a held widget's changes merge into one step
   float style_scale_ = 0.0f;
   bool is_style_dark_ = false;
 

@@ -92,7 +92,9 @@ void Window::draw_panels() {
   report_.panels.push_back({"viewport", layout_.viewport});
   const MenuContext menu{sessions_.recent(), sessions_.has_session(), sessions_.has_scene(),
                          sessions_.can_undo(), sessions_.can_redo()};
-  if (const auto chosen = draw_main_menu(actions_, menu, display_, layout_settings_)) request_open(*chosen);
+  ImGuiMenuSink menus;
+  if (const auto chosen = draw_main_menu(menus, actions_, menu, display_, layout_settings_))
+    request_open(*chosen);
   draw_sidebars();
   draw_tool_pane();
   for (const std::unique_ptr<Tool>& tool : tools_) tool->draw_overlay(tool_context_);

@@ -17,6 +17,7 @@ Usage: tests/mutants/sample.py [--seed N] [--mutants N] [--jobs N] [--equivalent
   --mutant ID       run one mutant, by its id file:line:rule:column
 """
 import argparse
+import fcntl
 import hashlib
 import json
 import os
@@ -37,6 +38,7 @@ COVERAGE = ROOT / "build" / "coverage"
 BUILD = ROOT / "build" / "mutants-sample"
 PRISTINE = ROOT / "build" / "mutants-sample-pristine"
 JOURNAL = BUILD / "sample-applied.json"
+LOCK = BUILD / "sample-running.lock"
 BASELINE = BUILD / "sample-baseline.json"
 TEST_LOG = BUILD / "sample-test.log"
 PROGRAMS = ("nome_kernel_tests", "nome_app_tests")
@@ -849,8 +851,19 @@ def main():
     signal.signal(signal.SIGTERM, lambda *_: sys.exit("sample: terminated"))
 
     BUILD.mkdir(parents=True, exist_ok=True)
-    recover()
-    if not args.list_only or not (BUILD / "compile_commands.json").is_file():
+    # One run at a time owns the build and the journal; a listing only reads (it must not put back the
+    # source of a mutant another run has applied).
+    lock = open(LOCK, "w")
+    is_alone = True
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        is_alone = False
+    if not is_alone and not args.list_only:
+        sys.exit("sample: another run is using build/mutants-sample; wait for it to end")
+    if is_alone:
+        recover()
+    if is_alone and (not args.list_only or not (BUILD / "compile_commands.json").is_file()):
         configure(BUILD, MUTANTS_OPTIONS)
     quota = {"kernel": (args.mutants + 1) // 2, "app": args.mutants // 2}
     if args.mutant:

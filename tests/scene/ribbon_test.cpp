@@ -92,3 +92,31 @@ TEST_CASE("a ribbon is saved as written and its rim line must be a curve", "[sce
         std::vector<std::string>{"t.nome:2:11: ribbon 'r': 'p' is no rim line (a polyline, circle, "
                                  "beziercurve or bspline)"});
 }
+
+// A rim line through a placed mesh's vertices makes the ribbon wait for that placement, wherever its
+// instance is written, and follow it when a slider moves it.
+TEST_CASE("a ribbon along the vertices of a placement written after it follows that placement", "[scene]") {
+  Scene s = Scene::from_text(
+      "bank b\n  set z 2 0 5 0.5\nendbank\n"
+      "mesh sq\n"
+      "  point a (0 0 0) endpoint  point b (1 0 0) endpoint  point c (1 1 0) endpoint  point d (0 1 0) "
+      "endpoint\n"
+      "  face f (a b c d) endface\n"
+      "endmesh\n"
+      "polyline rim (s_a s_b s_c s_d) isloop endpolyline\n"
+      "ribbon band (rim 0.2 0 0) endribbon\n"
+      "instance r band endinstance\n"
+      "instance s sq translate (0 0 {expr $b_z}) endinstance\n",
+      "t.nome");
+  const auto ribbon_heights = [&] {
+    const Piece& band = s.instances()[0].geometry;
+    REQUIRE(band.soup.num_faces() == 4);
+    double low = 1e9, high = -1e9;
+    for (const Vec3& p : band.soup.positions) low = std::min(low, p.z), high = std::max(high, p.z);
+    return std::pair{low, high};
+  };
+  CHECK(ribbon_heights() == std::pair{2.0, 2.0});
+  s.set_parameter(*s.find_parameter("b_z"), 3.5);
+  CHECK(ribbon_heights() == std::pair{3.5, 3.5});
+  CHECK(test::vertex_position(s, "s_c") == Vec3(1, 1, 3.5));
+}

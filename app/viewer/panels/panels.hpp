@@ -17,6 +17,7 @@
 #include "viewer/commands/actions.hpp"
 #include "viewer/layout.hpp"
 #include "viewer/message_log.hpp"
+#include "viewer/panels/menu_sink.hpp"
 #include "viewer/session/recent_files.hpp"
 #include "viewer/session/stage_pipeline.hpp"
 #include "viewer/view/picking.hpp"
@@ -48,8 +49,9 @@ struct MenuContext {
   bool can_undo;
   bool can_redo;
 };
-// The menu bar; returns the recent file chosen in File > Open Recent, if any.
-std::optional<std::filesystem::path> draw_main_menu(const ActionRegistry& actions, const MenuContext& context,
+// The menu bar, drawn through `menus`; returns the recent file chosen in File > Open Recent, if any.
+std::optional<std::filesystem::path> draw_main_menu(MenuSink& menus, const ActionRegistry& actions,
+                                                    const MenuContext& context,
                                                     render::DisplaySettings& display, LayoutSettings& layout);
 
 // The control panel's state: stage settings, edit buttons, colours.

@@ -19,7 +19,7 @@ struct ParameterPanelState {
   std::array<char, 64> filter{};
   // What the slider menu's fields hold while it is open.
   double typed_value = 0.0;
-  std::array<float, 2> typed_range{};
+  std::array<double, 2> typed_range{};
 
   // Takes the scene's present values as the file's (on open); again when the file's sliders changed.
   void track(const scene::Scene& scene);

@@ -18,7 +18,7 @@ void draw_slider_menu(const scene::Parameter& p, scene::ParameterId id, Paramete
   const auto range = state.range(p, id);
   if (ImGui::IsWindowAppearing()) {
     state.typed_value = p.value;
-    state.typed_range = {float(range.first), float(range.second)};
+    state.typed_range = {range.first, range.second};
   }
   ImGui::TextDisabled("$%s", p.full_name.c_str());
   const double file_value = state.file_values.contains(id) ? state.file_values[id] : p.value;
@@ -33,9 +33,10 @@ void draw_slider_menu(const scene::Parameter& p, scene::ParameterId id, Paramete
   }
   ImGui::SetNextItemWidth(160);
   // The kernel refuses values outside the file's range, so a session's range lies within it.
-  if (ImGui::InputFloat2("range", state.typed_range.data(), "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
-    const double low = std::max(p.min, double(state.typed_range[0]));
-    const double high = std::min(p.max, double(state.typed_range[1]));
+  if (ImGui::InputScalarN("range", ImGuiDataType_Double, state.typed_range.data(), 2, nullptr, nullptr,
+                          "%.6g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    const double low = std::max(p.min, state.typed_range[0]);
+    const double high = std::min(p.max, state.typed_range[1]);
     if (low < high) state.ranges[id] = {low, high};
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("for this session, within the file's %g .. %g", p.min, p.max);
@@ -53,10 +54,11 @@ std::optional<double> draw_slider(const scene::Parameter& p, scene::ParameterId 
   ImGui::TextUnformatted(is_moved ? "*" : " ");
   ImGui::SameLine();
   if (is_moved) ImGui::PushStyleColor(ImGuiCol_FrameBg, moved_color);
-  float value = float(p.value);
+  // A double from the panel to the kernel: a slider's steps (0.1) and its file value stay exact.
+  double value = p.value;
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 6.0f);
   // Ctrl+click types an exact value (ImGui's own behaviour).
-  if (ImGui::SliderFloat(p.name.c_str(), &value, float(range.first), float(range.second), "%.4g"))
+  if (ImGui::SliderScalar(p.name.c_str(), ImGuiDataType_Double, &value, &range.first, &range.second, "%.4g"))
     moved = snap_to_step(p, value, range);
   continues = ImGui::IsItemActive() && !ImGui::IsItemActivated();
   if (is_moved) ImGui::PopStyleColor();

@@ -94,3 +94,33 @@ TEST_CASE("kept blocks cut, joined and moved never give two live buffers the sam
   live.clear();
   nome::keep_freed_buffers(0);
 }
+
+// Two kept blocks that touch become one range, whichever is freed first: a buffer the size of both then
+// takes that range where it lies instead of moving pages into a new mapping.
+TEST_CASE("two freed blocks that touch are joined into one kept range whichever is freed first", "[kernel]") {
+  constexpr std::size_t n = 4 * megabyte / sizeof(int);  // a 4 MB block each
+  for (const bool is_lower_freed_first : {true, false}) {
+    INFO("lower block freed first: " << is_lower_freed_first);
+    nome::keep_freed_buffers(0);
+    nome::keep_freed_buffers(64 * megabyte);
+    // An 8 MB block kept, then cut into two 4 MB blocks that touch.
+    const int* whole = nullptr;
+    {
+      Buffer<int> eight(2 * n, 0);
+      whole = eight.data();
+    }
+    {
+      std::vector<Buffer<int>> pair;
+      pair.emplace_back(n, 1);
+      pair.emplace_back(n, 2);
+      REQUIRE(std::min(pair[0].data(), pair[1].data()) == whole);
+      REQUIRE(std::max(pair[0].data(), pair[1].data()) == whole + n);
+      if ((pair[0].data() == whole) != is_lower_freed_first) std::swap(pair[0], pair[1]);
+      pair.erase(pair.begin());
+    }
+    Buffer<int> both;
+    both.resize(2 * n);
+    CHECK(both.data() == whole);
+  }
+  nome::keep_freed_buffers(0);
+}

@@ -9,6 +9,7 @@
 #include "nome/scene/parser.hpp"
 #include "nome/scene/statement_kinds.hpp"
 #include "scene/index_sets.hpp"
+#include "scene/value_change.hpp"
 
 namespace nome::scene {
 namespace {
@@ -217,109 +218,20 @@ std::vector<InstanceId> Scene::set_clock(const std::string& name, double value) 
 // Sets value `parameter` (a slider's, or a clock's past the sliders) and re-evaluates what reads it: the
 // placements whose topology stays only move their vertices, the others are made again.
 std::vector<InstanceId> Scene::change_value(ParameterId parameter, double value) {
-  const bool is_slider = parameters_.contains(parameter);
-  const double old_value = values_[parameter.index()];
-  values_[parameter.index()] = value;
-  if (is_slider) parameters_[parameter].value = value;
-  std::vector<Index> remade, copies;
-  std::vector<std::pair<Index, Buffer<Vec3>>> moved;
-  for (Index i = 0; i < placements_.size(); ++i) {
-    if (!is_leaf(placements_[i]) ||
-        !std::binary_search(placements_[i].reads.begin(), placements_[i].reads.end(), parameter))
-      continue;
-    Buffer<Vec3> previous;
-    if (placements_[i].references)
-      copies.push_back(i);  // after the placements it copies from
-    else if (move_vertices(i, previous))
-      moved.emplace_back(i, std::move(previous));
-    else
-      remade.push_back(i);
-  }
-  // What evaluating a placement changes, to put back when the value is refused.
-  struct Kept {
-    Piece world;
-    ParameterReads reads;
-    std::vector<VertexRef> copied_from;
-    std::optional<Color> color;
-    bool is_mirrored;
-    bool colors_own_faces;
-  };
-  std::vector<Kept> backup;
-  const auto keep = [&](Index i) {
-    const Placement& p = placements_[i];
-    backup.push_back({p.world, p.reads, p.copied_from, p.color, p.is_mirrored, p.colors_own_faces});
-  };
-  // A placement made again may still have only moved (a generator with no positions of its own).
-  std::vector<Index> new_topology;
-  const auto note_topology = [&](size_t from) {
-    for (size_t k = from; k < remade.size(); ++k)
-      if (!has_same_topology(backup[k].world, placements_[remade[k]].world))
-        new_topology.push_back(remade[k]);
-  };
-  for (Index i : remade) keep(i);
+  ValueChange change(*this, parameter, value);
   std::vector<Diagnostic> errors;
-  auto over_budget = evaluate_all(remade, errors);
-  note_topology(0);
-  if (errors.empty() && !over_budget) {
-    // Copies of other placements' vertices follow them, unless one of those has other faces now.
-    std::vector<Index> remade_copies;
-    for (Index i : copies) {
-      const std::vector<VertexRef>& sources = placements_[i].copied_from;
-      const bool has_new_source = std::any_of(sources.begin(), sources.end(), [&](const VertexRef& ref) {
-        return std::find(new_topology.begin(), new_topology.end(), ref.placement) != new_topology.end();
-      });
-      Buffer<Vec3> previous;
-      if (!has_new_source && move_copied_vertices(i, previous))
-        moved.emplace_back(i, std::move(previous));
-      else
-        remade_copies.push_back(i);
-    }
-    const size_t first_copy = remade.size();
-    for (Index i : remade_copies) {
-      keep(i);
-      remade.push_back(i);
-    }
-    over_budget = evaluate_all(remade_copies, errors);
-    note_topology(first_copy);
-  }
+  const auto over_budget = change.reevaluate(errors);
   // A `sharp` weight that reads the slider changes the soup's creases: the soup is made again.
   const bool moves_sharpness =
       std::binary_search(text_sharp_reads_.begin(), text_sharp_reads_.end(), parameter);
   if (moves_sharpness) check_text_sharp_weights(errors);
   if (!errors.empty() || over_budget) {
-    // The scene keeps the previous value and geometry.
-    values_[parameter.index()] = old_value;
-    if (is_slider) parameters_[parameter].value = old_value;
-    for (auto& [i, previous] : moved) placements_[i].world.soup.positions = std::move(previous);
-    for (size_t k = 0; k < remade.size(); ++k) {
-      Placement& p = placements_[remade[k]];
-      p.world = std::move(backup[k].world);
-      p.reads = std::move(backup[k].reads);
-      p.copied_from = std::move(backup[k].copied_from);
-      p.color = backup[k].color;
-      p.is_mirrored = backup[k].is_mirrored;
-      p.colors_own_faces = backup[k].colors_own_faces;
-    }
-    is_vertex_index_current_ = false;
+    change.roll_back();
     if (over_budget) throw BudgetError(*over_budget);
     throw SceneError(std::move(errors));
   }
-  has_only_moved_vertices_ = new_topology.empty() && !moves_sharpness;
-  std::vector<Index> tops, remade_tops;  // the placements' top-level instances
-  for (Index i : remade) remade_tops.push_back(placements_[i].top);
-  sort_unique(remade_tops);
-  tops = remade_tops;
-  for (const auto& [i, previous] : moved) tops.push_back(placements_[i].top);
-  sort_unique(tops);
-  for (Index t : tops) {
-    if (shown_deletions().empty() && !std::binary_search(remade_tops.begin(), remade_tops.end(), t))
-      assemble_positions(t);
-    else
-      assemble(t);
-  }
-  std::vector<InstanceId> changed;
-  for (Index t : tops) changed.push_back(InstanceId(t));
-  return changed;
+  has_only_moved_vertices_ = change.has_only_moved() && !moves_sharpness;
+  return change.assemble();
 }
 
 const std::vector<std::string>& Scene::shown_deletions() const {

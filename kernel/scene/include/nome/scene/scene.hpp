@@ -204,6 +204,7 @@ class Scene {
  private:
   friend class DefinitionScope;
   friend class DefinitionContext;
+  friend class ValueChange;
 
   // What a name instantiates: a definition of a row of statement_kinds() (a group, or a kind that makes
   // geometry), or the consolidated mesh, which no statement defines.

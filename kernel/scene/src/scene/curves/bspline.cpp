@@ -26,6 +26,29 @@ void basis(double t, int r, int order, std::vector<double>& n) {
   }
 }
 
+// The curve's segs + 1 samples, evenly spaced in the parameter over the span (count - K + 1 knots) where
+// all K basis functions live: positions, scales and rotations blended alike.
+SampledCurve sampled_points(const std::vector<CurvePoint>& cps, int order, double span, int segs) {
+  const int count = int(cps.size());
+  SampledCurve curve;
+  std::vector<double> n;
+  for (int s = 0; s <= segs; ++s) {
+    const double t = double(order - 1) + span * s / segs;
+    const int r = std::min(int(std::floor(t)), count - 1);
+    basis(t, r, order, n);
+    CurvePoint p{Vec3(0.0), glm::dvec2(0.0), Vec3(0.0)};
+    const std::size_t base = std::size_t(r) + 1 - std::size_t(order);
+    for (std::size_t k = 0; k < n.size(); ++k) {
+      const CurvePoint& cp = cps[base + k];
+      p.position += n[k] * cp.position;
+      p.scale += n[k] * cp.scale;
+      p.rotate += n[k] * cp.rotate;
+    }
+    curve.points.push_back(p);
+  }
+  return curve;
+}
+
 // JIPCAD's curve: uniform knots, sampled over the parameters where a full set of K basis functions
 // lives, so it starts and ends near (not at) the end points. Closed: the first K-1 points again at the end.
 SampledCurve sample_bspline(DefinitionContext& context, Index decl) {
@@ -43,23 +66,8 @@ SampledCurve sample_bspline(DefinitionContext& context, Index decl) {
     throw EvaluationError(c.name.location, "bspline '" + c.name.text + "' of order " + std::to_string(order) +
                                                " needs at least " + std::to_string(order) +
                                                " points, found " + std::to_string(count));
-  SampledCurve curve;
-  std::vector<double> n;
   const double span = double(count - order + 1);
-  for (int s = 0; s <= segs; ++s) {
-    const double t = double(order - 1) + span * s / segs;
-    const int r = std::min(int(std::floor(t)), count - 1);
-    basis(t, r, order, n);
-    CurvePoint p{Vec3(0.0), glm::dvec2(0.0), Vec3(0.0)};
-    const std::size_t base = std::size_t(r) + 1 - std::size_t(order);
-    for (std::size_t k = 0; k < n.size(); ++k) {
-      const CurvePoint& cp = cps[base + k];
-      p.position += n[k] * cp.position;
-      p.scale += n[k] * cp.scale;
-      p.rotate += n[k] * cp.rotate;
-    }
-    curve.points.push_back(p);
-  }
+  SampledCurve curve = sampled_points(cps, order, span, segs);
   // A control point's own cross-section and reversal land where it weighs most: its basis peaks at i + K/2.
   const auto peak = [&](int i) { return std::lround((i + order / 2.0 - (order - 1)) / span * segs); };
   for (int i = 0; i < count; ++i) {
