@@ -79,20 +79,30 @@ TEST_CASE("every command explains its options", "[app]") {
   }
 }
 
+namespace {
+
+// An OBJ grid of n x n unit quads in the plane z = 0, vertices row by row, then `tags`.
+void write_grid_obj(const std::string& path, int n, const std::string& tags) {
+  std::ofstream obj(path);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) obj << "v " << i << ' ' << j << " 0\n";
+  const int row = n + 1;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      obj << "f " << row * j + i + 1 << ' ' << row * j + i + 2 << ' ' << row * (j + 1) + i + 2 << ' '
+          << row * (j + 1) + i + 1 << '\n';
+  obj << tags;
+}
+
+}  // namespace
+
 TEST_CASE("nome export keeps an OBJ's OpenSubdiv tags without subdivision and applies them with it",
           "[app]") {
   const std::string dir = nome::test::scratch_dir("export_tags");
   // A 3x3 grid of quads with a semi-sharp crease across it, a corner, a hole and edge-and-corner borders.
-  std::ofstream obj(dir + "/grid.obj");
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) obj << "v " << i << ' ' << j << " 0\n";
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i)
-      obj << "f " << 4 * j + i + 1 << ' ' << 4 * j + i + 2 << ' ' << 4 * j + i + 6 << ' ' << 4 * j + i + 5
-          << '\n';
-  obj << "t crease 2/1/0 4 5 1.5\nt crease 2/1/0 5 6 1.5\nt corner 1/1/0 5 0.5\nt hole 1/0/0 8\n"
-         "t interpolateboundary 1/0/0 1\nt vertexedit 1/0/1 0 add\n";
-  obj.close();
+  write_grid_obj(dir + "/grid.obj", 3,
+                 "t crease 2/1/0 4 5 1.5\nt crease 2/1/0 5 6 1.5\nt corner 1/1/0 5 0.5\nt hole 1/0/0 8\n"
+                 "t interpolateboundary 1/0/0 1\nt vertexedit 1/0/1 0 add\n");
   const auto kept = nome::test::run_nome_in_process({"export", dir + "/grid.obj", "-o", dir + "/base.obj"});
   REQUIRE(kept.status == 0);
   CHECK_THAT(kept.err, Catch::Contains("grid.obj:31: 't vertexedit' ignored"));
@@ -112,6 +122,25 @@ TEST_CASE("nome export keeps an OBJ's OpenSubdiv tags without subdivision and ap
   CHECK_THAT(refined.err, Catch::Contains("128 faces"));
   CHECK_THAT(nome::test::run_nome_in_process(std::string("export --help")).out,
              Catch::Contains("--boundary none|edge-only|edge-and-corner") && Catch::Contains("t crease"));
+}
+
+// Two holes on a diagonal leave the other two quads' children touching at the centre alone: the mesh
+// splits that vertex, one copy per fan, and the OBJ writes it once. The count reported is the file's.
+TEST_CASE("nome export counts a vertex that holes split once, as the OBJ writes it", "[app]") {
+  const std::string dir = nome::test::scratch_dir("export_split_vertex");
+  write_grid_obj(dir + "/grid.obj", 2, "t hole 1/0/0 1\nt hole 1/0/0 2\n");
+  const auto r = nome::test::run_nome_in_process(
+      {"export", dir + "/grid.obj", "--subdiv", "1", "-o", dir + "/fine.obj"});
+  REQUIRE(r.status == 0);
+  std::ifstream in(dir + "/fine.obj");
+  std::size_t vertices = 0, faces = 0;
+  for (std::string line; std::getline(in, line);) {
+    vertices += line.rfind("v ", 0) == 0;
+    faces += line.rfind("f ", 0) == 0;
+  }
+  CHECK(faces == 8);
+  CHECK(vertices == 17);  // 2 x 9 children less the centre written once
+  CHECK_THAT(r.err, Catch::Contains("(" + std::to_string(vertices) + " vertices, 8 faces"));
 }
 
 namespace {

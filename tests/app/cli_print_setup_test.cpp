@@ -73,6 +73,19 @@ TEST_CASE("nome export --fit-height 60mm --rest-on flattest stands the solid 60 
   CHECK(standing.area_down == Approx(50.8 * 50.8 * 4.0 / 36.0).epsilon(1e-4));
 }
 
+// Placed but not scaled: the STL is written from the placed mesh as it is, in the model's own units.
+TEST_CASE("nome export --rest-on flattest alone lays the solid down at its own size", "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("print_rest_only");
+  std::ofstream(dir + "/box.obj") << tilted_box_obj();
+  REQUIRE(
+      run_nome_in_process("export " + dir + "/box.obj -o " + dir + "/rest.stl --rest-on flattest --no-check")
+          .status == 0);
+  const StlFigures placed = stl_figures(dir + "/rest.stl");
+  CHECK(placed.low_z == Approx(0.0).margin(1e-5));
+  CHECK(placed.high_z == Approx(1.0).epsilon(1e-5));  // the box's thickness
+  CHECK(placed.area_down == Approx(6.0 * 4.0).epsilon(1e-4));
+}
+
 TEST_CASE("A scene keeps its print preparation and nome export applies it", "[app]") {
   const std::string dir = nome::test::private_scratch_dir("print_setup_scene");
   std::ofstream(dir + "/band.nome") << "mobiusstrip band (1 1 2 24) endmobiusstrip\n"

@@ -12,19 +12,24 @@ using namespace nome;
 
 namespace {
 
-// A GIF reader independent of giflib: Python walks the blocks and counts the image descriptors.
+// A GIF reader independent of giflib: Python walks the blocks and counts the image descriptors, and tells
+// whether a NETSCAPE2.0 block (one sub-block of 3 bytes: 1, then a loop count of 0) loops it forever.
 const char* const gif_frame_counter = R"(import sys
 data = open(sys.argv[1], 'rb').read()
 assert data[:6] in (b'GIF87a', b'GIF89a'), 'not a GIF'
 flags = data[10]
 at = 13 + (3 * 2 ** ((flags & 7) + 1) if flags & 0x80 else 0)
 frames = 0
+loops = 'once'
 def skip_blocks(at):
     while data[at]:
         at += data[at] + 1
     return at + 1
 while data[at] != 0x3B:
     if data[at] == 0x21:
+        if data[at + 1] == 0xFF and data[at + 2:at + 14] == bytes([11]) + b'NETSCAPE2.0':
+            if data[at + 14:at + 19] == bytes([3, 1, 0, 0, 0]):
+                loops = 'forever'
         at = skip_blocks(at + 2)
     elif data[at] == 0x2C:
         frames += 1
@@ -33,7 +38,7 @@ while data[at] != 0x3B:
         at = skip_blocks(at + 1)
     else:
         raise SystemExit('unexpected block %d at %d' % (data[at], at))
-print(frames, data[6] | data[7] << 8, data[8] | data[9] << 8)
+print(frames, data[6] | data[7] << 8, data[8] | data[9] << 8, loops)
 )";
 
 std::string python_output(const std::string& script, const std::string& argument) {
@@ -57,7 +62,7 @@ TEST_CASE("nome render --turntable 8 -o OUT.gif writes an animated GIF of 8 fram
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("8 frames of 96x72"));
   std::ofstream(dir + "/count_frames.py") << gif_frame_counter;
-  CHECK(python_output(dir + "/count_frames.py", dir + "/spin.gif") == "8 96 72\n");
+  CHECK(python_output(dir + "/count_frames.py", dir + "/spin.gif") == "8 96 72 forever\n");
 
   const auto frames =
       test::run_nome_in_process("render " + band + " --turntable 4 -o " + dir + "/f.png --size 64x48");

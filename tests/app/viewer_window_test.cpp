@@ -88,3 +88,26 @@ TEST_CASE(
   CHECK(white_before > 100000);
   CHECK(white_prompt < white_before / 10);
 }
+
+// The panels open in the light theme (the layout's default) from the first frame, and the theme action
+// turns them dark.
+TEST_CASE("the panels open light and the theme action darkens them", "[app][render]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_theme");
+  const std::string script = write_script(
+      dir, "screenshot " + dir + "/light.png\naction theme\nscreenshot " + dir + "/dark.png\nquit\n");
+  const auto r = run_viewer(assets + "cube.obj --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  // The mean of the controls sidebar's left part, halfway down the window: its background and widgets.
+  const auto sidebar_brightness = [](const render::Image& shot) {
+    long sum = 0, count = 0;
+    for (int y = shot.height / 2; y < shot.height / 2 + 100; ++y)
+      for (int x = 2; x < 120; ++x, ++count) {
+        const auto* p = shot.pixel(x, y);
+        sum += (int(p[0]) + int(p[1]) + int(p[2])) / 3;
+      }
+    return sum / count;
+  };
+  CHECK(sidebar_brightness(render::read_png(dir + "/light.png")) > 200);
+  CHECK(sidebar_brightness(render::read_png(dir + "/dark.png")) < 80);
+}

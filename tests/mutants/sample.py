@@ -243,8 +243,17 @@ def covering_tests(cov, path, lineno, code_lines):
         while n < len(code_lines) and not ends_statement(n):
             n += 1
             lines.append(n)
+    # A function's signature (its default arguments) runs with its body: the body's first line with code.
+    if not any(n in instrumented for n in lines) and code_lines[lineno - 1].rstrip().endswith("{"):
+        lines += [n for n in range(lineno + 1, min(lineno + 8, len(code_lines) + 1)) if n in instrumented][:1]
     names = cov["tests"]
-    return sorted({names[i] for n in lines for i in executed.get(str(n), [])})
+    found = {names[i] for n in lines for i in executed.get(str(n), [])}
+    # A class's default member initialisers run in its constructors, which gcov counts in the .cpp of the
+    # header's name: the tests that run any of that file.
+    if not found and path.endswith(".hpp") and not any(n in instrumented for n in lines):
+        source = path[: -len(".hpp")] + ".cpp"
+        found = {names[i] for runs in cov["executed"].get(source, {}).values() for i in runs}
+    return sorted(found)
 
 
 # Reading C++ -------------------------------------------------------------------------------------------

@@ -138,4 +138,12 @@ TEST_CASE("a scene's camera chooses the lens: projection and field of view", "[r
   CHECK(render::scene_lens(d).fov_y_degrees == Approx(90.0));
   d.camera_frustum = {-10, 10, -10, 10, -1, 10};  // light_test's negative near plane: no angle
   CHECK(render::scene_lens(d).fov_y_degrees == 30.0);
+  // A perspective camera turns the lens it is given back into a perspective one, orthographic or not.
+  render::Lens orthographic;
+  orthographic.is_orthographic = true;
+  for (const char* perspective : {"NOME_FRUSTUM", "NOME_FRUTUM", "NOME_PERSPECTIVE"}) {
+    INFO(perspective);
+    d.camera_projection = perspective;
+    CHECK_FALSE(render::scene_lens(d, orthographic).is_orthographic);
+  }
 }

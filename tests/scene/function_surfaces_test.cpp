@@ -267,3 +267,18 @@ TEST_CASE("genimplicitsurf: the vertices of a plane's zero set lie on it, faces 
   CHECK(area == Approx(4).epsilon(1e-9));
   for (const Vec3& p : w.positions) CHECK(p.x == Approx(0.3).epsilon(1e-12));
 }
+
+// The nesting limit counts how deep a function goes, not how long it is: 300 groups side by side are
+// fine, 201 inside each other are refused.
+TEST_CASE("function strings: many groups side by side are not nesting", "[scene]") {
+  std::string wide = "(x)";
+  for (int k = 1; k < 300; ++k) wide += "+(x)";
+  const Scene s = fs_scene({wide}, "(0 1 0 1 1 1)");
+  CHECK(fs_value(s, 0, 1, 0) == Approx(300.0));
+  std::string deep = "x";
+  for (int k = 0; k < 201; ++k) deep = "(" + deep + ")";
+  const std::vector<std::string> errors = test::scene_errors(
+      "gencartesiansurf g func [" + deep + "] (0 1 0 1 1 1) endgencartesiansurf\ninstance k g endinstance\n");
+  REQUIRE(errors.size() == 1);
+  CHECK_THAT(errors[0], Catch::Contains("nested over 200 levels"));
+}

@@ -65,6 +65,8 @@ TEST_CASE("malformed scenes: each error says where and what was expected", "[sce
       {"polyline l (a) endpolyline\n", "t.nome:1:12: polyline 'l' needs at least 2 vertices, found 1"},
       {"instance i fun rotate (0 0 1) endinstance\n", "t.nome:1:31: expected '(', found 'endinstance'"},
       {"instance i fun mirror (0 0 1) endinstance\n", "t.nome:1:23: mirror takes 4 numbers, found 3"},
+      // A word between a generator's name and its arguments that opens no function.
+      {"torus t radius (1 0.3 0 360 12 8) endtorus\n", "t.nome:1:9: expected '(', found 'radius'"},
       // sliders
       // stage blocks (an initial value outside the slider's range is a warning: see scene_dialect_test)
       {"subdivision s instance i f endinstance endsubdivision\n",
@@ -150,6 +152,19 @@ TEST_CASE("after an error the parser resynchronises and reports the next ones", 
         "'backface' or 'endinstance', found 'spin'");
   CHECK(errors[3] == "t.nome:9:33: expected a number or '{expr ...}', found 'endinstance'");
   CHECK(errors[4] == "t.nome:12:17: expected 'endpoint', found 'endface'");
+}
+
+// After an error inside a face the parser skips to that face's own `endface`, so a face written after it
+// on the same line is still read.
+TEST_CASE("an error in one face of a mesh leaves the faces after it to be read", "[scene]") {
+  const auto errors = scene_errors(
+      "mesh m\n"
+      "  point a (0 0 0) endpoint point b (1 0 0) endpoint point c (0 1 0) endpoint\n"
+      "  face f (a b c 1.5) endface face g (a b) endface\n"
+      "endmesh\n");
+  REQUIRE(errors.size() == 2);
+  CHECK(errors[0] == "t.nome:3:17: expected a vertex name or ')', found number 1.5");
+  CHECK(errors[1] == "t.nome:3:37: face 'g' needs at least 3 vertices, found 2");
 }
 
 TEST_CASE("a closing word misspelt by a letter or two is read as meant, with a warning", "[scene]") {

@@ -231,6 +231,12 @@ TEST_CASE("succ: the hyperboloids of JIPCAD's reference, in NOME3's older order,
   moved.set_parameter(*slider, 2.0);
   CHECK(succ_gap(moved, "i_v0_" + std::to_string(u_segs), {a * std::cosh(u_max), 0, 2.0 * std::sinh(u_max)}) <
         1e-12);
+  // The same warning at the same place is told once: a second instance, a slider that evaluates it again.
+  Scene twice = Scene::from_text(documented_hyperboloid(0) + "instance j h translate (3 0 0) endinstance\n",
+                                 "doc.nom", {.dialect = Dialect::jipcad});
+  CHECK(twice.warnings().size() == 1);
+  twice.set_parameter(*twice.find_parameter("hyp.C"), 1.5);
+  CHECK(twice.warnings().size() == 1);
   const std::vector<std::string> neither =
       test::scene_errors("hyperboloid h (1 1 1 6 2 0) endhyperboloid\ninstance i h endinstance\n");
   REQUIRE(neither.size() == 1);

@@ -72,3 +72,48 @@ TEST_CASE("layout takes no argument, scroll a panel and pixels", "[app]") {
                     Catch::Contains("s.txt:1:8: expected controls, parameters or log, found 'sidebar'"));
   CHECK_THROWS_WITH(parse_script("layout now\n", "s.txt"), Catch::Contains("s.txt:1:8: expected 'layout'"));
 }
+
+// One line of every command, as its usage says, with the words and numbers it must give; one argument
+// fewer is refused with the usage.
+TEST_CASE("every script command reads its words and numbers, and refuses one argument fewer", "[app]") {
+  struct Case {
+    const char* line;
+    Kind kind;
+    std::vector<std::string> words;
+    std::vector<double> numbers;
+  };
+  const std::vector<Case> cases{
+      {"set b_n 6", Kind::set, {"b_n"}, {6}},
+      {"mode edge", Kind::mode, {"edge"}, {}},
+      {"color 1 0.5 0", Kind::color, {}, {1, 0.5, 0}},
+      {"click 10 20", Kind::click, {}, {10, 20}},
+      {"double-click 10 20", Kind::double_click, {}, {10, 20}},
+      {"key Ctrl+Z", Kind::key, {"Ctrl+Z"}, {}},
+      {"action zip", Kind::action, {"zip"}, {}},
+      {"subdiv 2", Kind::subdiv, {}, {2}},
+      {"offset 0.05", Kind::offset, {}, {0.05}},
+      {"setting creases chaikin", Kind::setting, {"creases", "chaikin"}, {}},
+      {"view 30 -25", Kind::view, {}, {30, -25}},
+      {"screenshot out.png", Kind::screenshot, {"out.png"}, {}},
+      {"save out.nome", Kind::save, {"out.nome"}, {}},
+      {"export out.stl", Kind::export_file, {"out.stl"}, {}},
+      {"recover discard", Kind::recover, {"discard"}, {}},
+      {"drop other.nome", Kind::drop, {"other.nome"}, {}},
+      {"prompt cancel", Kind::prompt, {"cancel"}, {}},
+      {"scroll log 120", Kind::scroll, {"log"}, {120}},
+      {"text-set new.nome", Kind::text_set, {"new.nome"}, {}},
+      {"log-click 2", Kind::log_click, {}, {2}},
+      {"tool measure", Kind::tool, {"measure"}, {}},
+  };
+  for (const Case& c : cases) {
+    INFO(c.line);
+    const auto commands = parse_script(std::string(c.line) + "\n", "s.txt");
+    REQUIRE(commands.size() == 1);
+    CHECK(commands[0].kind == c.kind);
+    CHECK(commands[0].words == c.words);
+    CHECK(commands[0].numbers == c.numbers);
+    const std::string line(c.line);
+    const std::string shorter = line.substr(0, line.rfind(' '));
+    CHECK_THROWS_AS(parse_script(shorter + "\n", "s.txt"), nome::Error);
+  }
+}
