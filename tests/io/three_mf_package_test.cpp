@@ -407,6 +407,18 @@ TEST_CASE("a 3MF writes the faces of a partly coloured mesh without a colour lig
     INFO("triangle at x " << x);
     CHECK(color == tmf_strip_color(x));
   }
+  // Read back with lib3mf: every triangle with its colour.
+  const ThreeMfModel back = read_3mf(path);
+  REQUIRE(back.objects.size() == 1);
+  const ThreeMfModel::Object& strip = back.objects[0];
+  REQUIRE(strip.colors.size() == strip.triangles.size());
+  const Color expected[] = {Color(1, 0, 0), Color(0.75f), Color(0, 0, 1), Color(0.75f), Color(0, 1, 0)};
+  for (std::size_t t = 0; t < strip.triangles.size(); ++t) {
+    double x = 0;
+    for (Index v : strip.triangles[t]) x += strip.vertices[v].x / 3;
+    INFO("triangle at x " << x);
+    CHECK(glm::length(strip.colors[t] - expected[std::size_t(std::clamp(int(std::floor(x)), 0, 4))]) < 0.01);
+  }
 
   // Subdivided and thickened: every face of the solid takes its source face's colour, or grey.
   Pipeline pipeline;
