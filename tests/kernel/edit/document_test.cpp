@@ -223,6 +223,16 @@ TEST_CASE("saved edits load without history", "[kernel]") {
   CHECK(doc.deleted_faces().size() == 1);
   CHECK_FALSE(doc.can_undo());
   CHECK(doc.consolidated_soup().num_faces() == 1);
+  // Loaded over edits made and undone: what could have been redone goes with the rest of the history.
+  Document edited(two_grids());
+  REQUIRE(edited.add_polygon({"left_v2_0", "left_v2_1", "right_v0_1", "right_v0_0"}).applied);
+  REQUIRE(edited.undo());
+  REQUIRE(edited.can_redo());
+  edited.load_edits({}, {"left_f0_0"});
+  CHECK_FALSE(edited.can_undo());
+  CHECK_FALSE(edited.can_redo());
+  CHECK_FALSE(edited.redo());
+  CHECK(edited.temporary_faces().empty());
 }
 
 TEST_CASE("glue_faces splits vertices where faces only touch and leaves three-face edges apart", "[kernel]") {
