@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -69,6 +70,25 @@ TEST_CASE("pairing prefers the flattest, squarest pair and refuses folds and non
   dart.add_face({0, 1, 2});
   dart.add_face({0, 2, 3});
   CHECK(pair_triangles(dart, 20).num_faces() == 2);
+}
+
+// A long thin triangle with two flat neighbours: one makes a 4 x 1 rectangle (right angles), the other a
+// kite with no right angle. The rectangle wins, whatever order the faces come in.
+TEST_CASE("pairing measures each corner of a quad between its two sides", "[io]") {
+  PolygonSoup s;
+  for (Vec3 p : {Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(4, 1, 0), Vec3(0, 1, 0), Vec3(2, -2, 0)}) s.add_vertex(p);
+  s.add_face({0, 1, 2});  // the thin triangle
+  s.add_face({1, 0, 4});  // below it: the kite, listed first
+  s.add_face({0, 2, 3});  // above it: the rectangle
+  const PolygonSoup q = pair_triangles(s, 20);
+  REQUIRE(q.num_faces() == 2);
+  std::vector<Index> quad;
+  for (Index f = 0; f < q.num_faces(); ++f)
+    if (q.face_offsets[f + 1] - q.face_offsets[f] == 4)
+      quad.assign(q.face_vertices.begin() + q.face_offsets[f],
+                  q.face_vertices.begin() + q.face_offsets[f + 1]);
+  std::sort(quad.begin(), quad.end());
+  CHECK(quad == std::vector<Index>{0, 1, 2, 3});
 }
 
 TEST_CASE("malformed SIF says where and what was expected", "[io]") {
