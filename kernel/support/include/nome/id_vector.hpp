@@ -34,7 +34,6 @@ class IdVector {
   auto begin() { return items_.begin(); }
   auto end() { return items_.end(); }
   const T& front() const { return items_.front(); }
-  const T& back() const { return items_.back(); }
 
   bool operator==(const IdVector&) const = default;
 
