@@ -812,6 +812,18 @@ def scores(made, discarded):
     return result
 
 
+def previous_outcomes(seed):
+    """The outcomes an interrupted run of this seed wrote, by mutant id: only the mutants drawn the same way
+    (same source line, same text) are reused."""
+    path = BUILD / f"report-seed{seed}.json"
+    if not path.is_file():
+        return {}
+    saved = json.loads(path.read_text())
+    return {(m["id"], m["original"], m["mutated"]):
+            {k: m[k] for k in ("outcome", "caught_by", "error", "tests", "seconds")}
+            for m in saved["mutants"] + saved["discarded"] if m["outcome"] != "equivalent"}
+
+
 def report(title, made, discarded, failing, seed):
     s = scores(made, discarded)
     out = [title, ""]
@@ -855,6 +867,8 @@ def main():
     parser.add_argument("--equivalent", default=str(ROOT / "tests" / "mutants" / "equivalent.toml"))
     parser.add_argument("--list-only", action="store_true")
     parser.add_argument("--mutant")
+    parser.add_argument("--resume", action="store_true",
+                        help="keep the outcomes of this seed's last report and run only the mutants it lacks")
     args = parser.parse_args()
     # A termination request (kill, the end of a CI job) unwinds like Ctrl-C, so the source is restored.
     signal.signal(signal.SIGTERM, lambda *_: sys.exit("sample: terminated"))
@@ -905,6 +919,7 @@ def main():
     made, discarded = [], []
     position = {area: 0 for area in AREAS}
     seed = None if args.mutant else args.seed
+    done = previous_outcomes(seed) if args.resume and seed is not None else {}
     print(title, flush=True)
     while any(sum(m.area == a for m in made) < quota[a] and position[a] < len(streams[a]) for a in AREAS):
         for area in AREAS:
@@ -914,6 +929,9 @@ def main():
             position[area] += 1
             if m.id in equivalent:  # judged already: it compiled then, and no test can catch it
                 m.outcome = "equivalent"
+            elif (m.id, m.original, m.mutated) in done:
+                for name, value in done[m.id, m.original, m.mutated].items():
+                    setattr(m, name, value)
             else:
                 run_mutant(m, cov, tests, baseline, state, args.jobs)
             if m.outcome == "not compiled":

@@ -33,7 +33,8 @@ void write(const std::filesystem::path& path, const std::string& text) {
 }
 
 bool has_warning(const Scene& s, const std::string& part) {
-  return std::any_of(s.warnings().begin(), s.warnings().end(),
+  const std::vector<Diagnostic> warnings = s.warnings();
+  return std::any_of(warnings.begin(), warnings.end(),
                      [&](const Diagnostic& d) { return d.message.find(part) != std::string::npos; });
 }
 

@@ -237,6 +237,15 @@ TEST_CASE("succ: the hyperboloids of JIPCAD's reference, in NOME3's older order,
   CHECK(twice.warnings().size() == 1);
   twice.set_parameter(*twice.find_parameter("hyp.C"), 1.5);
   CHECK(twice.warnings().size() == 1);
+  // A warning that quotes a slider's value follows the slider, there and back.
+  Scene quoting = Scene::from_text(documented_hyperboloid(0), "doc.nom", {.dialect = Dialect::jipcad});
+  const ParameterId a_slider = *quoting.find_parameter("hyp.A");
+  for (const double value : {1.5, 1.0, 1.5}) {
+    quoting.set_parameter(a_slider, value);
+    const std::vector<Diagnostic> warnings = quoting.warnings();
+    REQUIRE(warnings.size() == 1);
+    CHECK_THAT(warnings[0].message, Catch::Contains(value == 1.0 ? "found 1: read" : "found 1.5: read"));
+  }
   const std::vector<std::string> neither =
       test::scene_errors("hyperboloid h (1 1 1 6 2 0) endhyperboloid\ninstance i h endinstance\n");
   REQUIRE(neither.size() == 1);

@@ -129,8 +129,10 @@ void DefinitionContext::add_face(const std::vector<Name>& names, const std::stri
         "a face that names its first vertex again at its end is read as the "
         "closed polygon without the repeat";
     const auto is_note = [&](const Diagnostic& d) { return d.message.starts_with(note); };
-    if (std::none_of(scene_.warnings().begin(), scene_.warnings().end(), is_note))
-      warning(at, std::string(note) + " (face '" + face_name + "' here, and every such face in this file)");
+    // It is about the text, not a value: the scene keeps it once for the file.
+    if (std::none_of(scene_.warnings_.begin(), scene_.warnings_.end(), is_note))
+      scene_.add_warning(
+          at, std::string(note) + " (face '" + face_name + "' here, and every such face in this file)");
   }
   piece_.soup.note_origin(scene_.where(at));
   piece_.add_face(corners, face_name);
@@ -146,6 +148,11 @@ void DefinitionContext::add_rim(const Name& name, const std::vector<Name>& verti
 
 Color DefinitionContext::surface_color(const Name& surface) {
   return scene_.surface_color(surface, reads_);
+}
+
+void DefinitionContext::warning(SourceLocation at, std::string message) {
+  Diagnostic d{Severity::warning, scene_.file(), at, std::move(message)};
+  if (std::find(warnings_.begin(), warnings_.end(), d) == warnings_.end()) warnings_.push_back(std::move(d));
 }
 
 void DefinitionContext::error(SourceLocation at, std::string message) {

@@ -55,7 +55,9 @@ class DefinitionContext : public DefinitionScope {
   Index vertex(const Name& name);
   // Where a named vertex is, without adding it to the piece (a sweep reads its curves' points so).
   std::optional<Vec3> position(const Name& name);
-  void warning(SourceLocation at, std::string message) const { scene_.add_warning(at, std::move(message)); }
+  // A warning about the values this evaluation read; the next evaluation of the placement replaces it.
+  void warning(SourceLocation at, std::string message);
+  const std::vector<Diagnostic>& warnings() const { return warnings_; }
   // A face over named vertices, made by the statement at `at`; left out when one of them is unknown.
   void add_face(const std::vector<Name>& names, const std::string& face_name,
                 const std::optional<Name>& surface, SourceLocation at);
@@ -76,6 +78,7 @@ class DefinitionContext : public DefinitionScope {
  private:
   ParameterReads& reads_;
   std::vector<Diagnostic>& errors_;
+  std::vector<Diagnostic> warnings_;
   Piece piece_;
   std::unordered_map<std::string, Index> local_;  // "p:NAME" (a point) or "r:NAME" (a reference) -> vertex
   std::vector<Scene::VertexRef> copied_from_;     // one per vertex, while is_copy_only_

@@ -102,22 +102,27 @@ std::optional<Color> Scene::placement_color(Index placement, ParameterReads& rea
   return std::nullopt;
 }
 
-Piece Scene::definition_piece(const Placement& p, ParameterReads& reads, std::vector<Diagnostic>& errors,
-                              std::vector<VertexRef>& copied_from) {
-  DefinitionContext context(*this, reads, errors);
+void Scene::evaluate_definition(const Placement& p, Evaluated& out, std::vector<Diagnostic>& errors) {
+  DefinitionContext context(*this, out.reads, errors);
+  const auto finish = [&] {
+    out.copied_from = context.copied_from();
+    if (out.copied_from.size() != context.piece().soup.num_vertices()) out.copied_from.clear();
+    out.warnings = context.warnings();
+    out.piece = std::move(context.piece());
+  };
   if (p.target.kind != consolidated_kind) {
     const StatementKind& kind = statement_kinds()[p.target.kind];
-    Piece piece = kind.evaluate(context, p.target.index);
+    context.piece() = kind.evaluate(context, p.target.index);
+    PolygonSoup& soup = context.piece().soup;
     // A generator's faces all come from its statement; faces over named vertices noted their own.
-    if (piece.soup.face_origins.empty() && piece.soup.num_faces() > 0) {
+    if (soup.face_origins.empty() && soup.num_faces() > 0) {
       std::vector<DeclaredName> names;
       kind.declare(ast_, p.target.kind, names);
       for (const DeclaredName& d : names)
-        if (d.decl == p.target.index) piece.soup.face_origins.push_back({0, where(d.name->location)});
+        if (d.decl == p.target.index) soup.face_origins.push_back({0, where(d.name->location)});
     }
-    copied_from = context.copied_from();
-    if (copied_from.size() != piece.soup.num_vertices()) copied_from.clear();
-    return piece;
+    finish();
+    return;
   }
   const size_t first_error = errors.size();
   for (size_t i = 0; i < ast_.consolidated_faces.size(); ++i)
@@ -129,21 +134,19 @@ Piece Scene::definition_piece(const Placement& p, ParameterReads& reads, std::ve
     for (FaceOrigin& o : context.piece().soup.face_origins)
       o.where = consolidated_file_ + o.where.substr(ast_.file.size());
   }
-  copied_from = context.copied_from();
-  if (copied_from.size() != context.piece().soup.num_vertices()) copied_from.clear();
-  return std::move(context.piece());
+  finish();
 }
 
-Piece Scene::evaluate_placement(Index placement, ParameterReads& reads, std::vector<Diagnostic>& errors,
-                                std::vector<VertexRef>& copied_from) {
+Scene::Evaluated Scene::evaluate_placement(Index placement, std::vector<Diagnostic>& errors) {
   ++placement_evaluations_;
-  reads.clear();
-  copied_from.clear();
+  Evaluated out;
+  ParameterReads& reads = out.reads;
   Placement& p = placements_[placement];
   try {
     const glm::dmat4 m = world_matrix(placement, reads);
     const std::optional<Color> color = placement_color(placement, reads);
-    Piece piece = definition_piece(p, reads, errors, copied_from);
+    evaluate_definition(p, out, errors);
+    Piece& piece = out.piece;
     place_points(piece.soup.positions, m);
     p.colors_own_faces = piece.has_face_colors();
     p.color = color;
@@ -160,15 +163,15 @@ Piece Scene::evaluate_placement(Index placement, ParameterReads& reads, std::vec
         if (!r.color) r.color = color;
     }
     sort_unique(reads);
-    return piece;
+    return out;
   } catch (const EvaluationError& e) {
     errors.push_back(located(e.where(), e.what()));
   }
   sort_unique(reads);
-  return {};
+  return {{}, std::move(reads), {}, {}};
 }
 
-bool Scene::move_vertices(Index placement, Buffer<Vec3>& previous) {
+bool Scene::move_vertices(Index placement, Moved& previous) {
   Placement& p = placements_[placement];
   if (p.target.kind == consolidated_kind || p.references || p.world.topology_key == 0) return false;
   const StatementKind& kind = statement_kinds()[p.target.kind];
@@ -185,7 +188,8 @@ bool Scene::move_vertices(Index placement, Buffer<Vec3>& previous) {
         moved.positions.size() != p.world.soup.positions.size())
       return false;
     place_points(moved.positions, m);
-    previous = std::exchange(p.world.soup.positions, std::move(moved.positions));
+    previous.positions = std::exchange(p.world.soup.positions, std::move(moved.positions));
+    previous.warnings = std::exchange(p.warnings, context.warnings());
   } catch (const EvaluationError&) {
     return false;
   } catch (const BudgetError&) {
@@ -197,7 +201,7 @@ bool Scene::move_vertices(Index placement, Buffer<Vec3>& previous) {
   return true;
 }
 
-bool Scene::move_copied_vertices(Index placement, Buffer<Vec3>& previous) {
+bool Scene::move_copied_vertices(Index placement, Moved& previous) {
   Placement& p = placements_[placement];
   // Copying positions would keep the colours of faces whose own surfaces may read the slider.
   if (p.copied_from.empty() || p.colors_own_faces || p.copied_from.size() != p.world.soup.positions.size())
@@ -222,7 +226,8 @@ bool Scene::move_copied_vertices(Index placement, Buffer<Vec3>& previous) {
   for (Index s : sources) reads.insert(reads.end(), placements_[s].reads.begin(), placements_[s].reads.end());
   sort_unique(reads);
   p.reads = std::move(reads);
-  previous = std::exchange(p.world.soup.positions, std::move(moved));
+  previous.positions = std::exchange(p.world.soup.positions, std::move(moved));
+  previous.warnings = p.warnings;
   ++vertex_moves_;
   return true;
 }
@@ -274,21 +279,21 @@ std::optional<std::string> Scene::evaluate_all(const std::vector<Index>& placeme
   for (const bool is_referencing : {false, true}) {
     for (Index i : placements) {
       if (placements_[i].references != is_referencing) continue;
-      ParameterReads reads;
-      std::vector<VertexRef> copied_from;
-      Piece piece;
+      Evaluated evaluated;
       try {
-        piece = evaluate_placement(i, reads, errors, copied_from);
+        evaluated = evaluate_placement(i, errors);
       } catch (const BudgetError& e) {
         // A statement refused its piece before making it (DefinitionContext::expect_faces).
         return std::string(e.what());
       }
       Placement& p = placements_[i];
-      if (!is_referencing && is_vertex_index_current_ && piece.soup.vertex_names != p.world.soup.vertex_names)
+      if (!is_referencing && is_vertex_index_current_ &&
+          evaluated.piece.soup.vertex_names != p.world.soup.vertex_names)
         is_vertex_index_current_ = false;
-      p.world = std::move(piece);
-      p.reads = std::move(reads);
-      p.copied_from = std::move(copied_from);
+      p.world = std::move(evaluated.piece);
+      p.reads = std::move(evaluated.reads);
+      p.copied_from = std::move(evaluated.copied_from);
+      p.warnings = std::move(evaluated.warnings);
       if (auto over = over_budget(i)) return over;
     }
   }

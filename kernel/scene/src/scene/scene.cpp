@@ -38,6 +38,14 @@ void Scene::add_warning(SourceLocation at, std::string message) const {
   if (std::none_of(warnings_.begin(), warnings_.end(), is_same)) warnings_.push_back(std::move(d));
 }
 
+std::vector<Diagnostic> Scene::warnings() const {
+  std::vector<Diagnostic> all = warnings_;
+  for (const Placement& p : placements_)
+    for (const Diagnostic& w : p.warnings)
+      if (std::find(all.begin(), all.end(), w) == all.end()) all.push_back(w);
+  return all;
+}
+
 Scene Scene::from_text(std::string_view text, const std::string& file, const SceneOptions& options) {
   Diagnostics diagnostics(file);
   SceneAst ast = parse_nome(text, diagnostics, {options.dialect, {}});

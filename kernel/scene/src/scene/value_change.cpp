@@ -21,7 +21,7 @@ std::optional<std::string> ValueChange::reevaluate(std::vector<Diagnostic>& erro
   for (Index i = 0; i < scene_.placements_.size(); ++i) {
     const Scene::Placement& p = scene_.placements_[i];
     if (!scene_.is_leaf(p) || !std::binary_search(p.reads.begin(), p.reads.end(), parameter_)) continue;
-    Buffer<Vec3> previous;
+    Scene::Moved previous;
     if (p.references)
       copies_.push_back(i);
     else if (scene_.move_vertices(i, previous))
@@ -39,7 +39,8 @@ std::optional<std::string> ValueChange::remake(const std::vector<Index>& placeme
   const size_t first = remade_.size();
   for (Index i : placements) {
     const Scene::Placement& p = scene_.placements_[i];
-    remade_.push_back({i, p.world, p.reads, p.copied_from, p.color, p.is_mirrored, p.colors_own_faces});
+    remade_.push_back(
+        {i, p.world, p.reads, p.copied_from, p.color, p.is_mirrored, p.colors_own_faces, p.warnings});
   }
   auto over_budget = scene_.evaluate_all(placements, errors);
   // A placement made again may still have only moved (a generator with no positions of its own).
@@ -56,7 +57,7 @@ std::vector<Index> ValueChange::copies_to_remake() {
     const bool has_new_source = std::any_of(sources.begin(), sources.end(), [&](const Scene::VertexRef& ref) {
       return std::find(new_topology_.begin(), new_topology_.end(), ref.placement) != new_topology_.end();
     });
-    Buffer<Vec3> previous;
+    Scene::Moved previous;
     if (!has_new_source && scene_.move_copied_vertices(i, previous))
       moved_.emplace_back(i, std::move(previous));
     else
@@ -68,7 +69,10 @@ std::vector<Index> ValueChange::copies_to_remake() {
 void ValueChange::roll_back() {
   scene_.values_[parameter_.index()] = old_value_;
   if (scene_.parameters_.contains(parameter_)) scene_.parameters_[parameter_].value = old_value_;
-  for (auto& [i, previous] : moved_) scene_.placements_[i].world.soup.positions = std::move(previous);
+  for (auto& [i, previous] : moved_) {
+    scene_.placements_[i].world.soup.positions = std::move(previous.positions);
+    scene_.placements_[i].warnings = std::move(previous.warnings);
+  }
   for (Kept& kept : remade_) {
     Scene::Placement& p = scene_.placements_[kept.placement];
     p.world = std::move(kept.world);
@@ -77,6 +81,7 @@ void ValueChange::roll_back() {
     p.color = kept.color;
     p.is_mirrored = kept.is_mirrored;
     p.colors_own_faces = kept.colors_own_faces;
+    p.warnings = std::move(kept.warnings);
   }
   scene_.is_vertex_index_current_ = false;
 }

@@ -37,6 +37,7 @@ class ValueChange {
     std::optional<Color> color;
     bool is_mirrored;
     bool colors_own_faces;
+    std::vector<Diagnostic> warnings;
   };
 
   void set(double value);
@@ -50,7 +51,7 @@ class ValueChange {
   ParameterId parameter_;
   double old_value_;
   std::vector<Index> copies_;  // leaves that copy other placements' vertices, done after their sources
-  std::vector<std::pair<Index, Buffer<Vec3>>> moved_;  // with their previous positions
+  std::vector<std::pair<Index, Scene::Moved>> moved_;  // with their previous positions and warnings
   std::vector<Kept> remade_;
   std::vector<Index> new_topology_;  // remade placements whose faces changed
 };

@@ -26,6 +26,7 @@ struct Diagnostic {
   SourceLocation location;
   std::string message;
 
+  bool operator==(const Diagnostic&) const = default;
   // `file:line:col`
   std::string place() const;
   std::string to_string() const;

@@ -133,7 +133,9 @@ class Scene {
 
   const std::string& file() const { return ast_.file; }
   const SceneAst& ast() const { return ast_; }
-  const std::vector<Diagnostic>& warnings() const { return warnings_; }
+  // The file's warnings, then what evaluating its placements now warns of (a value read in another order,
+  // a sweep's inexact join), each once.
+  std::vector<Diagnostic> warnings() const;
 
   // Which spelling the text was read in, and what decided it.
   const DialectChoice& dialect() const { return ast_.dialect; }
@@ -232,6 +234,20 @@ class Scene {
     std::optional<Color> color;     // the instance colour its faces took
     bool is_mirrored = false;       // its world matrix reverses its faces
     bool colors_own_faces = false;  // its definition gives faces colours (a face's own surface)
+    // What its last evaluation warned of: they depend on values, so each evaluation replaces them.
+    std::vector<Diagnostic> warnings;
+  };
+  // A placement's piece in world space and what its evaluation found on the way.
+  struct Evaluated {
+    Piece piece;
+    ParameterReads reads;
+    std::vector<VertexRef> copied_from;
+    std::vector<Diagnostic> warnings;
+  };
+  // What moving a placement's vertices replaced.
+  struct Moved {
+    Buffer<Vec3> positions;
+    std::vector<Diagnostic> warnings;
   };
   Scene() = default;
   // instance_colors.cpp: the placement of an instance path (throws InvalidInputError for none).
@@ -249,7 +265,7 @@ class Scene {
   Diagnostic located(SourceLocation at, std::string message) const;
   // "file:line:col" of a place in the scene's text, for the origins of faces.
   std::string where(SourceLocation at) const;
-  // A warning found while evaluating (a sweep's inexact join), kept once however often it is evaluated.
+  // A warning about the text itself (a name defined again), kept once however often it is found.
   void add_warning(SourceLocation at, std::string message) const;
 
   // instance_expansion.cpp: the placements of the instance tree, counted against the budget first.
@@ -270,10 +286,8 @@ class Scene {
   bool is_leaf(const Placement& p) const { return !is_group(p.target); }
 
   // placement_evaluation.cpp: one placement's piece in world space, and the passes over many.
-  Piece evaluate_placement(Index placement, ParameterReads& reads, std::vector<Diagnostic>& errors,
-                           std::vector<VertexRef>& copied_from);
-  Piece definition_piece(const Placement& p, ParameterReads& reads, std::vector<Diagnostic>& errors,
-                         std::vector<VertexRef>& copied_from);
+  Evaluated evaluate_placement(Index placement, std::vector<Diagnostic>& errors);
+  void evaluate_definition(const Placement& p, Evaluated& out, std::vector<Diagnostic>& errors);
   glm::dmat4 world_matrix(Index placement, ParameterReads& reads) const;
   // The instance statement's own transforms, in order, as one matrix.
   glm::dmat4 instance_matrix(const InstanceDecl& decl, ParameterReads& reads) const;
@@ -284,12 +298,12 @@ class Scene {
   std::optional<std::string> evaluate_all(const std::vector<Index>& placements,
                                           std::vector<Diagnostic>& errors);
   // Moves a placement's vertices alone when its generator tells its positions and its topology is unchanged;
-  // hands back the previous positions. False: the placement must be evaluated whole.
-  bool move_vertices(Index placement, Buffer<Vec3>& previous);
+  // hands back the previous positions and warnings. False: the placement must be evaluated whole.
+  bool move_vertices(Index placement, Moved& previous);
   // The same for a placement whose vertices are all copies of other placements' (saved faces over placed
   // vertices) and whose faces take no colour of their own: copies their positions again. Its sources
   // have moved already; none of them is remade.
-  bool move_copied_vertices(Index placement, Buffer<Vec3>& previous);
+  bool move_copied_vertices(Index placement, Moved& previous);
 
   // vertex_names.cpp: names by unique suffix, indexed on the first lookup after they changed (a scene
   // that looks no vertex up by name, a sweep's, never pays for indexing its hundred thousand names).
