@@ -92,7 +92,6 @@ void MeshBuffers::update_positions(const DisplayPositions& positions) {
   write_array<PackedNormal>(GL_ARRAY_BUFFER, buffers_[1], 0, positions.vertex_normals);
   write_array<PackedNormal>(GL_ARRAY_BUFFER, buffers_[1], t.num_vertices, positions.extra_normals);
   face_normals_.write(positions.face_normals.data(), positions.face_normals.size());
-  bounds_ = positions.bounds;
   are_edge_points_stale_ = true;
 }
 

@@ -50,7 +50,6 @@ class MeshBuffers {
   GLuint face_normal_texture() const { return face_normals_.id(); }
   // These segments of the topology's, over the current positions.
   SegmentSource edges(SegmentRange range) const { return {edge_vao_, buffers_[4], edge_points(), range}; }
-  const BoundingBox& bounds() const { return bounds_; }
 
  private:
   GLuint edge_points() const;
@@ -66,7 +65,6 @@ class MeshBuffers {
   TableTexture edge_points_;
   mutable bool are_edge_points_stale_ = true;
   bool has_face_colors_ = false, has_selection_ = false;
-  BoundingBox bounds_;
 };
 
 }  // namespace nome::render

@@ -119,6 +119,8 @@ class Window : private ScriptHost {
   void draw_prompts();
   // window_tools.cpp: the tools asked in their order
   void paint_faces();
+  // Writes the stage on screen (as a tool places it for export); throws nome::Error when it cannot.
+  void write_shown_mesh(const std::filesystem::path& path);
   bool has_unsaved_changes() const;
   bool is_any_tool_busy() const;
   void draw_tool_sections(ToolSide side);
@@ -160,12 +162,13 @@ class Window : private ScriptHost {
     pending_screenshot_ = path;
     is_screenshot_of_model_ = false;
   }
-  void export_mesh(const std::filesystem::path& path) override;
+  bool export_mesh(const std::filesystem::path& path) override;
   void answer_recovery(bool restore) override;
   void set_parameter(const std::string& name, double value) override { sessions_.set_parameter(name, value); }
   void save(const std::filesystem::path& path) override { sessions_.save(path); }
   void set_subdivision(double levels) override;
   void set_offset(double distance) override;
+  void set_display_color(const std::string& name, glm::vec3 color) override;
   void apply_setting(const std::string& name, const std::string& value) override;
   void quit() override { should_close_ = true; }
 

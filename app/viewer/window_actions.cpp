@@ -225,7 +225,17 @@ void Window::set_view(double azimuth, double elevation) {
   frame_all();
 }
 
-void Window::export_mesh(const std::filesystem::path& path) {
+bool Window::export_mesh(const std::filesystem::path& path) {
+  try {
+    write_shown_mesh(path);
+    return true;
+  } catch (const std::exception& e) {
+    log_.error(e.what());
+    return false;
+  }
+}
+
+void Window::write_shown_mesh(const std::filesystem::path& path) {
   const Mesh* mesh = stage_.shown_mesh();
   if (!mesh) throw InvalidInputError("export: nothing is shown");
   const std::string ext = lower_extension(path);
@@ -267,6 +277,24 @@ void Window::set_offset(double distance) {
   }
   settings.offset_distance = distance;
   if (settings.stage != Stage::subdivided_offset) settings.stage = Stage::offset;
+}
+
+void Window::set_display_color(const std::string& name, glm::vec3 color) {
+  if (name == "default") {
+    display_.front_color = color;
+  } else if (name == "back-faces") {
+    display_.back_color = color;
+  } else if (name == "selected") {
+    display_.selection_color = color;
+    refresh_selection();
+  } else if (name == "background") {
+    display_.background = glm::vec4(color, 1.0f);
+  } else if (name == "rim-lines") {
+    display_.rim_color = color;
+  } else {
+    (name == "temporary" ? edit_colors_.temporary : edit_colors_.consolidated) = color;
+    paint_faces();
+  }
 }
 
 void Window::apply_setting(const std::string& name, const std::string& value) {

@@ -187,13 +187,9 @@ void Window::draw_browser() {
     request_open(*chosen);
   else if (browser_purpose_ == Action::save_as) {
     if (sessions_.save_logged(*chosen)) platform_.offer_saved_file(*chosen);
-  } else
-    try {
-      export_mesh(*chosen);
-      platform_.offer_saved_file(*chosen);
-    } catch (const std::exception& e) {
-      log_.error(e.what());
-    }
+  } else if (export_mesh(*chosen)) {
+    platform_.offer_saved_file(*chosen);
+  }
 }
 
 }  // namespace nome::viewer

@@ -111,3 +111,52 @@ TEST_CASE("the panels open light and the theme action darkens them", "[app][rend
   CHECK(sidebar_brightness(render::read_png(dir + "/light.png")) > 200);
   CHECK(sidebar_brightness(render::read_png(dir + "/dark.png")) < 80);
 }
+
+// The Look panel's colours are steps of the undo history: a script changes one as the panel would, and
+// undo and redo put it back and again.
+TEST_CASE("a display colour is one undo step: background and default colour changed, undone and redone",
+          "[app][render]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_display_colors");
+  const std::string script = write_script(
+      dir, "display-color background 0 0 0\nscreenshot " + dir + "/black.png\naction undo\nscreenshot " +
+               dir + "/undone.png\naction redo\nscreenshot " + dir +
+               "/redone.png\ndisplay-color default 1 0 0\nscreenshot " + dir +
+               "/red.png\naction undo\nscreenshot " + dir + "/gold.png\nquit\n");
+  const auto r = run_viewer(assets + "cube.obj --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto shot = [&](const char* name) { return render::read_png(dir + "/" + name + ".png"); };
+  CHECK(count_pixels(shot("black"), 0, 0, 0, 0) > 100000);
+  CHECK(count_pixels(shot("undone"), 0, 0, 0, 0) < 30000);  // the panels' text
+  CHECK(count_pixels(shot("undone"), 255, 255, 255, 0) > 100000);
+  CHECK(count_pixels(shot("redone"), 0, 0, 0, 0) > 100000);
+  // The cube's lit faces: red while the default colour is red, gold again after undo.
+  const auto reddish = [](const render::Image& image) {
+    int count = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const auto* p = image.pixel(x, y);
+        count += p[0] > 80 && p[1] < 20 && p[2] < 20;
+      }
+    return count;
+  };
+  CHECK(reddish(shot("red")) > 5000);
+  CHECK(reddish(shot("gold")) < 100);
+}
+
+// An export the viewer cannot write says why in the log and fails the script's line; the rest still runs.
+TEST_CASE("an export to a file the viewer cannot write is logged with the reason", "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_export_refused");
+  const std::string script = write_script(dir, "export " + dir + "/cube.xyz\nexport " + dir +
+                                                   "/missing/cube.stl\nexport " + dir + "/cube.stl\nquit\n");
+  const auto r = run_viewer(assets + "cube.obj --script " + script);
+  INFO(r.err);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("error: export: the file must end in .stl, .obj, .glb or .ply, found '" +
+                                    dir + "/cube.xyz'"));
+  CHECK_THAT(r.err, Catch::Contains("script.txt:1: the command failed"));
+  CHECK_THAT(r.err,
+             Catch::Contains("missing/cube.stl") && Catch::Contains("script.txt:2: the command failed"));
+  CHECK_FALSE(r.err.find("script.txt:3:") != std::string::npos);
+  CHECK(std::filesystem::exists(dir + "/cube.stl"));
+}

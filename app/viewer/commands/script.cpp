@@ -49,6 +49,7 @@ const Syntax syntaxes[] = {
     {"set", ScriptCommand::Kind::set, 1, 1, "set BANK_PARAM VALUE"},
     {"mode", ScriptCommand::Kind::mode, 1, 0, "mode vertex|face|border|border-partial|edge|instance"},
     {"color", ScriptCommand::Kind::color, 0, 3, "color R G B (0..1)"},
+    {"display-color", ScriptCommand::Kind::display_color, 1, 3, "display-color NAME R G B (0..1)"},
     {"click", ScriptCommand::Kind::click, 0, 2, "click X Y (window pixels)"},
     {"double-click", ScriptCommand::Kind::double_click, 0, 2, "double-click X Y (window pixels)"},
     {"key", ScriptCommand::Kind::key, 1, 0, "key LABEL (W, Ctrl+Z, F1, ...)"},
@@ -77,6 +78,8 @@ const char* const recovery_answers[] = {"restore", "discard"};
 const char* const settings[] = {"creases", "smooth-triangles", "border", "sharpness"};
 const char* const unsaved_answers[] = {"save", "discard", "cancel"};
 const char* const scrolled_panels[] = {"controls", "parameters", "log"};
+const char* const display_colors[] = {"default",   "back-faces", "selected",    "background",
+                                      "rim-lines", "temporary",  "consolidated"};
 
 template <typename List>
 bool is_one_of(const std::string& word, const List& list) {
@@ -98,7 +101,25 @@ std::string expected_word(const ScriptCommand& command) {
     return "creases, smooth-triangles, border or sharpness";
   if (command.kind == Kind::prompt && !is_one_of(word, unsaved_answers)) return "save, discard or cancel";
   if (command.kind == Kind::scroll && !is_one_of(word, scrolled_panels)) return "controls, parameters or log";
+  if (command.kind == Kind::display_color && !is_one_of(word, display_colors))
+    return "default, back-faces, selected, background, rim-lines, temporary or consolidated";
   return {};
+}
+
+// A colour's components are fractions of full brightness; anything else is a typing mistake. The first
+// number outside 0..1, if any.
+const Word* outside_unit_range(const ScriptCommand& command, const std::vector<Word>& words, int word_count) {
+  using Kind = ScriptCommand::Kind;
+  if (command.kind != Kind::color && command.kind != Kind::display_color) return nullptr;
+  for (std::size_t i = 0; i < command.numbers.size(); ++i)
+    if (!(command.numbers[i] >= 0.0 && command.numbers[i] <= 1.0)) return &words[1 + word_count + i];
+  return nullptr;
+}
+
+std::string command_words() {
+  std::string list;
+  for (const Syntax& s : syntaxes) list += std::string(list.empty() ? "" : ", ") + s.word;
+  return list;
 }
 
 }  // namespace
@@ -108,6 +129,8 @@ const char* script_synopsis() {
          "  set BANK_PARAM VALUE      move a slider\n"
          "  mode vertex|face|border|border-partial|edge|instance\n"
          "  color R G B               give the selected instances this colour (0..1 each)\n"
+         "  display-color NAME R G B  a colour of the Look panel: default, back-faces, selected,\n"
+         "                            background, rim-lines, temporary or consolidated\n"
          "  click X Y                 left click at window pixel (X, Y), origin top-left\n"
          "  double-click X Y          move the orbit centre to the surface under pixel (X, Y)\n"
          "  key LABEL                 press a key of the help overlay (W, S, X, Ctrl+Z, ...)\n"
@@ -154,12 +177,7 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     for (const Syntax& s : syntaxes)
       if (words[0].text == s.word) syntax = &s;
     if (!syntax) {
-      fail(words[0].column,
-           "expected a command (set, mode, color, click, double-click, key, action, subdiv, offset, setting, "
-           "view, screenshot, save, export, recover, drop, prompt, layout, scroll, state, text-set, "
-           "log-click, "
-           "quit), found '" +
-               words[0].text + "'");
+      fail(words[0].column, "expected a command (" + command_words() + "), found '" + words[0].text + "'");
       continue;
     }
     const std::size_t wanted = 1 + syntax->words + syntax->numbers;
@@ -187,6 +205,10 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     if (!is_valid) continue;
     if (const std::string expected = expected_word(command); !expected.empty()) {
       fail(words[1].column, "expected " + expected + ", found '" + command.words[0] + "'");
+      continue;
+    }
+    if (const Word* w = outside_unit_range(command, words, syntax->words)) {
+      fail(w->column, "expected a colour component in 0..1, found '" + w->text + "'");
       continue;
     }
     commands.push_back(std::move(command));

@@ -16,6 +16,7 @@ struct ScriptCommand {
     key,
     action,
     color,
+    display_color,
     subdiv,
     offset,
     setting,

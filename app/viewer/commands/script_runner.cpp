@@ -93,8 +93,7 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
       host.take_screenshot(c.words[0]);
       return true;
     case Kind::export_file:
-      host.export_mesh(c.words[0]);
-      return true;
+      return host.export_mesh(c.words[0]);
     case Kind::recover:
       host.answer_recovery(c.words[0] == "restore");
       return true;
@@ -109,6 +108,9 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
       return true;
     case Kind::offset:
       host.set_offset(c.numbers[0]);
+      return true;
+    case Kind::display_color:
+      host.set_display_color(c.words[0], glm::vec3(c.numbers[0], c.numbers[1], c.numbers[2]));
       return true;
     case Kind::setting:
       host.apply_setting(c.words[0], c.words[1]);

@@ -29,12 +29,15 @@ class ScriptHost {
   virtual bool run_action(Action action) = 0;
   virtual void set_view(double azimuth, double elevation) = 0;
   virtual void take_screenshot(const std::filesystem::path& path) = 0;
-  virtual void export_mesh(const std::filesystem::path& path) = 0;
+  // False, with the reason in the log, when the file cannot be written.
+  virtual bool export_mesh(const std::filesystem::path& path) = 0;
   virtual void answer_recovery(bool restore) = 0;
   virtual void set_parameter(const std::string& name, double value) = 0;
   virtual void save(const std::filesystem::path& path) = 0;
   virtual void set_subdivision(double levels) = 0;
   virtual void set_offset(double distance) = 0;
+  // A colour of the Look panel by its script name (script.cpp's display-color names), as if picked there.
+  virtual void set_display_color(const std::string& name, glm::vec3 color) = 0;
   // A control of the Stage or Edit section (script `setting NAME VALUE`); throws InvalidInputError for a
   // value it does not take.
   virtual void apply_setting(const std::string& name, const std::string& value) = 0;

@@ -23,8 +23,14 @@ class OwnImGuiContext {
   ImGuiContext* context_;
 };
 
-// The text one frame of `draw` puts on screen, as ImGui's log captures it, drawn inside a window of an
-// OwnImGuiContext: what a user reads in a panel.
-std::string imgui_text(const std::function<void()>& draw);
+// One frame of `context` (current) with `draw` called inside a window: the text it put on screen, as
+// ImGui's log captures it, up to the end of the first window of its own that `draw` opens. ImGui draws
+// every item while it logs, those scrolled out of view too: where a panel is scrolled is read from the
+// window (imgui_internal.h), not from this text.
+std::string imgui_frame(const OwnImGuiContext& context, const std::function<void()>& draw);
+
+// The text the last of `frames` frames of `draw` puts on screen, in an OwnImGuiContext of its own: what a
+// user reads in a panel (more frames: once scrolling and auto-sizing have settled).
+std::string imgui_text(const std::function<void()>& draw, int frames = 1);
 
 }  // namespace nome::test

@@ -86,6 +86,7 @@ TEST_CASE("every script command reads its words and numbers, and refuses one arg
       {"set b_n 6", Kind::set, {"b_n"}, {6}},
       {"mode edge", Kind::mode, {"edge"}, {}},
       {"color 1 0.5 0", Kind::color, {}, {1, 0.5, 0}},
+      {"display-color background 0 0 0.25", Kind::display_color, {"background"}, {0, 0, 0.25}},
       {"click 10 20", Kind::click, {}, {10, 20}},
       {"double-click 10 20", Kind::double_click, {}, {10, 20}},
       {"key Ctrl+Z", Kind::key, {"Ctrl+Z"}, {}},
@@ -115,5 +116,37 @@ TEST_CASE("every script command reads its words and numbers, and refuses one arg
     const std::string line(c.line);
     const std::string shorter = line.substr(0, line.rfind(' '));
     CHECK_THROWS_AS(parse_script(shorter + "\n", "s.txt"), nome::Error);
+  }
+}
+
+TEST_CASE("a colour takes components in 0..1 and display-color a colour of the Look panel", "[app]") {
+  for (const char* name :
+       {"default", "back-faces", "selected", "background", "rim-lines", "temporary", "consolidated"}) {
+    INFO(name);
+    CHECK(parse_script(std::string("display-color ") + name + " 0.2 0.4 0.6\n", "s.txt").size() == 1);
+  }
+  CHECK_THROWS_WITH(
+      parse_script("display-color sky 0 0 1\n", "s.txt"),
+      Catch::Contains("s.txt:1:15: expected default, back-faces, selected, background, rim-lines, "
+                      "temporary or consolidated, found 'sky'"));
+  CHECK_THROWS_WITH(parse_script("display-color background 0 1.5 0\n", "s.txt"),
+                    Catch::Contains("s.txt:1:28: expected a colour component in 0..1, found '1.5'"));
+  CHECK_THROWS_WITH(parse_script("color 0 0 -1\n", "s.txt"),
+                    Catch::Contains("s.txt:1:11: expected a colour component in 0..1, found '-1'"));
+}
+
+TEST_CASE("an unknown command is answered with every command there is", "[app]") {
+  try {
+    parse_script("subdivide 2\n", "s.txt");
+    FAIL("the script should have been refused");
+  } catch (const nome::InvalidInputError& e) {
+    const std::string message = e.what();
+    CHECK_THAT(message,
+               Catch::StartsWith("s.txt:1:1: expected a command (set, mode, color, display-color, "));
+    for (const char* word : {"tool", "quit", "log-click", "text-set", "state", "scroll", "layout"}) {
+      INFO(word);
+      CHECK_THAT(message, Catch::Contains(std::string(", ") + word));
+    }
+    CHECK_THAT(message, Catch::EndsWith("found 'subdivide'"));
   }
 }
