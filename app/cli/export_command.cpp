@@ -8,7 +8,6 @@
 #include "cli/print_check_input.hpp"
 #include "cli/print_setup_arguments.hpp"
 #include "cli/progress_bar.hpp"
-#include "nome/scene/save_nome.hpp"
 
 namespace nome::cli {
 namespace {
@@ -35,18 +34,19 @@ std::vector<OptionSpec> export_options() {
 // The scene's kept print preparation: that of the one scene read, if any.
 std::optional<PrintPlacementOptions> kept_print_setup(const LoadedInput& loaded) {
   if (loaded.scenes.size() != 1) return std::nullopt;
-  return loaded.scenes.front().print_setup();
+  return loaded.scenes.front().scene()->print_setup();
 }
 
 // `-o OUT.nome`: the scene with its slider values and the print preparation asked for.
 void save_scene(LoadedInput& loaded, const Arguments& parsed, const std::filesystem::path& path) {
   if (loaded.scenes.size() != 1 || parsed.positionals().size() != 1)
     throw UsageError("-o OUT.nome saves one scene: give exactly one .nome, .nom or .slf file");
-  scene::Scene& scene = loaded.scenes.front();
+  SceneDocument& document = loaded.scenes.front();
   const PrintPlacementOptions setup =
-      print_setup_argument(parsed, scene.print_setup(), LengthUnit::millimeter);
-  if (!setup.is_identity()) scene.set_print_setup(setup);
-  scene::write_nome(scene, path);
+      print_setup_argument(parsed, document.scene()->print_setup(), LengthUnit::millimeter);
+  if (!setup.is_identity()) document.set_print_setup(setup);
+  document.save_all(path);
+  const scene::Scene& scene = *document.scene();
   std::cerr << "nome: wrote " << path.string() << " (" << scene.parameters().size() << " sliders, "
             << scene.instances().size() << " top-level instances)\n";
 }

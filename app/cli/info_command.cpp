@@ -52,7 +52,7 @@ int info_command(const std::vector<std::string>& args) {
   LoadedInput loaded = run_input(parsed, Stage::subdivided_offset, {}, false);
   const InfoReport info = info_report(loaded);
   const TopologyReport& report = info.report;
-  const std::vector<scene::Scene>& scenes = loaded.scenes;
+  const std::vector<SceneDocument>& scenes = loaded.scenes;
   if (parsed.has("--json")) {
     std::string json = report_json(report);
     // The contract's keys stay as they are; the scenes' sliders and instances ride along, and so does the
@@ -68,7 +68,7 @@ int info_command(const std::vector<std::string>& args) {
     }
     std::cout << json << "}\n";
   } else {
-    for (const scene::Scene& s : scenes) std::cout << scene_text(s);
+    for (const SceneDocument& document : scenes) std::cout << scene_text(document);
     if (info.derived_over_levels > 0)
       std::cout << "(counted on the mesh before the last " << info.derived_over_levels
                 << " subdivision levels: they keep chi, orientability, borders and parts)\n";

@@ -69,10 +69,4 @@ LoadedInput run_input(const Arguments& args, Stage last, const Progress& progres
   return loaded;
 }
 
-Mesh load_input(const Arguments& args, Stage last, std::vector<scene::Scene>* scenes) {
-  LoadedInput loaded = run_input(args, last);
-  if (scenes) *scenes = std::move(loaded.scenes);
-  return loaded.pipeline.take_result();
-}
-
 }  // namespace nome::cli

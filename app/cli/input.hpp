@@ -3,11 +3,11 @@
 #include <vector>
 
 #include "cli/arguments.hpp"
+#include "nome/edit/scene_document.hpp"
 #include "nome/io/obj_tags.hpp"
 #include "nome/mesh/mesh.hpp"
 #include "nome/ops/pipeline.hpp"
 #include "nome/ops/stage.hpp"
-#include "nome/scene/scene.hpp"
 
 namespace nome::cli {
 
@@ -22,7 +22,7 @@ Stage stage_argument(const std::string& name);
 struct LoadedInput {
   Pipeline pipeline;
   PipelineSettings settings;
-  std::vector<scene::Scene> scenes;
+  std::vector<SceneDocument> scenes;
   // When nothing is subdivided: the subdivision options that differ from the defaults, for write_obj to
   // keep.
   ObjSubdivisionTags kept_tags;
@@ -38,10 +38,5 @@ void print_warnings(const std::vector<std::string>& warnings);
 // run_to_last_subdivision).
 LoadedInput run_input(const Arguments& args, Stage last, const Progress& progress = {},
                       bool builds_last_level = true);
-
-// Reads the FILE arguments (several become parts of one mesh) and runs the kernel's pipeline up to
-// `last` with the options' settings; the scenes read (.nome, .slf) come back through `scenes`.
-Mesh load_input(const Arguments& args, Stage last = Stage::subdivided_offset,
-                std::vector<scene::Scene>* scenes = nullptr);
 
 }  // namespace nome::cli

@@ -93,10 +93,10 @@ void apply_obj_tags(const ObjSubdivisionTags& tags, const Arguments& args, Pipel
     settings.creases.smooth_triangles = *tags.smooth_triangles;
 }
 
-void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments& args,
+void apply_scene_stages(const std::vector<SceneDocument>& scenes, const Arguments& args,
                         PipelineSettings& settings) {
-  for (const scene::Scene& s : scenes) {
-    const scene::StageSettings stages = s.stage_settings();
+  for (const SceneDocument& document : scenes) {
+    const scene::StageSettings stages = document.scene()->stage_settings();
     if (stages.subdivision_levels && !args.has("--subdiv"))
       settings.subdivision_levels = std::max(settings.subdivision_levels, *stages.subdivision_levels);
     if (stages.boundary && !args.has("--boundary")) settings.boundary = *stages.boundary;
@@ -105,8 +105,8 @@ void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments
   }
   // After the levels are known: the successor's files weld before they subdivide.
   bool is_welding = false;
-  for (const scene::Scene& s : scenes)
-    is_welding = scene::weld_before_subdividing(s.stage_settings(), settings) || is_welding;
+  for (const SceneDocument& document : scenes)
+    is_welding = scene::weld_before_subdividing(document.scene()->stage_settings(), settings) || is_welding;
   if (is_welding && !args.has("--merge")) std::cerr << "nome: note: " << scene::welding_note << "\n";
 }
 

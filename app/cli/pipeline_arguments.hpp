@@ -3,9 +3,9 @@
 #include <vector>
 
 #include "cli/arguments.hpp"
+#include "nome/edit/scene_document.hpp"
 #include "nome/io/obj_tags.hpp"
 #include "nome/ops/pipeline_settings.hpp"
-#include "nome/scene/scene.hpp"
 
 namespace nome::cli {
 
@@ -21,7 +21,7 @@ PipelineSettings pipeline_settings(const Arguments& args, Stage stage);
 // An OBJ file's OpenSubdiv options (`t interpolateboundary` unless --boundary is given, `t creasemethod`,
 // `t smoothtriangles`).
 void apply_obj_tags(const ObjSubdivisionTags& tags, const Arguments& args, PipelineSettings& settings);
-void apply_scene_stages(const std::vector<scene::Scene>& scenes, const Arguments& args,
+void apply_scene_stages(const std::vector<SceneDocument>& scenes, const Arguments& args,
                         PipelineSettings& settings);
 
 }  // namespace nome::cli

@@ -32,10 +32,10 @@ std::pair<double, double> parse_pair(const std::string& option, const std::strin
 }
 
 // The scenes' render statements where the command line says nothing: the first scene that has one wins.
-void apply_render_defaults(const std::vector<scene::Scene>& scenes, const Arguments& args,
+void apply_render_defaults(const std::vector<SceneDocument>& scenes, const Arguments& args,
                            render::DisplaySettings& display) {
   for (auto it = scenes.rbegin(); it != scenes.rend(); ++it) {
-    const scene::RenderDefaults d = it->render_defaults();
+    const scene::RenderDefaults d = it->scene()->render_defaults();
     if (d.background && !args.has("--background")) display.background = glm::vec4(*d.background, 1.0f);
     if (d.front_color && !args.has("--color")) display.front_color = *d.front_color;
     if (d.back_color && !args.has("--backface-color")) {
@@ -231,10 +231,10 @@ int render_command(const std::vector<std::string>& args) {
   bar.finish();
   apply_render_defaults(loaded.scenes, parsed, options.display);
   for (auto it = loaded.scenes.rbegin(); it != loaded.scenes.rend(); ++it)
-    options.lens = render::scene_lens(it->render_defaults(), options.lens);
+    options.lens = render::scene_lens(it->scene()->render_defaults(), options.lens);
   options.display.shading = render::shown_shading(options.display.shading, loaded.settings.is_smoothing());
-  for (const scene::Scene& scene : loaded.scenes)
-    render::add_rim_segments(scene::scene_rim_lines(scene), options.rims);
+  for (const SceneDocument& document : loaded.scenes)
+    render::add_rim_segments(scene::scene_rim_lines(*document.scene()), options.rims);
   apply_section_argument(parsed, mesh, loaded.settings, options.display);
   const double load_ms = milliseconds(start);
   const auto context_start = Clock::now();

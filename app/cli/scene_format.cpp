@@ -22,8 +22,9 @@ std::string dialect_text(const scene::DialectChoice& d) {
 
 }  // namespace
 
-std::string scene_text(const scene::Scene& scene) {
+std::string scene_text(const SceneDocument& document) {
   using scene::format_number;
+  const scene::Scene& scene = *document.scene();
   std::ostringstream out;
   out << "scene " << scene.file() << "\n";
   out << "  dialect " << dialect_text(scene.dialect()) << "\n";
@@ -41,10 +42,19 @@ std::string scene_text(const scene::Scene& scene) {
     if (!i.geometry.rims.empty()) out << ", " << i.geometry.rims.size() << " rim lines";
     out << "\n";
   }
+  const Document& edits = document.edits();
+  if (!edits.consolidated_faces().empty()) {
+    const PolygonSoup consolidated = edits.consolidated_soup();
+    out << "  consolidated mesh: " << consolidated.num_vertices() << " vertices, " << consolidated.num_faces()
+        << " faces\n";
+  }
+  if (!edits.deleted_faces().empty()) out << "  deleted faces: " << edits.deleted_faces().size() << "\n";
+  if (!edits.sharp_edges().empty()) out << "  sharp edges: " << edits.sharp_edges().size() << "\n";
   return out.str();
 }
 
-std::string scene_json(const scene::Scene& scene) {
+std::string scene_json(const SceneDocument& document) {
+  const scene::Scene& scene = *document.scene();
   std::ostringstream out;
   out << "{\"file\": " << quoted(scene.file()) << ", \"dialect\": " << quoted(dialect_text(scene.dialect()))
       << ", \"banks\": [";
@@ -68,7 +78,12 @@ std::string scene_json(const scene::Scene& scene) {
         << ", \"faces\": " << inst.geometry.soup.num_faces() << ", \"rims\": " << inst.geometry.rims.size()
         << "}";
   }
-  out << "]}";
+  const Document& edits = document.edits();
+  const PolygonSoup consolidated = edits.consolidated_soup();
+  out << "], \"edits\": {\"consolidated_vertices\": " << consolidated.num_vertices()
+      << ", \"consolidated_faces\": " << consolidated.num_faces()
+      << ", \"deleted_faces\": " << edits.deleted_faces().size()
+      << ", \"sharp_edges\": " << edits.sharp_edges().size() << "}}";
   return out.str();
 }
 

@@ -13,7 +13,7 @@
 
 namespace nome::cli {
 
-void apply_overrides(std::vector<scene::Scene>& scenes, const std::vector<std::string>& overrides) {
+void apply_overrides(std::vector<SceneDocument>& scenes, const std::vector<std::string>& overrides) {
   for (const std::string& o : overrides) {
     const size_t eq = o.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -30,10 +30,11 @@ void apply_overrides(std::vector<scene::Scene>& scenes, const std::vector<std::s
       throw UsageError("--set " + name + " expects a number, found '" + text + "'");
     bool found = false;
     std::vector<std::string> known;
-    for (scene::Scene& s : scenes) {
+    for (SceneDocument& document : scenes) {
+      const scene::Scene& s = *document.scene();
       for (const scene::Parameter& p : s.parameters()) known.push_back(p.full_name);
       if (const auto id = s.find_parameter(name)) {
-        s.set_parameter(*id, value);
+        document.set_parameter(*id, value);
         found = true;
       }
     }
@@ -44,7 +45,7 @@ void apply_overrides(std::vector<scene::Scene>& scenes, const std::vector<std::s
 namespace {
 
 scene::SceneOptions scene_options(const Arguments& args) {
-  scene::SceneOptions options{.force = args.has("--force")};
+  scene::SceneOptions options{.force = args.has("--force"), .shows_edits = false};
   if (const auto dialect = args.value("--dialect")) {
     if (*dialect == "2016")
       options.dialect = scene::Dialect::report2016;
@@ -57,10 +58,10 @@ scene::SceneOptions scene_options(const Arguments& args) {
 }
 
 // `--time T` (nome render): the scenes' $time.
-void apply_time(std::vector<scene::Scene>& scenes, const Arguments& args) {
+void apply_time(std::vector<SceneDocument>& scenes, const Arguments& args) {
   if (!args.has("--time")) return;
   const double time = args.double_value("--time", 0.0);
-  for (scene::Scene& s : scenes) s.set_clock(scene::time_parameter, time);
+  for (SceneDocument& document : scenes) document.set_clock(scene::time_parameter, time);
 }
 
 void merge_obj_tags(ObjSubdivisionTags& into, const ObjSubdivisionTags& file) {
@@ -68,6 +69,20 @@ void merge_obj_tags(ObjSubdivisionTags& into, const ObjSubdivisionTags& file) {
   if (file.crease_method) into.crease_method = file.crease_method;
   if (file.smooth_triangles) into.smooth_triangles = file.smooth_triangles;
   for (const std::string& note : file.notes) std::cerr << "nome: note: " << note << "\n";
+}
+
+// The file's edits that the slider values leave without their vertices or faces: left out of the geometry
+// (as the viewer leaves them), each said.
+void warn_unresolved(const SceneDocument& document) {
+  for (const UnresolvedEdit& edit : document.edits().unresolved()) {
+    std::string missing;
+    for (const std::string& name : edit.missing) missing += (missing.empty() ? "" : ", ") + name;
+    std::cerr << "nome: warning: " << document.scene()->file() << ": edit '" << edit.face << "' left out: "
+              << (missing.empty()            ? "its face is gone"
+                  : edit.missing.size() == 1 ? "vertex " + missing + " is gone"
+                                             : "vertices " + missing + " are gone")
+              << " at these slider values\n";
+  }
 }
 
 }  // namespace
@@ -80,7 +95,7 @@ InputFiles read_input_files(const Arguments& args) {
     const std::string ext = lower_extension(file);
     if (is_scene_file(file)) {
       try {
-        input.scenes.push_back(read_scene(file, options));
+        input.scenes.push_back(SceneDocument::from_scene(read_scene(file, options)));
       } catch (const BudgetError& e) {
         throw BudgetError(std::string(e.what()) + "; use --force to expand it anyway");
       }
@@ -101,10 +116,12 @@ InputFiles read_input_files(const Arguments& args) {
                     ".anom after its scene)");
     }
   }
-  for (const scene::Scene& s : input.scenes)
-    for (const scene::Diagnostic& w : s.warnings()) std::cerr << "nome: " << w.to_string() << "\n";
+  for (const SceneDocument& document : input.scenes)
+    for (const scene::Diagnostic& w : document.scene()->warnings())
+      std::cerr << "nome: " << w.to_string() << "\n";
   apply_overrides(input.scenes, args.values("--set"));
   apply_time(input.scenes, args);
+  for (const SceneDocument& document : input.scenes) warn_unresolved(document);
   // A scene's pieces may meet at a point (JIPCAD's examples do); a flat file's polygons must be a manifold.
   auto add_part = [&](const PolygonSoup& soup, const std::string& file, bool is_scene) {
     append_soup(input.geometry.soup, soup);
@@ -112,7 +129,8 @@ InputFiles read_input_files(const Arguments& args) {
     if (!is_scene)
       input.geometry.parts.back().locate_face = [file](Index f) { return locate_face_in_file(file, f); };
   };
-  for (const scene::Scene& s : input.scenes) add_part(s.combined_soup(), s.file(), true);
+  for (const SceneDocument& document : input.scenes)
+    add_part(document.pipeline_input().soup, document.scene()->file(), true);
   for (const auto& [file, soup] : flat) add_part(soup, file, false);
   return input;
 }

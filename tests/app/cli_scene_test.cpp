@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <fstream>
 
 #include "app/cli_support.hpp"
@@ -87,7 +88,11 @@ TEST_CASE("nome info reads .sif (optionally as quads), .slf and .anom on top of 
   NOME_NEEDS_SHARED_EXAMPLES("original");
   const auto anom = run_nome("info " + originals + "kleinbottle.nom " + originals + "kleinbottle_s1.anom");
   CHECK(anom.status == 0);
-  CHECK_THAT(anom.out, Catch::Contains("instance consolidatemesh: 16 vertices, 8 faces"));
+  CHECK_THAT(anom.out, Catch::Contains("consolidated mesh: 16 vertices, 8 faces"));
+  CHECK_THAT(
+      run_nome("info " + originals + "kleinbottle.nom " + originals + "kleinbottle_s1.anom --json").out,
+      Catch::Contains("\"edits\": {\"consolidated_vertices\": 16, \"consolidated_faces\": 8, "
+                      "\"deleted_faces\": 0, \"sharp_edges\": 0}"));
   const auto alone = run_nome("info " + originals + "kleinbottle_s1.anom");
   CHECK(alone.status == 2);
   CHECK_THAT(alone.err, Catch::Contains("an .anom file applies to an open scene"));
@@ -106,4 +111,45 @@ TEST_CASE("merged, the report's corner patches close the funnel cube into one su
   CHECK_THAT(r.out, Catch::Contains(
                         "\"vertices\": 96, \"edges\": 180, \"faces\": 80, \"chi\": -4, \"orientable\": true, "
                         "\"borders\": 6, \"components\": 1"));
+}
+
+// The CLI reads a scene's edits through the viewer's document: the consolidated faces, deleted faces and
+// sharp edges are applied one way, and an edit a --set leaves without its vertices is left out with a
+// warning, as the viewer leaves it out.
+TEST_CASE("nome reads a scene's edits as the viewer does, and says which a slider value leaves out",
+          "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("cli_scene_edits");
+  const std::string file = dir + "/edits.nome";
+  std::ofstream(file) << "bank b\n  set n 6 3 10 1\nendbank\n"
+                         "funnel fun ({expr $b_n} 1 0.5 1) endfunnel\n"
+                         "instance f1 fun endinstance\ninstance f2 fun translate (3 0 0) endinstance\n"
+                         "consolidate\n  consolidateface vertex f1_hc5 endvertex vertex f2_hc0 endvertex "
+                         "vertex f2_hc1 endvertex endconsolidateface\nendconsolidate\n"
+                         "delete face f2_f0 endface enddelete\n";
+  const auto info = run_nome("info " + file);
+  INFO(info.err);
+  REQUIRE(info.status == 0);
+  CHECK_THAT(info.out, Catch::Contains("  consolidated mesh: 3 vertices, 1 faces\n  deleted faces: 1\n"));
+  // Six faces of each funnel, one deleted, one consolidated.
+  CHECK_THAT(info.out, Catch::Contains("faces 12,"));
+  const auto fewer = run_nome("info " + file + " --set b_n=4 --json");
+  INFO(fewer.err);
+  REQUIRE(fewer.status == 0);
+  CHECK_THAT(fewer.err,
+             Catch::Contains("nome: warning: " + file +
+                             ": edit 'edit1' left out: vertex f1_hc5 is gone at these slider values"));
+  CHECK_THAT(fewer.out, Catch::Contains("\"faces\": 7,"));
+  // Saving with -o refuses to lose the edit this value hides, as the viewer's Save does.
+  const auto refused = run_nome("export " + file + " --set b_n=4 -o " + dir + "/saved.nome");
+  CHECK(refused.status == 1);
+  CHECK_THAT(refused.err,
+             Catch::Contains("save: refused, the file would lose 1 edits whose vertices or faces "
+                             "are gone at the current slider values (edit1)"));
+  CHECK_FALSE(std::filesystem::exists(dir + "/saved.nome"));
+  const auto saved = run_nome("export " + file + " --set b_n=7 -o " + dir + "/saved.nome");
+  INFO(saved.err);
+  REQUIRE(saved.status == 0);
+  const auto reread = run_nome("info " + dir + "/saved.nome --set b_n=6");
+  CHECK_THAT(reread.out, Catch::Contains("consolidated mesh: 3 vertices, 1 faces") &&
+                             Catch::Contains("deleted faces: 1") && Catch::Contains("faces 12,"));
 }

@@ -8,7 +8,6 @@
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
 #include "nome/io/sif.hpp"
-#include "nome/scene/save_nome.hpp"
 
 namespace nome::viewer {
 namespace {
@@ -167,16 +166,7 @@ void Session::set_print_setup(std::optional<PrintPlacementOptions> setup) {
 }
 
 void Session::save(const std::filesystem::path& path) {
-  std::vector<std::string> left_out;
-  const scene::SceneEdits edits = document_.saved_edits(&left_out);
-  if (!left_out.empty()) {
-    std::string names;
-    for (const std::string& name : left_out) names += (names.empty() ? "" : ", ") + name;
-    throw InvalidInputError("save: refused, the file would lose " + std::to_string(left_out.size()) +
-                            " edits whose vertices or faces are gone at the current slider values (" + names +
-                            "): move the sliders back until they show, or delete them, then save");
-  }
-  scene::write_nome(*scene(), edits, path);
+  document_.save_all(path);
   path_ = path;
   is_modified_ = false;
 }

@@ -39,11 +39,22 @@ void SceneDocument::set_print_setup(std::optional<PrintPlacementOptions> setup) 
 std::vector<scene::InstanceId> SceneDocument::set_parameter(scene::ParameterId parameter, double value) {
   if (!scene_) throw InvalidInputError("set: flat geometry has no sliders");
   std::vector<scene::InstanceId> changed = scene_->set_parameter(parameter, value);
+  follow_scene_change();
+  return changed;
+}
+
+std::vector<scene::InstanceId> SceneDocument::set_clock(const std::string& name, double value) {
+  if (!scene_) throw InvalidInputError("set " + name + ": flat geometry has no clock");
+  std::vector<scene::InstanceId> changed = scene_->set_clock(name, value);
+  follow_scene_change();
+  return changed;
+}
+
+void SceneDocument::follow_scene_change() {
   if (scene_->last_change_moved_vertices_only())
     document_.move_scene_vertices(scene_->combined_positions());
   else
     document_.set_scene_geometry(scene_->combined_soup());
-  return changed;
 }
 
 std::vector<scene::InstanceId> SceneDocument::set_parameter(const std::string& name, double value) {
@@ -132,6 +143,19 @@ scene::SceneEdits SceneDocument::saved_edits(std::vector<std::string>* left_out)
 std::string SceneDocument::saved_text(std::vector<std::string>* left_out) const {
   const scene::SceneEdits edits = saved_edits(left_out);
   return scene::to_nome_text(*scene_, edits);
+}
+
+void SceneDocument::save_all(const std::filesystem::path& path) const {
+  std::vector<std::string> left_out;
+  const scene::SceneEdits edits = saved_edits(&left_out);
+  if (!left_out.empty()) {
+    std::string names;
+    for (const std::string& name : left_out) names += (names.empty() ? "" : ", ") + name;
+    throw InvalidInputError("save: refused, the file would lose " + std::to_string(left_out.size()) +
+                            " edits whose vertices or faces are gone at the current slider values (" + names +
+                            "): move the sliders back until they show, or delete them, then save");
+  }
+  scene::write_nome(*scene_, edits, path);
 }
 
 std::vector<std::string> SceneDocument::save(const std::filesystem::path& path) const {

@@ -48,6 +48,8 @@ class SceneDocument {
   // (nothing changes then).
   std::vector<scene::InstanceId> set_parameter(scene::ParameterId parameter, double value);
   std::vector<scene::InstanceId> set_parameter(const std::string& name, double value);
+  // Sets the scene's $time or $frame (Scene::set_clock) and resolves the edits again.
+  std::vector<scene::InstanceId> set_clock(const std::string& name, double value);
   // The print preparation saved with the scene (Scene::print_setup). Throws InvalidInputError for flat
   // geometry.
   void set_print_setup(std::optional<PrintPlacementOptions> setup);
@@ -87,9 +89,14 @@ class SceneDocument {
   // Writes saved_text, atomically; the edits and their undo history stay as they are. Returns the edits
   // left out.
   std::vector<std::string> save(const std::filesystem::path& path) const;
+  // What a user's Save does: writes as save() does, unless an edit would be left out; then nothing is
+  // written and InvalidInputError names those edits and what to do.
+  void save_all(const std::filesystem::path& path) const;
 
  private:
   void set_scene(scene::Scene scene);
+  // The edits resolved again over the scene's new geometry: its positions alone when only they moved.
+  void follow_scene_change();
 
   std::optional<scene::Scene> scene_;
   Document document_;
