@@ -81,7 +81,7 @@ int main() {
     start = Clock::now();
     const auto vertex = nome::pick_vertex(mesh, bvh, camera, pixel, 6.0);
     vertex_times.push_back(ms_since(start));
-    if (all.size() > 1000 || (vertex && *vertex >= mesh.num_vertices())) return 1;
+    if (all.size() > 1000 || (vertex && vertex->index() >= mesh.num_vertices())) return 1;
   }
   std::printf("  pick nearest face  median %8.4f ms   p99 %7.4f ms   (target < 0.1 ms; %d of 20000 hit)\n",
               median(nearest_times), percentile(nearest_times, 0.99), hits);

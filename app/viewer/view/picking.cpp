@@ -36,8 +36,9 @@ std::optional<Index> vertex_at(const StageResult& shown, const TriangleBvh& bvh,
                                const ScreenProjection& projection, glm::dvec2 pixel) {
   if (rims.first_id == shown.mesh->num_vertices())
     if (const auto k = pick_rim_vertex(rims.lines, rims.half_sizes, bvh, projection, pixel))
-      return rims.first_id + *k;
-  return pick_vertex(*shown.mesh, bvh, projection, pixel, pick_pixels);
+      return rims.first_id + k->index();
+  if (const auto v = pick_vertex(*shown.mesh, bvh, projection, pixel, pick_pixels)) return v->index();
+  return std::nullopt;
 }
 
 }  // namespace
@@ -47,20 +48,21 @@ std::string select_at(Selection& selection, const StageResult& shown, const Tria
   const Mesh& mesh = *shown.mesh;
   std::string hint;
   if (selection.mode() == SelectionMode::edge) {
-    if (const auto edge = pick_edge(mesh, bvh, projection, pixel, pick_pixels)) {
-      selection.click_edge(*edge);
-      const auto [u, w] = mesh.edge(*edge).vertices;
-      hint =
-          "edge (" + mesh.vertex_label(u) + ", " + mesh.vertex_label(w) + ")" +
-          (mesh.edge_sharpness(*edge) > 0 ? ", sharpness " + sharpness_text(mesh.edge_sharpness(*edge)) + ","
-                                          : "") +
-          (contains(selection.edges(), *edge) ? " selected" : " deselected");
+    if (const auto picked = pick_edge(mesh, bvh, projection, pixel, pick_pixels)) {
+      const Index edge = picked->index();
+      selection.click_edge(edge);
+      const auto [u, w] = mesh.edge(edge).vertices;
+      hint = "edge (" + mesh.vertex_label(u) + ", " + mesh.vertex_label(w) + ")" +
+             (mesh.edge_sharpness(edge) > 0 ? ", sharpness " + sharpness_text(mesh.edge_sharpness(edge)) + ","
+                                            : "") +
+             (contains(selection.edges(), edge) ? " selected" : " deselected");
     }
   } else if (selection.mode() == SelectionMode::face) {
-    if (const auto face = pick_face(bvh, projection, pixel)) {
-      selection.click_face(*face);
-      hint = "face " + mesh.face_label(*face) +
-             (contains(selection.faces(), *face) ? " selected" : " deselected");
+    if (const auto picked = pick_face(bvh, projection, pixel)) {
+      const Index face = picked->index();
+      selection.click_face(face);
+      hint =
+          "face " + mesh.face_label(face) + (contains(selection.faces(), face) ? " selected" : " deselected");
     }
   } else if (const auto v = vertex_at(shown, bvh, rims, projection, pixel)) {
     if (selection.mode() == SelectionMode::vertex) {
@@ -82,7 +84,8 @@ std::string select_instance(Selection& selection, const StageResult& shown, cons
   const auto face = pick_face(bvh, projection, pixel);
   if (!face) return {};
   const auto& names = shown.mesh->face_names();
-  const auto path = scene && *face < names.size() ? scene->instance_of_face(names[*face]) : std::nullopt;
+  const auto path =
+      scene && face->index() < names.size() ? scene->instance_of_face(names[face->index()]) : std::nullopt;
   if (!path) return "no instance: instance mode needs a scene file on the scene or merged stage";
   selection.click_instance(*path);
   const auto& selected = selection.instances();

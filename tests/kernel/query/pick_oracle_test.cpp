@@ -314,12 +314,12 @@ TEST_CASE("a vertex or an edge is picked within the pixel tolerance measured by 
   REQUIRE(pixel);
   CHECK(pixel->x == 300.0);
   CHECK(pixel->y == 200.0);
-  CHECK(pick_face(bvh, p, {303.0, 196.0}) == Index(1));
-  CHECK(pick_vertex(mesh, bvh, p, {303.0, 196.0}, 5.0) == Index(1));
+  CHECK(pick_face(bvh, p, {303.0, 196.0}) == FaceId(1));
+  CHECK(pick_vertex(mesh, bvh, p, {303.0, 196.0}, 5.0) == VertexId(1));
   CHECK_FALSE(pick_vertex(mesh, bvh, p, {303.0, 196.0}, 4.999));
-  CHECK(nearest_corner_on_screen(mesh, 1, p, {303.0, 196.0}, 5.0) == Index(1));
+  CHECK(nearest_corner_on_screen(mesh, FaceId(1), p, {303.0, 196.0}, 5.0) == VertexId(1));
   // Nearer to vertex 4 at (1, 1), pixel (300, 100): 6 pixels across, 8 down.
-  CHECK(pick_vertex(mesh, bvh, p, {306.0, 108.0}, 10.0) == Index(4));
+  CHECK(pick_vertex(mesh, bvh, p, {306.0, 108.0}, 10.0) == VertexId(4));
   CHECK_FALSE(pick_vertex(mesh, bvh, p, {306.0, 108.0}, 9.999));
   // Outside every face nothing is picked, whatever the tolerance.
   CHECK_FALSE(pick_vertex(mesh, bvh, p, {399.0, 10.0}, 1e6));
@@ -327,16 +327,17 @@ TEST_CASE("a vertex or an edge is picked within the pixel tolerance measured by 
   // The click (250, 197) is over face 0 (x = 0.5, y = 0.03), 3 pixels from its bottom edge (vertices 0, 1),
   // 50 from its sides; the back grid's edge under it does not count.
   const Index bottom = pick_oracle_edge(mesh, 0, 1);
-  CHECK(pick_face(bvh, p, {250.0, 197.0}) == Index(0));
-  CHECK(pick_edge(mesh, bvh, p, {250.0, 197.0}, 3.0) == bottom);
+  CHECK(pick_face(bvh, p, {250.0, 197.0}) == FaceId(0));
+  CHECK(pick_edge(mesh, bvh, p, {250.0, 197.0}, 3.0) == EdgeId(bottom));
   CHECK_FALSE(pick_edge(mesh, bvh, p, {250.0, 197.0}, 2.999));
   // Near the corner (1, 1) of face 0, pixel (300, 100): 2 pixels from the right edge, 4 from the top one.
-  CHECK(pick_edge(mesh, bvh, p, {298.0, 104.0}, 10.0) == pick_oracle_edge(mesh, 1, 4));
-  CHECK(nearest_edge_on_screen(mesh, 0, p, {298.0, 104.0}, 10.0) == pick_oracle_edge(mesh, 1, 4));
+  CHECK(pick_edge(mesh, bvh, p, {298.0, 104.0}, 10.0) == EdgeId(pick_oracle_edge(mesh, 1, 4)));
+  CHECK(nearest_edge_on_screen(mesh, FaceId(0), p, {298.0, 104.0}, 10.0) ==
+        EdgeId(pick_oracle_edge(mesh, 1, 4)));
   // Beyond the ends of sides the distance is to their ends: from (196, 203), just outside the corner
   // (200, 200), the left and bottom sides are 5 pixels away (to that corner), though their lines are 4 and 3.
-  CHECK(nearest_edge_on_screen(mesh, 0, p, {196.0, 203.0}, 4.999) == std::nullopt);
-  CHECK(nearest_edge_on_screen(mesh, 0, p, {196.0, 203.0}, 5.0).has_value());
+  CHECK(nearest_edge_on_screen(mesh, FaceId(0), p, {196.0, 203.0}, 4.999) == std::nullopt);
+  CHECK(nearest_edge_on_screen(mesh, FaceId(0), p, {196.0, 203.0}, 5.0).has_value());
 }
 
 TEST_CASE("rim cubes and their entry depths computed by hand", "[kernel]") {
@@ -367,21 +368,21 @@ TEST_CASE("rim cubes and their entry depths computed by hand", "[kernel]") {
   CHECK_FALSE(pick_rim_vertex(rims, half, Ray{{-1.0, -1.0, 6.0}, {1.0, 2.0, -4.0}}));
   const auto hit = pick_rim_vertex(rims, half, Ray{{0.8, -2.4, 4.8}, {1.0, 2.0, -4.0}});
   REQUIRE(hit);
-  CHECK(hit->vertex == 1);
+  CHECK(hit->vertex == RimVertexId(1));
   CHECK(hit->depth == Approx(1.075).epsilon(1e-14));
   // A ray along a cube's face (x = 2.5, direction in y) touches it: the slabs meet at one t.
   const auto grazing = pick_rim_vertex(rims, half, Ray{{2.5, -3.0, 0.0}, {0.0, 1.0, 0.0}});
   REQUIRE(grazing);
-  CHECK(grazing->vertex == 1);
+  CHECK(grazing->vertex == RimVertexId(1));
   CHECK(grazing->depth == Approx(2.5).epsilon(1e-14));
   // Two cubes on the ray: the nearer one (vertex 0, entered at t = 1.5) wins over vertex 1's.
   const auto first = pick_rim_vertex(rims, half, Ray{{-2.0, 0.1, 0.0}, {1.0, 0.0, 0.0}});
   REQUIRE(first);
-  CHECK(first->vertex == 0);
+  CHECK(first->vertex == RimVertexId(0));
   CHECK(first->depth == Approx(1.5).epsilon(1e-14));
   const auto back = pick_rim_vertex(rims, half, Ray{{4.0, 0.1, 0.0}, {-1.0, 0.0, 0.0}});
   REQUIRE(back);
-  CHECK(back->vertex == 1);
+  CHECK(back->vertex == RimVertexId(1));
   CHECK(back->depth == Approx(1.5).epsilon(1e-14));
 }
 
@@ -442,12 +443,12 @@ TEST_CASE("of several corners in reach the one nearest on screen wins, on the fr
       if (d < nearest_distance) nearest_distance = d, nearest = v;
     }
     INFO("trial " << trial);
-    CHECK(pick_face(bvh, p, cursor) == front);
+    CHECK(pick_face(bvh, p, cursor) == FaceId(front));
     if (nearest == no_index) {
       CHECK_FALSE(pick_vertex(mesh, bvh, p, cursor, reach));
       continue;
     }
-    CHECK(pick_vertex(mesh, bvh, p, cursor, reach) == nearest);
+    CHECK(pick_vertex(mesh, bvh, p, cursor, reach) == VertexId(nearest));
     ++tested;
     not_first_in_reach += nearest != in_reach.front();
     not_last_in_reach += nearest != in_reach.back();

@@ -44,7 +44,7 @@ TEST_CASE("clicking near a visible corner picks that vertex, farther away picks 
   // Slightly inside the silhouette towards the cube's centre, so the ray hits a face.
   const auto middle = project_to_pixel(p, Vec3(0.0));
   const glm::dvec2 inward = glm::normalize(glm::dvec2(*middle) - centre);
-  CHECK(pick_vertex(mesh, bvh, p, centre + 3.0 * inward, 6.0) == Index{7});
+  CHECK(pick_vertex(mesh, bvh, p, centre + 3.0 * inward, 6.0) == VertexId(7));
   CHECK_FALSE(pick_vertex(mesh, bvh, p, centre + 40.0 * inward, 6.0));
   // Far outside the cube there is no face and so no vertex.
   CHECK_FALSE(pick_vertex(mesh, bvh, p, {2.0, 2.0}, 6.0));
@@ -62,7 +62,7 @@ TEST_CASE("clicking a face picks the frontmost face under the cursor", "[kernel]
   for (const auto& row : rows) {
     const auto pixel = project_to_pixel(p, row.centre);
     REQUIRE(pixel);
-    CHECK(pick_face(bvh, p, glm::dvec2(*pixel)) == row.face);
+    CHECK(pick_face(bvh, p, glm::dvec2(*pixel)) == FaceId(row.face));
     // The ray continues through the hidden far face behind it.
     const auto hits = bvh.cast_all(ray_through_pixel(p, glm::dvec2(*pixel)));
     REQUIRE(hits.size() == 2);

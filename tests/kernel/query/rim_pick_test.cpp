@@ -43,14 +43,14 @@ TEST_CASE("a ray picks the rim vertex whose cube it enters first, and misses bet
   const auto half = rim_cube_half_sizes(rims);  // 0.2, 0.4, 0.6
   const auto hit = pick_rim_vertex(rims, half, down_from(1.3, 0.0));
   REQUIRE(hit);
-  CHECK(hit->vertex == 1);
+  CHECK(hit->vertex == RimVertexId(1));
   CHECK(hit->depth == Approx(10.0 - 0.4));
   CHECK_FALSE(pick_rim_vertex(rims, half, down_from(2.5, 0.0)));
   CHECK_FALSE(pick_rim_vertex(rims, half, down_from(1.0, 0.5)));
   // Along the line: the nearest cube wins.
   const auto along = pick_rim_vertex(rims, half, Ray{{10.0, 0.0, 0.0}, {-1.0, 0.0, 0.0}});
   REQUIRE(along);
-  CHECK(along->vertex == 2);
+  CHECK(along->vertex == RimVertexId(2));
   // Only the part of the ray between t_min and t_max picks: a cube beyond its end or behind its start
   // is missed, one it starts inside is hit where it starts.
   CHECK_FALSE(pick_rim_vertex(rims, half, Ray{{1.0, 0.0, 10.0}, {0.0, 0.0, -1.0}, 0.0, 9.5}));
@@ -73,7 +73,7 @@ TEST_CASE("a click picks a rim vertex in front of the surface, never one behind 
   projection.projection = glm::ortho(-2.0, 2.0, -2.0, 2.0, 0.1, 10.0);
   projection.viewport = {400.0, 400.0};
   auto pixel_of = [&](const Vec3& p) { return glm::dvec2(*project_to_pixel(projection, p)); };
-  CHECK(pick_rim_vertex(rims, half, bvh, projection, pixel_of(points[0])) == Index(0));
+  CHECK(pick_rim_vertex(rims, half, bvh, projection, pixel_of(points[0])) == RimVertexId(0));
   CHECK_FALSE(pick_rim_vertex(rims, half, bvh, projection, pixel_of(points[1])));
   CHECK_FALSE(pick_rim_vertex(rims, half, bvh, projection, pixel_of({1.0, 0.9, 0.0})));
 }

@@ -4,35 +4,36 @@
 
 namespace nome {
 
-std::optional<Index> nearest_corner_on_screen(const Mesh& mesh, Index face,
-                                              const ScreenProjection& projection, glm::dvec2 cursor,
-                                              double max_pixels) {
-  std::optional<Index> best;
+std::optional<VertexId> nearest_corner_on_screen(const Mesh& mesh, FaceId face,
+                                                 const ScreenProjection& projection, glm::dvec2 cursor,
+                                                 double max_pixels) {
+  std::optional<VertexId> best;
   double best_distance = max_pixels;
-  for (Index v : mesh.face_vertices(face)) {
+  for (Index v : mesh.face_vertices(face.index())) {
     const auto pixel = project_to_pixel(projection, mesh.position(v));
     if (!pixel) continue;
     const double distance = glm::length(glm::dvec2(*pixel) - cursor);
     if (distance <= best_distance) {
       best_distance = distance;
-      best = v;
+      best = VertexId(v);
     }
   }
   return best;
 }
 
-std::optional<Index> pick_vertex(const Mesh& mesh, const TriangleBvh& bvh, const ScreenProjection& projection,
-                                 glm::dvec2 cursor, double max_pixels) {
+std::optional<VertexId> pick_vertex(const Mesh& mesh, const TriangleBvh& bvh,
+                                    const ScreenProjection& projection, glm::dvec2 cursor,
+                                    double max_pixels) {
   const auto hit = bvh.cast_nearest(ray_through_pixel(projection, cursor));
   if (!hit) return std::nullopt;
-  return nearest_corner_on_screen(mesh, hit->face, projection, cursor, max_pixels);
+  return nearest_corner_on_screen(mesh, FaceId(hit->face), projection, cursor, max_pixels);
 }
 
-std::optional<Index> pick_face(const TriangleBvh& bvh, const ScreenProjection& projection,
-                               glm::dvec2 cursor) {
+std::optional<FaceId> pick_face(const TriangleBvh& bvh, const ScreenProjection& projection,
+                                glm::dvec2 cursor) {
   const auto hit = bvh.cast_nearest(ray_through_pixel(projection, cursor));
   if (!hit) return std::nullopt;
-  return hit->face;
+  return FaceId(hit->face);
 }
 
 }  // namespace nome

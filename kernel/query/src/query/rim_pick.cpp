@@ -71,14 +71,14 @@ std::optional<RimHit> pick_rim_vertex(const RimLines& rims, std::span<const doub
       leave = std::min(leave, t1);
       is_hit = enter <= leave;
     }
-    if (is_hit && (!best || enter < best->depth)) best = RimHit{v, enter};
+    if (is_hit && (!best || enter < best->depth)) best = RimHit{RimVertexId(v), enter};
   }
   return best;
 }
 
-std::optional<Index> pick_rim_vertex(const RimLines& rims, std::span<const double> half_sizes,
-                                     const TriangleBvh& bvh, const ScreenProjection& projection,
-                                     glm::dvec2 cursor) {
+std::optional<RimVertexId> pick_rim_vertex(const RimLines& rims, std::span<const double> half_sizes,
+                                           const TriangleBvh& bvh, const ScreenProjection& projection,
+                                           glm::dvec2 cursor) {
   if (rims.num_vertices() == 0) return std::nullopt;
   const Ray ray = ray_through_pixel(projection, cursor);
   const auto rim = pick_rim_vertex(rims, half_sizes, ray);

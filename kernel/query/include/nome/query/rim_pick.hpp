@@ -5,12 +5,16 @@
 #include <string>
 #include <vector>
 
+#include "nome/id.hpp"
 #include "nome/mesh/types.hpp"
 #include "nome/query/ray.hpp"
 #include "nome/query/screen_projection.hpp"
 #include "nome/query/triangle_bvh.hpp"
 
 namespace nome {
+
+// A vertex of the rim lines (into RimLines::positions): no mesh vertex.
+using RimVertexId = Id<struct RimVertexKind>;
 
 // Rim lines (report 6.3: `polyline`, `circle`; vertices that no face uses) as picking sees them: the
 // positions and names of their vertices, each line a run of them, open or closed.
@@ -35,8 +39,8 @@ std::vector<double> rim_cube_half_sizes(const RimLines& rims, double fraction = 
 
 // Where a ray enters a rim vertex's cube.
 struct RimHit {
-  Index vertex = no_index;  // into RimLines::positions
-  double depth = 0.0;       // ray parameter t, comparable with RayHit::depth
+  RimVertexId vertex;
+  double depth = 0.0;  // ray parameter t, comparable with RayHit::depth
 };
 
 // The rim vertex whose cube (axis-aligned, centred on the vertex) the ray enters first, by the slab
@@ -46,8 +50,8 @@ std::optional<RimHit> pick_rim_vertex(const RimLines& rims, std::span<const doub
 
 // A click's rim vertex: the one whose cube the ray through the cursor enters first, unless the surface
 // drawn with `bvh` lies in front of it.
-std::optional<Index> pick_rim_vertex(const RimLines& rims, std::span<const double> half_sizes,
-                                     const TriangleBvh& bvh, const ScreenProjection& projection,
-                                     glm::dvec2 cursor);
+std::optional<RimVertexId> pick_rim_vertex(const RimLines& rims, std::span<const double> half_sizes,
+                                           const TriangleBvh& bvh, const ScreenProjection& projection,
+                                           glm::dvec2 cursor);
 
 }  // namespace nome
