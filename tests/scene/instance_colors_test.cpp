@@ -86,3 +86,49 @@ delete face a_q1 endface enddelete
     CHECK(soup.face_colors[f] == (soup.face_names[f] == "a_q0" ? Color(1, 0, 0) : no_face_color));
   }
 }
+
+// A colour is not a new scene: only the pieces under the coloured statement are made again, every
+// placement of that statement (a group placed twice colours both), and the rest keep their pieces.
+TEST_CASE("colouring an instance makes again only the pieces under its statement", "[scene]") {
+  const std::string text = std::string(two_funnels) + "instance q pair translate (0 5 0) endinstance\n" +
+                           "instance lone fun translate (0 -5 0) endinstance\n";
+  Scene scene = Scene::from_text(text, "pairs.nome");
+  const std::vector<Color> lone_before = colors_of(scene, "lone_");
+  const std::size_t before = scene.placement_evaluations();
+  scene.set_instance_color("p_a", {0.0f, 1.0f, 0.0f});
+  // Statement `a` of group `pair` is placed twice: p_a and q_a.
+  CHECK(scene.placement_evaluations() - before == 2);
+  for (const char* prefix : {"p_a_", "q_a_"}) {
+    INFO(prefix);
+    const std::vector<Color> colors = colors_of(scene, prefix);
+    REQUIRE(colors.size() == 6);
+    for (const Color& c : colors) CHECK(c == Color(0.0f, 1.0f, 0.0f));
+  }
+  for (const Color& c : colors_of(scene, "q_b_")) CHECK(c == Color(1.0f, 0.0f, 0.0f));
+  CHECK(colors_of(scene, "lone_") == lone_before);
+  CHECK(scene.instance_surface("q_a") == "rgb_00ff00");
+  // Named back: the file's own colours again, with the same single pass.
+  const std::size_t again = scene.placement_evaluations();
+  scene.set_instance_surface("lone", "R");
+  CHECK(scene.placement_evaluations() - again == 1);
+  for (const Color& c : colors_of(scene, "lone_")) CHECK(c == Color(1.0f, 0.0f, 0.0f));
+  scene.set_instance_surface("lone", std::nullopt);
+  CHECK(colors_of(scene, "lone_") == lone_before);
+  CHECK_THROWS_WITH(scene.set_instance_surface("lone", "nothing"), "no surface 'nothing'");
+  CHECK(colors_of(scene, "lone_") == lone_before);
+}
+
+TEST_CASE("a surface that cannot be evaluated is refused, and the instance keeps its colour", "[scene]") {
+  Scene scene = Scene::from_text(std::string("bank b\n  set x 0 0 1 0.5\nendbank\n") +
+                                     "surface Half color ({expr 1 / $b_x} 0 0) endsurface\n" + two_funnels,
+                                 "half.nome");
+  const std::vector<Color> before = colors_of(scene, "p_a_");
+  CHECK_THROWS_WITH(scene.set_instance_surface("p_a", "Half"), Catch::Contains("division by zero"));
+  CHECK_FALSE(scene.instance_surface("p_a"));
+  CHECK(colors_of(scene, "p_a_") == before);
+  // The slider that would have coloured it evaluates nothing that names the surface.
+  scene.set_parameter(*scene.find_parameter("b_x"), 0.5);
+  CHECK(colors_of(scene, "p_a_") == before);
+  scene.set_instance_surface("p_a", "Half");
+  for (const Color& c : colors_of(scene, "p_a_")) CHECK(c == Color(1.0f, 0.0f, 0.0f));
+}

@@ -2,9 +2,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "nome/error.hpp"
 #include "nome/scene/scene.hpp"
+#include "scene/value_change.hpp"
 
 namespace nome::scene {
 
@@ -33,17 +35,32 @@ std::optional<std::string> Scene::instance_surface(const std::string& path) cons
 void Scene::set_instance_surface(const std::string& path, const std::optional<std::string>& surface) {
   if (surface && !surfaces_.count(*surface)) throw InvalidInputError("no surface '" + *surface + "'");
   const Placement& p = placements_[placement_of_instance(path)];
-  Scene next = *this;
-  InstanceDecl& decl = p.group == no_index ? next.ast_.instances[p.statement]
-                                           : next.ast_.groups[p.group].instances[p.statement];
-  if (surface)
-    decl.surface = Name{*surface, {}};
-  else
-    decl.surface.reset();
+  const Index group = p.group, at = p.statement;
+  InstanceDecl& decl = group == no_index ? ast_.instances[at] : ast_.groups[group].instances[at];
+  std::optional<Name> previous =
+      std::exchange(decl.surface, surface ? std::optional(Name{*surface, {}}) : std::nullopt);
+  // Only the colours of the pieces under that statement (every placement of it) change: they alone are
+  // made again.
+  std::vector<Index> under;
+  for (Index i = 0; i < placements_.size(); ++i) {
+    if (!is_leaf(placements_[i])) continue;
+    for (Index a = i; a != no_index; a = placements_[a].parent)
+      if (placements_[a].group == group && placements_[a].statement == at) {
+        under.push_back(i);
+        break;
+      }
+  }
+  ValueChange change(*this);
   std::vector<Diagnostic> errors;
-  next.build(errors);
-  if (!errors.empty()) throw SceneError(std::move(errors));
-  *this = std::move(next);
+  const auto over_budget = change.remake_placements(under, errors);
+  if (!errors.empty() || over_budget) {
+    decl.surface = std::move(previous);
+    change.roll_back();
+    if (over_budget) throw BudgetError(*over_budget);
+    throw SceneError(std::move(errors));
+  }
+  has_only_moved_vertices_ = false;
+  change.assemble();
 }
 
 void Scene::set_instance_color(const std::string& path, Color color) {

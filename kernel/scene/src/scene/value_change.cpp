@@ -67,8 +67,10 @@ std::vector<Index> ValueChange::copies_to_remake() {
 }
 
 void ValueChange::roll_back() {
-  scene_.values_[parameter_.index()] = old_value_;
-  if (scene_.parameters_.contains(parameter_)) scene_.parameters_[parameter_].value = old_value_;
+  if (parameter_.is_valid()) {
+    scene_.values_[parameter_.index()] = old_value_;
+    if (scene_.parameters_.contains(parameter_)) scene_.parameters_[parameter_].value = old_value_;
+  }
   for (auto& [i, previous] : moved_) {
     scene_.placements_[i].world.soup.positions = std::move(previous.positions);
     scene_.placements_[i].warnings = std::move(previous.warnings);
