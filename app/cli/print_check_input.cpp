@@ -25,7 +25,7 @@ PrintCheck check_loaded_input(LoadedInput& loaded, double min_wall, const Progre
 
 Mesh marked_surface(LoadedInput& loaded, const PrintCheck& check) {
   Mesh surface = checked_surface(loaded);
-  std::vector<Color>& colors = surface.face_colors();
+  std::vector<Color>& colors = add_colors(surface.face_attributes()).values();
   colors.assign(surface.num_faces(), Color(0.8f, 0.8f, 0.78f));
   for (const NearMiss& miss : check.near_misses)
     for (const Index c : surface.vertex_corners(miss.vertex))
@@ -40,3 +40,4 @@ std::uint64_t triangle_count(const Mesh& mesh) {
 }
 
 }  // namespace nome::cli
+#include "nome/mesh/color_attribute.hpp"

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "nome/error.hpp"
+#include "nome/mesh/color_attribute.hpp"
 #include "nome/mesh/normals.hpp"
 #include "nome/query/display_triangles.hpp"
 #include "nome/stop_token.hpp"
@@ -176,13 +177,14 @@ void build_display_positions(const Mesh& mesh, const DisplayTopology& topology, 
 }
 
 std::vector<std::array<std::uint8_t, 4>> display_face_colors(const Mesh& mesh) {
-  const auto& colors = mesh.face_colors();
+  const Column<Color>* colors = find_colors(mesh.face_attributes());
   std::vector<std::array<std::uint8_t, 4>> out;
-  if (colors.empty()) return out;
+  if (!colors || colors->values().empty()) return out;
   out.assign(mesh.num_faces(), {0, 0, 0, 0});
-  for (Index f = 0; f < std::min<Index>(Index(colors.size()), mesh.num_faces()); ++f)
-    if (colors[f] != no_face_color)
-      out[f] = {to_byte(colors[f].r), to_byte(colors[f].g), to_byte(colors[f].b), 255};
+  const std::vector<Color>& values = colors->values();
+  for (Index f = 0; f < std::min<Index>(Index(values.size()), mesh.num_faces()); ++f)
+    if (values[f] != no_face_color)
+      out[f] = {to_byte(values[f].r), to_byte(values[f].g), to_byte(values[f].b), 255};
   return out;
 }
 

@@ -278,11 +278,15 @@ void Window::answer_recovery(bool restore) {
 void Window::update_stage() {
   const Session* session = sessions_.session();
   if (!session) return;
-  if (stage_.request(*session)) {
-    show_rim_lines(session->scene() ? scene::scene_rim_lines(*session->scene()) : RimLines{});
-    scene_lights_ = session->scene() ? render::scene_lights(session->scene()->render_defaults().lights)
-                                     : render::SceneLights{};
-  }
+  const InputChange change = stage_.request(*session);
+  const scene::Scene* scene = session->scene();
+  // A slider that only moved vertices moves the rim lines' vertices; their names, ids and colours stay.
+  if (change.geometry == Change::topology || change.face_attributes)
+    show_rim_lines(scene ? scene::scene_rim_lines(*scene) : RimLines{});
+  else if (change.geometry == Change::positions && scene)
+    move_rim_lines(scene::scene_rim_positions(*scene));
+  if (change != InputChange{})
+    scene_lights_ = scene ? render::scene_lights(scene->render_defaults().lights) : render::SceneLights{};
   try {
     if (auto result = stage_.take_for_frame()) show_result(std::move(*result));
   } catch (const std::exception& e) {
@@ -337,10 +341,23 @@ void Window::show_rim_lines(RimLines lines) {
     selection_.clear();
     log_.info("selection cleared: the rim lines changed");
   }
-  render::LineSegments drawn;
-  render::add_rim_segments(lines, drawn);
-  renderer_.set_lines(render::Overlay::rim, drawn.points, drawn.segments, drawn.colors);
   rim_lines_ = std::move(lines);
+  draw_rim_lines();
+}
+
+void Window::move_rim_lines(std::vector<Vec3> positions) {
+  if (positions.size() != rim_lines_.positions.size()) {
+    show_rim_lines(scene::scene_rim_lines(*sessions_.session()->scene()));
+    return;
+  }
+  rim_lines_.positions = std::move(positions);
+  draw_rim_lines();
+}
+
+void Window::draw_rim_lines() {
+  render::LineSegments drawn;
+  render::add_rim_segments(rim_lines_, drawn);
+  renderer_.set_lines(render::Overlay::rim, drawn.points, drawn.segments, drawn.colors);
   if (const StageResult* shown = stage_.shown())
     rims_ = pickable_rims(rim_lines_, *shown->mesh, shown->borders);
   refresh_selection();

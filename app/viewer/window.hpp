@@ -114,7 +114,10 @@ class Window : private ScriptHost {
   void update_stage();
   void show_result(StageResult result);
   void refresh_selection();
+  // New rim lines (new ids: a selection of rim vertices is cleared), or new positions for the same lines.
   void show_rim_lines(RimLines lines);
+  void move_rim_lines(std::vector<Vec3> positions);
+  void draw_rim_lines();
   void frame_all();
   void draw_prompts();
   // window_tools.cpp: the tools asked in their order

@@ -10,6 +10,7 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "render/render_support.hpp"
+#include "support/face_colors.hpp"
 #include "support/shared_examples.hpp"
 #include "viewer/session/session.hpp"
 #include "viewer/session/stage_pipeline.hpp"
@@ -319,7 +320,7 @@ TEST_CASE("Hild walkthrough: three instances selected and coloured, saved and re
     Index faces = 0;
     for (Index f = 0; f < soup.num_faces(); ++f)
       if (soup.face_names[f].starts_with(path + "_")) {
-        CHECK(glm::length(soup.face_colors[f] - color) < 0.01f);
+        CHECK(glm::length(test::face_colors(soup)[f] - color) < 0.01f);
         ++faces;
       }
     CHECK(faces > 0);
@@ -327,7 +328,8 @@ TEST_CASE("Hild walkthrough: three instances selected and coloured, saved and re
   // The instances not coloured keep theirs.
   const PolygonSoup first = original.combined_soup();
   for (Index f = 0; f < first.num_faces(); ++f)
-    if (first.face_names[f].starts_with("sh_tun1_")) CHECK(soup.face_colors[f] == first.face_colors[f]);
+    if (first.face_names[f].starts_with("sh_tun1_"))
+      CHECK(test::face_colors(soup)[f] == test::face_colors(first)[f]);
   const TopologyReport after = topology_report(build_mesh(soup));
   CHECK(after.vertices == before.vertices);
   CHECK(after.faces == before.faces);

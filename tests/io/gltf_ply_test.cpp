@@ -10,8 +10,10 @@
 #include "nome/io/gltf.hpp"
 #include "nome/io/ply.hpp"
 #include "nome/io/read_polygons.hpp"
+#include "nome/mesh/color_attribute.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/query/display_triangles.hpp"
+#include "support/face_colors.hpp"
 #include "support/scratch_files.hpp"
 #include "support/shapes.hpp"
 
@@ -25,7 +27,8 @@ namespace {
 Mesh coloured_band() {
   PolygonSoup soup = mobius_band(24, 2);
   const Color colors[] = {{1.0f, 0.2f, 0.1f}, {0.1f, 0.6f, 0.3f}, {0.2f, 0.3f, 0.9f}};
-  for (Index f = 0; f < soup.num_faces(); ++f) soup.face_colors.push_back(colors[f % 3]);
+  for (Index f = 0; f < soup.num_faces(); ++f)
+    add_colors(soup.face_attributes).values().push_back(colors[f % 3]);
   return build_mesh(soup);
 }
 
@@ -47,8 +50,8 @@ TEST_CASE("A .glb reads back with the same vertices, triangles, topology and col
   CHECK(back.num_vertices() == band.num_vertices());
   CHECK(back.num_faces() == triangles.size());
   std::vector<Color> triangle_colors;
-  for (Index f : triangles.faces) triangle_colors.push_back(band.face_colors()[f]);
-  CHECK(colour_counts(back.face_colors) == colour_counts(triangle_colors));
+  for (Index f : triangles.faces) triangle_colors.push_back(test::face_colors(band)[f]);
+  CHECK(colour_counts(test::face_colors(back)) == colour_counts(triangle_colors));
   const TopologyReport report = topology_report(build_mesh(back));
   CHECK(report.chi == 0);
   CHECK_FALSE(report.orientable);
@@ -62,10 +65,10 @@ TEST_CASE("A .ply keeps the polygons and reads its vertex colours back onto the 
   const PolygonSoup back = read_polygons(path);
   REQUIRE(back.num_faces() == band.num_faces());
   CHECK(back.num_vertices() == band.num_vertices());
-  REQUIRE(back.face_colors.size() == band.face_colors().size());
+  REQUIRE(test::face_colors(back).size() == test::face_colors(band).size());
   for (Index f = 0; f < band.num_faces(); ++f)
     for (int k = 0; k < 3; ++k)
-      CHECK(back.face_colors[f][k] == Approx(band.face_colors()[f][k]).margin(1.0 / 255));
+      CHECK(test::face_colors(back)[f][k] == Approx(test::face_colors(band)[f][k]).margin(1.0 / 255));
   CHECK(topology_report(build_mesh(back)).chi == 0);
 }
 
@@ -78,7 +81,7 @@ TEST_CASE("An ascii PLY without colours reads, a broken one is refused with its 
   const PolygonSoup square = read_polygons(good);
   CHECK(square.num_vertices() == 4);
   CHECK(square.num_faces() == 1);
-  CHECK(square.face_colors.empty());
+  CHECK(test::face_colors(square).empty());
   const fs::path bad = test::scratch_path("nome_coloured_io", "bad.ply");
   std::ofstream(bad) << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float\nend_header\n0\n";
   CHECK_THROWS_WITH(read_polygons(bad), Catch::Contains("bad.ply:4: expected property TYPE NAME"));

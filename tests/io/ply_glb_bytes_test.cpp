@@ -20,6 +20,8 @@
 
 #include "nome/io/gltf.hpp"
 #include "nome/io/ply.hpp"
+#include "nome/mesh/color_attribute.hpp"
+#include "support/face_colors.hpp"
 #include "support/scratch_files.hpp"
 #include "support/shapes.hpp"
 
@@ -241,7 +243,7 @@ TEST_CASE("a PLY's colours are rounded to bytes, each vertex once per colour, fa
       {{0.1f, 0.7f, 0.5f}, {26, 179, 128}},   {{1.5f, -0.2f, 0.3f}, {255, 0, 77}},
       {{0.5f, 0.2f, 0.999f}, {128, 51, 255}}, {{0.999f, 0.999f, 0.1f}, {255, 255, 26}}};
   REQUIRE(soup.num_faces() == colours.size());
-  for (const auto& c : colours) soup.face_colors.push_back(c.first);
+  for (const auto& c : colours) add_colors(soup.face_attributes).values().push_back(c.first);
   for (Vec3& p : soup.positions) p = Vec3(p.x * 1.25 + 0.1, p.y * -0.75, 0.3 * p.x * p.y);
   const Mesh mesh = build_mesh(soup);
   std::set<std::pair<Index, std::array<int, 3>>> expected_records;
@@ -286,9 +288,9 @@ TEST_CASE("PLY files written by hand read with their positions, faces and colour
   CHECK(std::vector<Index>(a.face_offsets.begin(), a.face_offsets.end()) == std::vector<Index>{0, 3, 7});
   CHECK(std::vector<Index>(a.face_vertices.begin(), a.face_vertices.end()) ==
         std::vector<Index>{0, 1, 2, 3, 1, 2, 0});
-  REQUIRE(a.face_colors.size() == 2);
-  CHECK(a.face_colors[0] == Color(1.0f, 0.0f, 0.2f));  // the first corner's vertex: 255 0 51
-  CHECK(a.face_colors[1] == Color(0.0f, 0.4f, 1.0f));  // 0 102 255
+  REQUIRE(test::face_colors(a).size() == 2);
+  CHECK(test::face_colors(a)[0] == Color(1.0f, 0.0f, 0.2f));  // the first corner's vertex: 255 0 51
+  CHECK(test::face_colors(a)[1] == Color(0.0f, 0.4f, 1.0f));  // 0 102 255
 
   // Big-endian doubles and a short count with int indices.
   std::string big =
@@ -308,7 +310,7 @@ TEST_CASE("PLY files written by hand read with their positions, faces and colour
   CHECK(std::vector<Vec3>(b.positions.begin(), b.positions.end()) ==
         std::vector<Vec3>{Vec3(0.1, -2.0, 3.5), Vec3(7.25, 0.0, -0.3), Vec3(1e-3, 2.0, 9.0)});
   CHECK(std::vector<Index>(b.face_vertices.begin(), b.face_vertices.end()) == std::vector<Index>{2, 0, 1});
-  CHECK(b.face_colors.empty());
+  CHECK(test::face_colors(b).empty());
 }
 
 TEST_CASE("a .glb of a Möbius band holds each vertex once per side it shows, with that side's normal",
@@ -434,6 +436,6 @@ TEST_CASE("a .glb written by hand reads its triangles welded by position, colour
         std::vector<Vec3>{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 3, 0), Vec3(0, 3, 0), Vec3(4.5, 1.5, -1)});
   CHECK(std::vector<Index>(soup.face_vertices.begin(), soup.face_vertices.end()) ==
         std::vector<Index>{0, 1, 2, 0, 2, 3, 1, 4, 2});
-  CHECK(soup.face_colors ==
+  CHECK(test::face_colors(soup) ==
         std::vector<Color>{Color(0.25f, 0.5f, 0.75f), Color(0.25f, 0.5f, 0.75f), Color(1.0f, 0.0f, 0.5f)});
 }

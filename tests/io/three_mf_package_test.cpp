@@ -22,6 +22,7 @@
 #include "nome/error.hpp"
 #include "nome/io/three_mf.hpp"
 #include "nome/ops/pipeline.hpp"
+#include "support/face_colors.hpp"
 #include "support/scratch_files.hpp"
 
 using namespace nome;
@@ -345,7 +346,8 @@ PolygonSoup tmf_partly_coloured_strip() {
     soup.add_vertex(Vec3(i, 1, 0));
   }
   for (Index i = 0; i < 5; ++i) soup.add_face({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
-  soup.face_colors = {Color(1, 0, 0), no_face_color, Color(0, 0, 1), no_face_color, Color(0, 1, 0)};
+  test::set_face_colors(soup.face_attributes,
+                        {Color(1, 0, 0), no_face_color, Color(0, 0, 1), no_face_color, Color(0, 1, 0)});
   return soup;
 }
 

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "nome/error.hpp"
+#include "nome/mesh/color_attribute.hpp"
 #include "nome/query/display_triangles.hpp"
 #include "render/mesh_display_data.hpp"
 #include "support/shapes.hpp"
@@ -96,7 +97,7 @@ TEST_CASE("smooth normals follow each face's own orientation across Möbius edge
 TEST_CASE("face colours become an RGBA table, none where the mesh has none", "[render]") {
   PolygonSoup soup = test::cube();
   CHECK(render::build_display_data(build_mesh(soup)).face_colors.empty());
-  soup.face_colors.assign(soup.num_faces(), Color(1.0f, 0.5f, 0.0f));
+  add_colors(soup.face_attributes).values().assign(soup.num_faces(), Color(1.0f, 0.5f, 0.0f));
   const auto colors = render::build_display_data(build_mesh(soup)).face_colors;
   REQUIRE(colors.size() == 6);
   CHECK(colors[5] == std::array<std::uint8_t, 4>{255, 128, 0, 255});

@@ -11,6 +11,7 @@
 
 #include "nome/scene/generators.hpp"
 #include "nome/scene/scene.hpp"
+#include "support/mesh_measures.hpp"
 
 using namespace nome;
 using namespace nome::scene;
@@ -61,13 +62,6 @@ Vec3 geom_normal(const PolygonSoup& soup, Index f) {
   return n;
 }
 
-Vec3 geom_centroid(const PolygonSoup& soup, Index f) {
-  Vec3 c(0);
-  for (Index k = soup.face_offsets[f]; k < soup.face_offsets[f + 1]; ++k)
-    c += soup.positions[soup.face_vertices[k]];
-  return c / double(soup.face_offsets[f + 1] - soup.face_offsets[f]);
-}
-
 Index geom_face(const PolygonSoup& soup, const std::string& name) {
   for (Index f = 0; f < soup.num_faces(); ++f)
     if (soup.face_names[f] == name) return f;
@@ -105,7 +99,7 @@ void geom_add_ring(GeomExpected& out, const std::string& prefix, int n, double r
 void geom_check_faces_face_away_from_axis(const PolygonSoup& soup, Index first = 0, Index end = no_index) {
   for (Index f = first; f < std::min(end, soup.num_faces()); ++f) {
     INFO("face " << soup.face_names[f]);
-    const Vec3 c = geom_centroid(soup, f);
+    const Vec3 c = test::face_centre(soup, f);
     CHECK(glm::dot(geom_normal(soup, f), Vec3(c.x, c.y, 0)) > 0);
   }
 }
@@ -206,7 +200,7 @@ TEST_CASE("cylinder: circles of its radius at 0 and its height, caps facing out"
     CHECK(one.soup.face_names[5] == "i_" + std::string(cap));
     const double z = std::string(cap) == "topcap" ? 3 : 0;
     for (const std::string& corner : geom_corners(one.soup, 5)) CHECK(corner.back() == (z > 0 ? '1' : '0'));
-    CHECK(geom_centroid(one.soup, 5).z == Approx(z));
+    CHECK(test::face_centre(one.soup, 5).z == Approx(z));
   }
 }
 
@@ -269,7 +263,7 @@ TEST_CASE("sphere: a globe of latitude and longitude lines, poles single, faces 
   geom_check_vertices(globe, expected);
   REQUIRE(globe.soup.num_faces() == 24);
   for (Index f = 0; f < globe.soup.num_faces(); ++f)
-    CHECK(glm::dot(geom_normal(globe.soup, f), geom_centroid(globe.soup, f)) > 0);
+    CHECK(glm::dot(geom_normal(globe.soup, f), test::face_centre(globe.soup, f)) > 0);
 
   // Cut to longitudes [0, 270] and latitudes [-30, 60]: no pole, every sample its own vertex.
   SphereParams cut = p;
@@ -289,7 +283,7 @@ TEST_CASE("sphere: a globe of latitude and longitude lines, poles single, faces 
   const Piece patch = sphere(cut);
   geom_check_vertices(patch, cut_expected);
   for (Index f = 0; f < patch.soup.num_faces(); ++f)
-    CHECK(glm::dot(geom_normal(patch.soup, f), geom_centroid(patch.soup, f)) > 0);
+    CHECK(glm::dot(geom_normal(patch.soup, f), test::face_centre(patch.soup, f)) > 0);
 }
 
 TEST_CASE("ellipsoid (radius_x radius_y long_max latt_min latt_max segs_long segs_latt)", "[scene]") {
@@ -320,7 +314,7 @@ TEST_CASE("torus: the minor circle from phi_min to phi_max swept theta_max aroun
   REQUIRE(ring.soup.num_faces() == 48);
   for (Index f = 0; f < ring.soup.num_faces(); ++f) {
     // Away from the centre of the tube's circle under the face.
-    const Vec3 c = geom_centroid(ring.soup, f);
+    const Vec3 c = test::face_centre(ring.soup, f);
     const Vec3 axis = 3.0 * glm::normalize(Vec3(c.x, c.y, 0));
     CHECK(glm::dot(geom_normal(ring.soup, f), c - axis) > 0);
   }
@@ -384,7 +378,7 @@ TEST_CASE("torus knot: its curve on the torus winding symm times through the hol
       const int i = std::stoi(name.substr(3, name.find('_', 3) - 3));
       const Vec3 middle = 0.5 * (k.at(2 * geom_pi * i / 30) + k.at(2 * geom_pi * (i + 1) / 30));
       INFO(name);
-      CHECK(glm::dot(geom_normal(tube.soup, f), geom_centroid(tube.soup, f) - middle) > 0);
+      CHECK(glm::dot(geom_normal(tube.soup, f), test::face_centre(tube.soup, f) - middle) > 0);
     }
   }
 }

@@ -3,6 +3,7 @@
 
 #include "nome/scene/save_nome.hpp"
 #include "scene/scene_support.hpp"
+#include "support/face_colors.hpp"
 
 using namespace nome;
 using namespace nome::scene;
@@ -22,7 +23,7 @@ std::vector<Color> colors_of(const Scene& scene, const std::string& prefix) {
   std::vector<Color> out;
   const PolygonSoup soup = scene.combined_soup();
   for (Index f = 0; f < soup.num_faces(); ++f)
-    if (soup.face_names[f].starts_with(prefix)) out.push_back(soup.face_colors[f]);
+    if (soup.face_names[f].starts_with(prefix)) out.push_back(test::face_colors(soup)[f]);
   return out;
 }
 
@@ -59,7 +60,7 @@ TEST_CASE("an instance coloured by path keeps its colour through saving, and the
 TEST_CASE("faces without a colour of their own take the default; a scene with none carries no colours",
           "[scene]") {
   const char* const plain = "funnel fun (6 1 0.5 1) endfunnel\ninstance a fun endinstance\n";
-  CHECK(Scene::from_text(plain, "plain.nome").combined_soup().face_colors.empty());
+  CHECK(Scene::from_text(plain, "plain.nome").combined_soup().face_attributes.empty());
 
   // One coloured face in a mesh whose other face is deleted, beside an instance without colours.
   const char* const mixed = R"(surface R color (1 0 0) endsurface
@@ -79,11 +80,11 @@ instance b fun endinstance
 delete face a_q1 endface enddelete
 )";
   const PolygonSoup soup = Scene::from_text(mixed, "mixed.nome").combined_soup();
-  REQUIRE(soup.face_colors.size() == soup.num_faces());
+  REQUIRE(test::face_colors(soup).size() == soup.num_faces());
   for (Index f = 0; f < soup.num_faces(); ++f) {
     CAPTURE(soup.face_names[f]);
     CHECK(soup.face_names[f] != "a_q1");
-    CHECK(soup.face_colors[f] == (soup.face_names[f] == "a_q0" ? Color(1, 0, 0) : no_face_color));
+    CHECK(test::face_colors(soup)[f] == (soup.face_names[f] == "a_q0" ? Color(1, 0, 0) : no_face_color));
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include "nome/scene/scene.hpp"
 #include "scene/scene_support.hpp"
+#include "support/face_colors.hpp"
 
 using namespace nome;
 using nome::scene::Scene;
@@ -45,7 +46,7 @@ TEST_CASE("a surface's colour channels are clamped to [0, 1] on both sides", "[s
                                        "surface S color (2 0.25 -1) endsurface\n"
                                        "instance i t surface S endinstance\n",
                                    "t.nome");
-  const auto& colors = s.instances()[0].geometry.soup.face_colors;
+  const std::vector<Color> colors = test::face_colors(s.instances()[0].geometry.soup);
   REQUIRE(colors.size() == 1);
   CHECK(colors[0] == Color(1.0f, 0.25f, 0.0f));
 }

@@ -5,6 +5,7 @@
 #include "nome/io/read_scene.hpp"
 #include "nome/scene/save_nome.hpp"
 #include "scene/scene_support.hpp"
+#include "support/face_colors.hpp"
 #include "support/scratch_files.hpp"
 #include "support/shared_examples.hpp"
 
@@ -25,7 +26,7 @@ void check_same_geometry(const Scene& a, const Scene& b) {
     CHECK(x.soup.face_offsets == y.soup.face_offsets);
     CHECK(x.soup.face_vertices == y.soup.face_vertices);
     CHECK(x.soup.face_names == y.soup.face_names);
-    CHECK(x.soup.face_colors == y.soup.face_colors);
+    CHECK(test::face_colors(x.soup) == test::face_colors(y.soup));
     CHECK(x.soup.sharp_edges == y.soup.sharp_edges);
     CHECK(x.rims.size() == y.rims.size());
   }

@@ -5,6 +5,7 @@
 #include "nome/query/rim_pick.hpp"
 #include "nome/scene/scene.hpp"
 #include "nome/scene/scene_rim_lines.hpp"
+#include "support/face_colors.hpp"
 
 using namespace nome;
 using namespace nome::scene;
@@ -88,9 +89,9 @@ instance i m endinstance
 )",
                                    "faces.nom");
   const PolygonSoup& soup = s.instances().at(0).geometry.soup;
-  REQUIRE(soup.face_colors.size() == 2);
-  CHECK(soup.face_colors[0] == Color(0, 1, 0));
-  CHECK(soup.face_colors[1] == no_face_color);
-  CHECK(written_face_color(soup.face_colors[1]) == Color(0.75f));
-  CHECK(written_face_color(soup.face_colors[0]) == Color(0, 1, 0));
+  REQUIRE(test::face_colors(soup).size() == 2);
+  CHECK(test::face_colors(soup)[0] == Color(0, 1, 0));
+  CHECK(test::face_colors(soup)[1] == no_face_color);
+  CHECK(written_face_color(test::face_colors(soup)[1]) == Color(0.75f));
+  CHECK(written_face_color(test::face_colors(soup)[0]) == Color(0, 1, 0));
 }

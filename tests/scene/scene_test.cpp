@@ -7,6 +7,7 @@
 #include "nome/scene/save_nome.hpp"
 #include "nome/scene/scene.hpp"
 #include "scene/scene_support.hpp"
+#include "support/face_colors.hpp"
 #include "support/shared_examples.hpp"
 
 using namespace nome;
@@ -177,10 +178,10 @@ TEST_CASE("surfaces colour faces: a face's own surface wins over its instance's"
   NOME_NEEDS_SHARED_EXAMPLES("original");
   const Scene s = nome::test::load_scene_file(nome::test::originals_dir() + "cube.nom");
   const auto& soup = s.instances()[0].geometry.soup;
-  REQUIRE(soup.face_colors.size() == 6);
-  CHECK(soup.face_colors[0] == Color(0, 0.9f, 0));  // c1: surface G
-  CHECK(soup.face_colors[1] == Color(0, 0.5f, 1));  // c2: surface U
-  CHECK(soup.face_colors[2] == Color(0, 0, 1));     // c3: the instance's surface B
+  REQUIRE(test::face_colors(soup).size() == 6);
+  CHECK(test::face_colors(soup)[0] == Color(0, 0.9f, 0));  // c1: surface G
+  CHECK(test::face_colors(soup)[1] == Color(0, 0.5f, 1));  // c2: surface U
+  CHECK(test::face_colors(soup)[2] == Color(0, 0, 1));     // c3: the instance's surface B
   CHECK(soup.face_names[0] == "cube1_c1");
 }
 

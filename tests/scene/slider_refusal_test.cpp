@@ -8,6 +8,7 @@
 
 #include "nome/error.hpp"
 #include "scene/fresh_scene_oracle.hpp"
+#include "support/face_colors.hpp"
 
 using namespace nome;
 
@@ -50,7 +51,7 @@ Snapshot snapshot(const SceneDocument& doc) {
   Snapshot out{doc.scene()->combined_soup(), {}, {}, {}, doc.pipeline_input().soup};
   for (const auto& instance : doc.scene()->instances()) {
     out.instance_positions.push_back(instance.geometry.soup.positions);
-    out.instance_colors.push_back(instance.geometry.soup.face_colors);
+    out.instance_colors.push_back(test::face_colors(instance.geometry.soup));
   }
   for (const auto& p : doc.scene()->parameters()) out.values.push_back(p.value);
   return out;
@@ -63,7 +64,7 @@ void check_unchanged(const SceneDocument& doc, const Snapshot& before) {
   CHECK(now.instance_colors == before.instance_colors);
   CHECK(now.combined.positions == before.combined.positions);
   CHECK(now.combined.face_vertices == before.combined.face_vertices);
-  CHECK(now.combined.face_colors == before.combined.face_colors);
+  CHECK(test::face_colors(now.combined) == test::face_colors(before.combined));
   CHECK(now.input.positions == before.input.positions);
   CHECK(now.input.face_vertices == before.input.face_vertices);
 }

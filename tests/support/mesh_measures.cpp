@@ -15,4 +15,11 @@ double signed_volume(const Mesh& mesh) {
   return volume;
 }
 
+Vec3 face_centre(const PolygonSoup& soup, Index f) {
+  Vec3 sum(0.0);
+  for (Index k = soup.face_offsets[f]; k < soup.face_offsets[f + 1]; ++k)
+    sum += soup.positions[soup.face_vertices[k]];
+  return sum / double(soup.face_offsets[f + 1] - soup.face_offsets[f]);
+}
+
 }  // namespace nome::test

@@ -8,4 +8,7 @@ namespace nome::test {
 // surface's faces are oriented outward.
 double signed_volume(const Mesh& mesh);
 
+// The mean of face f's corners.
+Vec3 face_centre(const PolygonSoup& soup, Index f);
+
 }  // namespace nome::test

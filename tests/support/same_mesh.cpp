@@ -31,7 +31,7 @@ void check_same_mesh(const Mesh& a, const Mesh& b) {
   }
   CHECK(a.num_components() == b.num_components());
   for (Index f = 0; f < a.num_faces(); ++f) CHECK(a.face_component(f) == b.face_component(f));
-  CHECK(a.face_colors() == b.face_colors());
+  CHECK(a.face_attributes() == b.face_attributes());
 }
 
 }  // namespace nome::test

@@ -146,6 +146,7 @@ std::vector<PolygonSoup> split_faces(const PolygonSoup& soup, const std::vector<
       part_of_face.empty() ? 0 : *std::max_element(part_of_face.begin(), part_of_face.end()) + 1;
   std::vector<PolygonSoup> parts(num_parts);
   std::vector<std::vector<Index>> copies(num_parts, std::vector<Index>(soup.num_vertices(), no_index));
+  std::vector<std::vector<Index>> part_faces(num_parts);
   for (Index f = 0; f < soup.num_faces(); ++f) {
     PolygonSoup& part = parts[part_of_face[f]];
     std::vector<Index>& copy = copies[part_of_face[f]];
@@ -160,8 +161,10 @@ std::vector<PolygonSoup> split_faces(const PolygonSoup& soup, const std::vector<
     }
     part.add_face(face);
     if (!soup.face_names.empty()) part.face_names.push_back(soup.face_names[f]);
-    if (!soup.face_colors.empty()) part.face_colors.push_back(soup.face_colors[f]);
+    part_faces[part_of_face[f]].push_back(f);
   }
+  for (size_t i = 0; i < parts.size(); ++i)
+    parts[i].face_attributes = carried(soup.face_attributes, part_faces[i]);
   return parts;
 }
 

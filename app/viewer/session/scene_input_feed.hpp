@@ -10,8 +10,8 @@
 namespace nome::viewer {
 
 // Hands a session's inputs to one pipeline by the change signal alone: a new topology version replaces
-// the pipeline's input, new positions of the version it has move its vertices, anything else changes
-// nothing. No polygon is looked at to decide.
+// the pipeline's input, new positions of the version it has move its vertices, new face attributes (a
+// colour) replace the scene stage's, anything else changes nothing. No polygon is looked at to decide.
 class SceneInputFeed {
  public:
   void feed(Pipeline& pipeline, const SceneInput& input);
@@ -19,11 +19,13 @@ class SceneInputFeed {
   void forget() {
     version_.reset();
     positions_.reset();
+    face_attributes_.reset();
   }
 
  private:
   std::optional<std::uint64_t> version_;
   std::shared_ptr<const Buffer<Vec3>> positions_;
+  std::shared_ptr<const Attributes> face_attributes_;
 };
 
 }  // namespace nome::viewer

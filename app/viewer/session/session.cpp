@@ -8,6 +8,7 @@
 #include "nome/io/read_polygons.hpp"
 #include "nome/io/read_scene.hpp"
 #include "nome/io/sif.hpp"
+#include "nome/mesh/input_faces.hpp"
 
 namespace nome::viewer {
 namespace {
@@ -50,15 +51,26 @@ Session Session::restore(const std::filesystem::path& document, const std::files
 }
 
 void Session::update_input() {
-  // A slider that only moved vertices takes their positions alone: no polygons, names or parts again.
+  // A slider that only moved vertices takes their positions alone: no polygons, names or parts again; a
+  // colour takes the faces' attributes alone.
   if (!polygons_ || document_.input_topology_version() != topology_version_) {
     auto input = std::make_shared<PipelineInput>(document_.pipeline_input());
+    // Every stage's faces then know theirs: picking a face of the smoothed solid finds its statement.
+    mark_input_faces(input->soup);
     positions_ = std::make_shared<const Buffer<Vec3>>(input->soup.positions);
+    face_attributes_ = std::make_shared<const Attributes>(input->soup.face_attributes);
     parts_ = document_.face_parts(*input);
     polygons_ = std::move(input);
     topology_version_ = document_.input_topology_version();
+    attributes_version_ = document_.input_attributes_version();
   } else {
     positions_ = std::make_shared<const Buffer<Vec3>>(document_.pipeline_positions());
+    if (document_.input_attributes_version() != attributes_version_) {
+      Attributes faces = document_.pipeline_face_attributes();
+      mark_input_faces(faces, polygons_->soup.num_faces());
+      face_attributes_ = std::make_shared<const Attributes>(std::move(faces));
+      attributes_version_ = document_.input_attributes_version();
+    }
   }
   ++version_;
 }
@@ -66,6 +78,7 @@ void Session::update_input() {
 PipelineInput Session::pipeline_input() const {
   PipelineInput input = *polygons_;
   input.soup.positions = *positions_;
+  input.soup.face_attributes = *face_attributes_;
   return input;
 }
 

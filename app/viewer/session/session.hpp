@@ -22,6 +22,8 @@ struct SceneInput {
   std::shared_ptr<const PipelineInput> polygons;
   std::shared_ptr<const Buffer<Vec3>> positions;
   std::uint64_t topology_version = 0;
+  // The faces' current attributes (a colour changed since the polygons were made: the same topology).
+  std::shared_ptr<const Attributes> face_attributes;
 };
 
 // The file open in a window: the kernel's SceneDocument (the scene or flat geometry and its edits) plus
@@ -45,7 +47,7 @@ class Session {
   // temporary faces (face_parts() says how many of each).
   // A copy, with the current positions.
   PipelineInput pipeline_input() const;
-  SceneInput scene_input() const { return {polygons_, positions_, topology_version_}; }
+  SceneInput scene_input() const { return {polygons_, positions_, topology_version_, face_attributes_}; }
   // The polygons, names and parts of pipeline_input() without copying them; their positions may be
   // older than positions().
   const PolygonSoup& polygons() const { return polygons_->soup; }
@@ -53,6 +55,10 @@ class Session {
   const FaceParts& face_parts() const { return parts_; }
   // Changes whenever pipeline_input() does.
   std::uint64_t version() const { return version_; }
+  // Grows when the polygons change, not when a slider only moves their vertices.
+  std::uint64_t topology_version() const { return topology_version_; }
+  // Grows when the faces' attributes (colours) change, also with a new topology.
+  std::uint64_t attributes_version() const { return attributes_version_; }
   // Unsaved changes (edits since the last save or load).
   bool is_modified() const { return is_modified_; }
   // How many edits (undo and redo included) have been accepted since the session began.
@@ -125,7 +131,8 @@ class Session {
   SceneDocument document_;
   std::shared_ptr<const PipelineInput> polygons_;
   std::shared_ptr<const Buffer<Vec3>> positions_;
-  std::uint64_t topology_version_ = 0;
+  std::shared_ptr<const Attributes> face_attributes_;
+  std::uint64_t topology_version_ = 0, attributes_version_ = 0;
   FaceParts parts_;
   std::uint64_t version_ = 0;
   bool is_modified_ = false;

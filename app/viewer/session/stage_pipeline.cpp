@@ -82,7 +82,7 @@ std::shared_ptr<const Mesh> StagePipeline::kept_copy(const Mesh& mesh) {
       // A later stage's positions change places with the copy's older ones (no 24 MB copy per tick at a
       // million faces); the scene's or merge's mesh, which the pipeline keeps as it is, is copied.
       if (!pipeline_.exchange_result_positions(copy->positions())) copy->positions() = mesh.positions();
-      copy->face_colors() = mesh.face_colors();
+      copy->face_attributes() = mesh.face_attributes();
       return copy;
     }
   return nullptr;

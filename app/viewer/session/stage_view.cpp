@@ -9,11 +9,19 @@ StageView::StageView()
         return pipeline_.run(input, settings, stop);
       }) {}
 
-bool StageView::request(const Session& session) {
+InputChange StageView::request(const Session& session) {
   const bool is_new_version = !has_request_ || session.version() != requested_version_;
-  if (!is_new_version && settings_ == requested_settings_) return false;
+  if (!is_new_version && settings_ == requested_settings_) return {};
   const bool supersedes = !has_request_;
+  InputChange change;
+  change.geometry = !has_request_ || session.topology_version() != requested_topology_version_
+                        ? Change::topology
+                    : is_new_version ? Change::positions
+                                     : Change::none;
+  change.face_attributes = !has_request_ || session.attributes_version() != requested_attributes_version_;
   requested_version_ = session.version();
+  requested_topology_version_ = session.topology_version();
+  requested_attributes_version_ = session.attributes_version();
   requested_settings_ = settings_;
   has_request_ = true;
   // The job shares the session's polygons and positions; a slider that moved vertices sends positions.
@@ -24,7 +32,7 @@ bool StageView::request(const Session& session) {
     return result;
   };
   if (supersedes || !job_.is_busy()) job_.submit(std::exchange(waiting_, nullptr));
-  return is_new_version;
+  return change;
 }
 
 std::optional<StageResult> StageView::take(std::chrono::milliseconds patience) {

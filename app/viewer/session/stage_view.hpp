@@ -13,6 +13,13 @@
 
 namespace nome::viewer {
 
+// What changed in a session's input since the last request.
+struct InputChange {
+  Change geometry = Change::none;  // the positions (a slider moved vertices), or the topology (and at first)
+  bool face_attributes = false;    // a colour changed (also with every new topology)
+  bool operator==(const InputChange&) const = default;
+};
+
 // The displayed stage: computed by jobs off the UI thread from the session's polygons and the stage
 // settings, shown when the latest one finishes; and the picking BVH of the shown mesh. The one place
 // that runs the stage pipeline.
@@ -31,8 +38,9 @@ class StageView {
   // One job runs at a time: a request made while one is in flight waits, replacing any other waiting,
   // until that one is taken (a slider dragged over a slow stage shows a result every job's time rather
   // than none until it stops). After clear() or invalidate() the request supersedes the one in flight.
-  // Returns whether the polygons changed.
-  bool request(const Session& session);
+  // Returns what changed in the session's input since the last request (nothing when only the settings
+  // changed).
+  InputChange request(const Session& session);
   // The result of the latest request if it finished within `patience`; throws the pipeline's errors.
   std::optional<StageResult> take(std::chrono::milliseconds patience);
   // The same within a frame: never waits while a stage is shown (it stays up until the new one is
@@ -66,7 +74,7 @@ class StageView {
   Evaluate evaluate_;
   BackgroundJob<std::optional<StageResult>> job_;
   BackgroundJob<std::optional<StageResult>>::Work waiting_;  // the request after the one in flight
-  std::uint64_t requested_version_ = 0;
+  std::uint64_t requested_version_ = 0, requested_topology_version_ = 0, requested_attributes_version_ = 0;
   PipelineSettings requested_settings_;
   bool has_request_ = false;
   std::optional<StageResult> shown_;

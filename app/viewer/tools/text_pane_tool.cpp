@@ -47,15 +47,15 @@ void TextPaneTool::before_draw(ToolContext& context) {
 std::optional<scene::SourcePlace> TextPaneTool::selection_statement(const ToolContext& context) const {
   const StageResult* shown = context.stage.shown();
   const Session* session = context.sessions.session();
-  if (!shown || !session || !is_editable(shown->stage)) return std::nullopt;
-  // The shown mesh has the input's faces in their order, unless it is still one made from an older input.
+  if (!shown || !session) return std::nullopt;
+  // Every stage's faces carry the input face they came from; a mesh still made from an older input may
+  // name faces the input no longer has (face_statement then finds none) or others for a moment.
   const PolygonSoup& soup = session->polygons();
   const Mesh& mesh = *shown->mesh;
-  if (mesh.num_faces() != soup.num_faces() || mesh.face_names() != soup.face_names) return std::nullopt;
   const Selection& selection = context.selection;
   const bool is_face_mode = selection.mode() == SelectionMode::face;
   if (is_face_mode && !selection.faces().empty())
-    return scene::face_statement(soup, selection.faces().back());
+    return scene::shown_face_statement(mesh, soup, selection.faces().back());
   if (!is_face_mode && !selection.vertices().empty())
     return scene::vertex_statement(mesh, soup, selection.vertices().back());
   return std::nullopt;

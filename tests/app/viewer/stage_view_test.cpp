@@ -82,3 +82,38 @@ TEST_CASE("a frame never waits for a stage in flight: the last one stays, the la
   CHECK(shown == std::vector<double>{0.2, 0.4});
   CHECK(evaluation.distances == std::vector<double>{0.1, 0.2, 0.4});
 }
+
+TEST_CASE("a request says what changed in the session's input: nothing, positions or topology", "[app]") {
+  viewer::Session session = viewer::Session::open(NOME_SOURCE_DIR "/assets/funnel_cube.nome");
+  std::vector<double> distances;
+  viewer::StageView view([&](const viewer::SceneInput&, const PipelineSettings& settings, nome::stop_token) {
+    distances.push_back(settings.offset_distance);
+    return std::optional<viewer::StageResult>();
+  });
+  auto requested = [&] {
+    const viewer::InputChange change = view.request(session);
+    view.take(10s);
+    CHECK(change.face_attributes == (change.geometry == Change::topology));
+    return change.geometry;
+  };
+  CHECK(requested() == Change::topology);  // the first
+  CHECK(requested() == Change::none);
+  view.settings().offset_distance = 0.25;  // the stage changes, the input does not
+  CHECK(requested() == Change::none);
+  CHECK(distances.back() == 0.25);
+  session.set_parameter("fp_h", 0.3);  // moves vertices
+  CHECK(requested() == Change::positions);
+  session.set_parameter("fp_n", 5);  // another number of faces
+  CHECK(requested() == Change::topology);
+  session.set_parameter("fp_h", 0.4);
+  session.set_parameter("fp_h", 0.5);
+  CHECK(requested() == Change::positions);
+  view.invalidate();
+  CHECK(requested() == Change::topology);
+  CHECK(distances.size() == 6);
+  session.set_instance_color("cf_fun1", Color(1.0f, 0.0f, 0.0f));  // a colour: the same topology
+  const viewer::InputChange colored = view.request(session);
+  CHECK(colored.geometry == Change::positions);
+  CHECK(colored.face_attributes);
+  view.take(10s);
+}

@@ -7,6 +7,8 @@
 #include "app/viewer_support.hpp"
 #include "nome/io/read_scene.hpp"
 #include "nome/mesh/glue_faces.hpp"
+#include "nome/mesh/input_faces.hpp"
+#include "nome/ops/pipeline.hpp"
 #include "support/placed_scene.hpp"
 #include "viewer/tools/text_pane_tool.hpp"
 #include "viewer/window.hpp"
@@ -116,6 +118,54 @@ TEST_CASE("a face or vertex selected in the view maps to the line of its stateme
   CHECK_THAT(texts[0], Catch::Contains(is_up ? "statement line 7" : "statement line 8"));
   CHECK_THAT(texts[1], Catch::Contains("statement line 2"));
   CHECK_THAT(texts[2], Catch::Contains("statement line 7"));
+}
+
+TEST_CASE("a face picked on the smoothed solid maps to the line of the statement it came from", "[app]") {
+  const std::string dir = test::private_scratch_dir("viewer_text_solid_statement");
+  const std::string scene =
+      "funnel fu (4 1 0.5 1) endfunnel\n"
+      "point a (3 0 0) endpoint\n"
+      "point b (5 0 0) endpoint\n"
+      "point c (5 2 0) endpoint\n"
+      "point d (3 2 0) endpoint\n"
+      "mesh m\n"
+      "  face q (a b c d) endface\n"
+      "endmesh\n"
+      "instance i1 fu endinstance\n"
+      "instance i2 m endinstance\n";
+  write(dir + "/s.nome", scene);
+  // The solid the viewer shows after `subdiv 1` and `offset 0.1`: a face made from a funnel face and one
+  // made from the quad, each where a click shows it.
+  PolygonSoup soup = read_scene(dir + "/s.nome").combined_soup();
+  REQUIRE(soup.num_faces() == 5);
+  mark_input_faces(soup);
+  Pipeline pipeline;
+  pipeline.set_input({soup, {}, Joining::across_edges});
+  PipelineSettings settings;
+  settings.subdivision_levels = 1;
+  settings.offset_distance = 0.1;
+  settings.stage = Stage::offset;
+  const Mesh solid = pipeline.run(settings);
+  const auto projection = test::viewer_projection(solid, 20.0, 60.0);
+  std::optional<glm::dvec2> on_funnel, on_quad;
+  for (Index f = 0; f < solid.num_faces(); ++f) {
+    const Index input = *input_face(solid, f);
+    std::optional<glm::dvec2>& click = input == 4 ? on_quad : on_funnel;
+    if (!click) click = test::face_click(solid, projection, f);
+  }
+  REQUIRE(on_funnel);
+  REQUIRE(on_quad);
+  const std::string script = test::write_script(
+      dir, "subdiv 1\noffset 0.1\nview 20 60\nmode face\n" + test::click_line(*on_funnel) +
+               "state\naction clear-selection\n" + test::click_line(*on_quad) + "state\nquit\n");
+  const auto r = test::run_window(dir + "/s.nome --script " + script);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto texts = text_states(r.err);
+  REQUIRE(texts.size() == 2);
+  CHECK_THAT(texts[0], Catch::Contains("statement line 1"));
+  CHECK_THAT(texts[1], Catch::Contains("statement line 7"));
+  CHECK_THAT(r.err, Catch::Contains("offset stage"));
 }
 
 TEST_CASE("applying a good edit changes the geometry, and saving writes the text without a reload", "[app]") {

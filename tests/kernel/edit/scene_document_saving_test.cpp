@@ -5,6 +5,9 @@
 #include <optional>
 
 #include "nome/edit/scene_document.hpp"
+#include "nome/error.hpp"
+#include "nome/mesh/color_attribute.hpp"
+#include "nome/ops/pipeline.hpp"
 #include "scene/scene_support.hpp"
 #include "support/scratch_files.hpp"
 #include "support/shared_examples.hpp"
@@ -148,4 +151,49 @@ TEST_CASE("an .anom file evaluates the document once and replaces its consolidat
                                    "bad.anom"),
                     Catch::Contains("bad.anom:2:13: unknown vertex 'fun2_hc9'"));
   CHECK(doc.edits().consolidated_faces().size() == 1);
+}
+
+TEST_CASE(
+    "a colour changes the document's face attributes alone, and the pipeline carries it without a rebuild",
+    "[kernel]") {
+  SceneDocument doc = read_document(NOME_SOURCE_DIR "/assets/funnel_cube.nome");
+  REQUIRE(doc.edits().delete_faces({doc.pipeline_input().soup.face_names[0]}).applied);
+  const PipelineInput input = doc.pipeline_input();
+  const std::uint64_t topology = doc.input_topology_version(), attributes = doc.input_attributes_version();
+  Pipeline pipeline;
+  pipeline.replace_input(input);
+  PipelineSettings settings;
+  settings.subdivision_levels = 1;
+  settings.offset_distance = 0.02;
+  settings.subdivision_after = 1;
+  pipeline.run(settings);
+  const std::uint64_t builds = build_mesh_count();
+
+  doc.set_instance_color("cf_fun2", Color(1.0f, 0.0f, 0.0f));
+  CHECK(doc.input_topology_version() == topology);
+  CHECK(doc.input_attributes_version() > attributes);
+  const Attributes faces = doc.pipeline_face_attributes();
+  // Exactly what a whole new input would hold, the deleted face left out.
+  CHECK(faces == doc.pipeline_input().soup.face_attributes);
+  for (Index f = 0; f < input.soup.num_faces(); ++f)
+    CHECK((face_color(faces, f) == Color(1.0f, 0.0f, 0.0f)) ==
+          input.soup.face_names[f].starts_with("cf_fun2_"));
+
+  pipeline.set_input_face_attributes(faces);
+  const Mesh& solid = pipeline.run(settings);
+  CHECK(build_mesh_count() == builds);
+  CHECK(pipeline.work(Stage::subdivided) == StageWork::positions);
+  CHECK(pipeline.work(Stage::subdivided_offset) == StageWork::positions);
+  // The same colours as a pipeline that built the coloured input from the start.
+  Pipeline fresh;
+  fresh.replace_input(doc.pipeline_input());
+  CHECK(solid.face_attributes() == fresh.run(settings).face_attributes());
+  CHECK(find_colors(solid.face_attributes()));
+  // Undone: the colours go again, still without a rebuild (the fresh pipeline built one).
+  const std::uint64_t builds_before_undo = build_mesh_count();
+  doc.set_instance_surface("cf_fun2", std::nullopt);
+  pipeline.set_input_face_attributes(doc.pipeline_face_attributes());
+  CHECK_FALSE(find_colors(pipeline.run(settings).face_attributes()));
+  CHECK(build_mesh_count() == builds_before_undo);
+  CHECK_THROWS_AS(Pipeline().set_input_face_attributes(faces), InvalidInputError);
 }

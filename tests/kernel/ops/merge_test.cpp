@@ -5,6 +5,7 @@
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/merge.hpp"
+#include "support/face_colors.hpp"
 #include "support/same_report.hpp"
 #include "support/shapes.hpp"
 
@@ -190,15 +191,15 @@ TEST_CASE("names, colours and sharp marks survive the merge", "[kernel]") {
   b.vertex_names = {"b0", "b1", "b2", "b3"};
   a.face_names = {"left"};
   b.face_names = {"right"};
-  a.face_colors = {Color(1, 0, 0)};
-  b.face_colors = {Color(0, 0, 1)};
+  test::set_face_colors(a.face_attributes, {Color(1, 0, 0)});
+  test::set_face_colors(b.face_attributes, {Color(0, 0, 1)});
   b.sharp_edges = {{0, 2}};
   const MergeResult merged = merge_meshes(build_parts({a, b}));
   const Mesh& m = merged.mesh;
   REQUIRE(m.num_faces() == 2);
   CHECK(m.face_names() == std::vector<std::string>{"left", "right"});
-  CHECK(m.face_colors()[0] == Color(1, 0, 0));
-  CHECK(m.face_colors()[1] == Color(0, 0, 1));
+  CHECK(test::face_colors(m)[0] == Color(1, 0, 0));
+  CHECK(test::face_colors(m)[1] == Color(0, 0, 1));
   // b0 joined a1, b2 joined a3: the merged vertex keeps the lower-numbered member's name.
   CHECK(merged.vertex_map[1] == merged.vertex_map[4 + 0]);
   CHECK(m.vertex_names()[merged.vertex_map[4 + 0]] == "a1");

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "nome/error.hpp"
+#include "nome/mesh/color_attribute.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/offset.hpp"
 #include "nome/ops/offset_surface.hpp"
@@ -141,7 +142,7 @@ TEST_CASE("an OffsetSurface reads as offset()'s positions and polygons, bit for 
 TEST_CASE("offset_into rebuilds in the blocks of the solid it replaces what offset() builds", "[kernel]") {
   PolygonSoup band = test::mobius_band(12, 3);
   for (Index f = 0; f < band.num_faces(); ++f)
-    band.face_colors.push_back(Color(0.1f * float(f % 7), 0.5f, 1.0f));
+    add_colors(band.face_attributes).values().push_back(Color(0.1f * float(f % 7), 0.5f, 1.0f));
   std::mt19937 rng{7};
   // Larger, smaller, then larger again; with and without borders, Möbius edges and colours.
   const PolygonSoup shapes[] = {

@@ -4,8 +4,10 @@
 #include <random>
 
 #include "nome/error.hpp"
+#include "nome/mesh/color_attribute.hpp"
 #include "nome/mesh/topology_report.hpp"
 #include "nome/ops/subdivide.hpp"
+#include "support/face_colors.hpp"
 #include "support/same_mesh.hpp"
 #include "support/shapes.hpp"
 
@@ -91,12 +93,13 @@ TEST_CASE("subdivision preserves chi, orientability and borders of every part", 
 
 TEST_CASE("child faces keep their parent's orientation and colour", "[kernel]") {
   PolygonSoup soup = test::mobius_band(5, 2);
-  for (Index f = 0; f < soup.num_faces(); ++f) soup.face_colors.push_back(Color(float(f), 0.f, 1.f));
+  for (Index f = 0; f < soup.num_faces(); ++f)
+    add_colors(soup.face_attributes).values().push_back(Color(float(f), 0.f, 1.f));
   const Mesh base = build_mesh(soup);
   const Mesh child = subdivide(base, {2, SubdivisionRule::classic});
-  REQUIRE(child.face_colors().size() == child.num_faces());
+  REQUIRE(test::face_colors(child).size() == child.num_faces());
   for (Index f = 0; f < child.num_faces(); ++f)
-    CHECK(child.face_colors()[f] == base.face_colors()[base.corner_face(f >> 2)]);
+    CHECK(test::face_colors(child)[f] == test::face_colors(base)[base.corner_face(f >> 2)]);
   // Children of a face are consecutive and run the same way round: the quad at parent corner c starts at
   // c's vertex point and goes on to the edge point of the edge leaving c.
   const Mesh level1 = subdivide(base, {1, SubdivisionRule::classic});

@@ -95,6 +95,7 @@ void Document::note_new_topology() {
   // version for the one it has.
   static std::atomic<std::uint64_t> versions{0};
   input_topology_version_ = ++versions;
+  ++input_attributes_version_;
   edited_vertex_sources_ = edited_sources(consolidated_);
   const std::vector<Index> temporary = edited_sources(temporary_);
   edited_vertex_sources_.insert(edited_vertex_sources_.end(), temporary.begin(), temporary.end());
@@ -332,8 +333,29 @@ std::vector<UnresolvedEdit> Document::unresolved() const {
   return out;
 }
 
-PolygonSoup Document::scene_soup() const {
+void Document::set_scene_face_attributes(Attributes faces) {
+  for (const Attributes::Entry& e : faces.entries())
+    if (e.column->size() > scene_.num_faces())
+      throw InvalidInputError("Document::set_scene_face_attributes: '" + e.name +
+                              "' has more values than the " + std::to_string(scene_.num_faces()) +
+                              " scene faces");
+  scene_.face_attributes = std::move(faces);
+  ++input_attributes_version_;
+}
+
+Attributes Document::pipeline_face_attributes() const {
+  return carried(scene_.face_attributes, kept_scene_faces());
+}
+
+std::vector<Index> Document::kept_scene_faces() const {
   const std::unordered_set<std::string> deleted(deleted_.begin(), deleted_.end());
+  std::vector<Index> kept;
+  for (Index f = 0; f < scene_.num_faces(); ++f)
+    if (f >= scene_.face_names.size() || !deleted.count(scene_.face_names[f])) kept.push_back(f);
+  return kept;
+}
+
+PolygonSoup Document::scene_soup() const {
   PolygonSoup soup;
   soup.positions = scene_.positions;
   soup.vertex_names = scene_.vertex_names;
@@ -346,15 +368,15 @@ PolygonSoup Document::scene_soup() const {
       soup.add_sharp_edge(u, w, e.weight);
   }
   const std::unordered_set<Index> holes(scene_.hole_faces.begin(), scene_.hole_faces.end());
-  for (Index f = 0; f < scene_.num_faces(); ++f) {
-    if (f < scene_.face_names.size() && deleted.count(scene_.face_names[f])) continue;
+  const std::vector<Index> kept = kept_scene_faces();
+  for (const Index f : kept) {
     if (holes.count(f)) soup.hole_faces.push_back(soup.num_faces());
     soup.note_origin(scene_.origin(f));
     soup.add_face(std::span(scene_.face_vertices)
                       .subspan(scene_.face_offsets[f], scene_.face_offsets[f + 1] - scene_.face_offsets[f]));
     if (!scene_.face_names.empty()) soup.face_names.push_back(scene_.face_names[f]);
-    if (!scene_.face_colors.empty()) soup.face_colors.push_back(scene_.face_colors[f]);
   }
+  soup.face_attributes = carried(scene_.face_attributes, kept);
   return soup;
 }
 

@@ -71,13 +71,13 @@ std::vector<scene::InstanceId> SceneDocument::set_parameter(const std::string& n
 void SceneDocument::set_instance_color(const std::string& path, Color color) {
   if (!scene_) throw InvalidInputError("colour: flat geometry has no instances");
   scene_->set_instance_color(path, color);
-  document_.set_scene_geometry(scene_->combined_soup());
+  document_.set_scene_face_attributes(scene_->combined_face_attributes());
 }
 
 void SceneDocument::set_instance_surface(const std::string& path, const std::optional<std::string>& surface) {
   if (!scene_) throw InvalidInputError("colour: flat geometry has no instances");
   scene_->set_instance_surface(path, surface);
-  document_.set_scene_geometry(scene_->combined_soup());
+  document_.set_scene_face_attributes(scene_->combined_face_attributes());
 }
 
 void SceneDocument::apply_anom(std::string_view text, const std::string& file) {

@@ -12,6 +12,7 @@
 
 #include "nome/atomic_file.hpp"
 #include "nome/error.hpp"
+#include "nome/mesh/color_attribute.hpp"
 #include "nome/mesh/normals.hpp"
 #include "nome/query/display_triangles.hpp"
 
@@ -97,7 +98,7 @@ tinygltf::Model gltf_model(const Mesh& mesh) {
   std::map<ColorKey, GltfPrimitiveData> by_color;
   for (Index t = 0; t < triangles.size(); ++t) {
     const Index f = triangles.faces[t];
-    const Color c = written_face_color(mesh.face_colors().empty() ? no_face_color : mesh.face_colors()[f]);
+    const Color c = written_face_color(face_color(mesh.face_attributes(), f));
     GltfPrimitiveData& p = by_color[{c.r, c.g, c.b}];
     for (Index corner : triangles.corners[t]) {
       const Index v = mesh.corner_vertex(corner);

@@ -8,6 +8,7 @@
 
 #include "nome/error.hpp"
 #include "nome/io/gltf.hpp"
+#include "nome/mesh/color_attribute.hpp"
 
 namespace nome {
 namespace {
@@ -85,7 +86,7 @@ void read_gltf_primitive(const tinygltf::Model& model, const tinygltf::Primitive
       face[k] = vertex[i];
     }
     soup.add_face(face);
-    if (!model.materials.empty()) soup.face_colors.push_back(color);
+    if (!model.materials.empty()) add_colors(soup.face_attributes).set(soup.num_faces() - 1, color);
   }
 }
 

@@ -10,6 +10,7 @@
 
 #include "nome/error.hpp"
 #include "nome/io/ply.hpp"
+#include "nome/mesh/color_attribute.hpp"
 
 namespace nome {
 namespace {
@@ -126,7 +127,12 @@ struct PlyRow {
   std::array<double, 3> position{0, 0, 0};
   std::array<double, 3> color{-1, -1, -1};
   std::vector<double> indices;
+  std::vector<double> others;  // the element's other numbers, in the order of its other properties
 };
+
+bool is_position_or_color(const std::string& name) {
+  return name == "x" || name == "y" || name == "z" || name == "red" || name == "green" || name == "blue";
+}
 
 PlyRow read_ply_row(const PlyElement& e, PlyValues& values, const std::string& file) {
   PlyRow row;
@@ -149,8 +155,24 @@ PlyRow read_ply_row(const PlyElement& e, PlyValues& values, const std::string& f
       if (property.name == axes[k]) row.position[k] = v;
       if (property.name == channels[k]) row.color[k] = is_real ? v : v / 255.0;
     }
+    if (!is_position_or_color(property.name)) row.others.push_back(v);
   }
   return row;
+}
+
+// A face's other numbers become face attributes of their properties' names: whole numbers for integer
+// types, floats for the others.
+void add_face_numbers(const PlyElement& e, const PlyRow& row, Index face, Attributes& faces) {
+  std::size_t k = 0;
+  for (const PlyProperty& property : e.properties) {
+    if (!property.count_type.empty() || is_position_or_color(property.name)) continue;
+    const double v = row.others[k++];
+    if (property.type.find("int") != std::string::npos || property.type.find("char") != std::string::npos ||
+        property.type.find("short") != std::string::npos)
+      faces.add<std::int32_t>(property.name, 0).set(face, std::int32_t(v));
+    else
+      faces.add<float>(property.name, 0.0f).set(face, float(v));
+  }
 }
 
 }  // namespace
@@ -185,12 +207,14 @@ PolygonSoup read_ply(const std::filesystem::path& path) {
           face.push_back(welded_id[std::size_t(v)]);
         }
         soup.add_face(face);
+        add_face_numbers(e, row, soup.num_faces() - 1, soup.face_attributes);
         if (colors.size() == welded_id.size() && !row.indices.empty())
-          soup.face_colors.push_back(colors[std::size_t(row.indices[0])]);
+          add_colors(soup.face_attributes).set(soup.num_faces() - 1, colors[std::size_t(row.indices[0])]);
       }
     }
-  if (!soup.face_colors.empty() && soup.face_colors.size() != std::size_t(soup.num_faces()))
-    soup.face_colors.clear();
+  if (const Column<Color>* c = find_colors(soup.face_attributes);
+      c && c->size() != std::size_t(soup.num_faces()))
+    soup.face_attributes.remove(color_attribute);
   return soup;
 }
 

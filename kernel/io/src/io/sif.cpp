@@ -239,7 +239,8 @@ PolygonSoup pair_triangles(const PolygonSoup& soup, double max_fold_degrees) {
   out.positions = soup.positions;
   out.vertex_names = soup.vertex_names;
   out.sharp_edges = soup.sharp_edges;
-  const bool names = !soup.face_names.empty(), colors = !soup.face_colors.empty();
+  const bool names = !soup.face_names.empty();
+  std::vector<Index> parents;
   for (Index f = 0; f < nf; ++f) {
     if (chosen[f]) {
       out.add_face(chosen[f]->quad);
@@ -250,8 +251,9 @@ PolygonSoup pair_triangles(const PolygonSoup& soup, double max_fold_degrees) {
       continue;  // the second triangle of a chosen pair
     }
     if (names) out.face_names.push_back(soup.face_names[f]);
-    if (colors) out.face_colors.push_back(soup.face_colors[f]);
+    parents.push_back(f);
   }
+  out.face_attributes = carried(soup.face_attributes, parents);
   return out;
 }
 

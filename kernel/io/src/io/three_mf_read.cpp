@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -24,7 +26,56 @@ LengthUnit unit_of(DWORD unit) {
   }
 }
 
-ThreeMfModel::Object read_object(PLib3MFModelMeshObject* mesh, const std::filesystem::path& path) {
+std::string material_name(PLib3MFModelBaseMaterial* group, DWORD index, const std::filesystem::path& path) {
+  ULONG needed = 0;
+  check_lib3mf(lib3mf_basematerial_getnameutf8(group, index, nullptr, 0, &needed), group, path, "materials");
+  std::string name(needed + 1, '\0');
+  check_lib3mf(lib3mf_basematerial_getnameutf8(group, index, name.data(), ULONG(name.size()), &needed), group,
+               path, "materials");
+  name.resize(std::strlen(name.c_str()));
+  return name;
+}
+
+// "name=value;..." as write_3mf names a material: whole numbers become integers, others floats; a name
+// of another form (another program's "PLA") carries no numbers.
+void add_material_numbers(const std::string& name, Index triangle, Attributes& numbers) {
+  std::size_t start = 0;
+  while (start < name.size()) {
+    const std::size_t end = std::min(name.find(';', start), name.size());
+    const std::string pair = name.substr(start, end - start);
+    start = end + 1;
+    const std::size_t equals = pair.find('=');
+    if (equals == std::string::npos || equals == 0) continue;
+    const std::string key = pair.substr(0, equals), text = pair.substr(equals + 1);
+    char* rest = nullptr;
+    if (text.find_first_of(".eEn") == std::string::npos) {
+      const long v = std::strtol(text.c_str(), &rest, 10);
+      if (rest != text.c_str() && *rest == '\0')
+        numbers.add<std::int32_t>(key, 0).set(triangle, std::int32_t(v));
+    } else {
+      const float v = std::strtof(text.c_str(), &rest);
+      if (rest != text.c_str() && *rest == '\0') numbers.add<float>(key, 0.0f).set(triangle, v);
+    }
+  }
+}
+
+// A triangle's base material: its display colour, and the numbers its name holds.
+void read_material(PLib3MFModel* model, PLib3MFPropertyHandler* handler, DWORD t,
+                   ThreeMfModel::Object& object, const std::filesystem::path& path) {
+  DWORD group_id = 0, index = 0;
+  check_lib3mf(lib3mf_propertyhandler_getbasematerial(handler, t, &group_id, &index), handler, path,
+               "materials");
+  PLib3MFModelBaseMaterial* group = nullptr;
+  check_lib3mf(lib3mf_model_getbasematerialbyid(model, group_id, &group), model, path, "materials");
+  const Lib3mfHandle owned(group);
+  BYTE r = 0, g = 0, b = 0, a = 0;
+  check_lib3mf(lib3mf_basematerial_getdisplaycolor(group, index, &r, &g, &b, &a), group, path, "materials");
+  object.colors[t] = Color(r / 255.0f, g / 255.0f, b / 255.0f);
+  add_material_numbers(material_name(group, index, path), Index(t), object.numbers);
+}
+
+ThreeMfModel::Object read_object(PLib3MFModel* model, PLib3MFModelMeshObject* mesh,
+                                 const std::filesystem::path& path) {
   ThreeMfModel::Object object;
   DWORD vertex_count = 0, triangle_count = 0;
   check_lib3mf(lib3mf_meshobject_getvertexcount(mesh, &vertex_count), mesh, path, "counting vertices");
@@ -49,8 +100,12 @@ ThreeMfModel::Object read_object(PLib3MFModelMeshObject* mesh, const std::filesy
   for (DWORD t = 0; t < triangle_count; ++t) {
     eModelPropertyType type = MODELPROPERTYTYPE_NONE;
     check_lib3mf(lib3mf_propertyhandler_getpropertytype(handler, t, &type), handler, path, "colours");
-    if (type != MODELPROPERTYTYPE_COLOR) continue;
+    if (type != MODELPROPERTYTYPE_COLOR && type != MODELPROPERTYTYPE_BASEMATERIALS) continue;
     if (object.colors.empty()) object.colors.assign(triangle_count, no_face_color);
+    if (type == MODELPROPERTYTYPE_BASEMATERIALS) {
+      read_material(model, handler, t, object, path);
+      continue;
+    }
     MODELMESH_TRIANGLECOLOR_SRGB color{};
     check_lib3mf(lib3mf_propertyhandler_getcolor(handler, t, &color), handler, path, "colours");
     const MODELMESHCOLOR_SRGB& c = color.m_Colors[0];
@@ -83,7 +138,7 @@ ThreeMfModel read_3mf(const std::filesystem::path& path) {
     check_lib3mf(lib3mf_resourceiterator_getcurrent(iterator_raw, &resource), iterator_raw, path,
                  "an object");
     const Lib3mfHandle owned(resource);
-    result.objects.push_back(read_object(resource, path));
+    result.objects.push_back(read_object(raw, resource, path));
   }
   if (std::all_of(result.objects.begin(), result.objects.end(),
                   [](const ThreeMfModel::Object& o) { return o.triangles.empty(); }))

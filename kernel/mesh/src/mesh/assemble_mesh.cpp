@@ -24,7 +24,7 @@ MeshArrays take_arrays(Mesh&& mesh) {
   a.corner_signs.clear();
   a.edges.clear();
   a.num_components = 0;
-  a.face_colors.clear();
+  a.face_attributes = {};
   a.edge_sharpness.clear();
   a.vertex_sharpness.clear();
   a.face_holes.clear();

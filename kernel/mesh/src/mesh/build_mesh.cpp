@@ -77,8 +77,9 @@ void check_arrays(const PolygonSoup& soup) {
     throw InvalidInputError("build_mesh: vertex_names must be empty or one per vertex");
   if (!soup.face_names.empty() && soup.face_names.size() != nf)
     throw InvalidInputError("build_mesh: face_names must be empty or one per face");
-  if (!soup.face_colors.empty() && soup.face_colors.size() != nf)
-    throw InvalidInputError("build_mesh: face_colors must be empty or one per face");
+  for (const Attributes::Entry& e : soup.face_attributes.entries())
+    if (e.column->size() > nf)
+      throw InvalidInputError("build_mesh: face attribute '" + e.name + "' has more values than faces");
 }
 
 // Degree, index range, repeated vertices (a stamp array makes the check O(degree)).
@@ -316,7 +317,7 @@ Mesh build_mesh_from(PolygonSoup& soup) {
   Mesh m;
   m.vertex_names_ = std::move(soup.vertex_names);
   m.face_names_ = std::move(soup.face_names);
-  m.arrays_.face_colors = std::move(soup.face_colors);
+  m.arrays_.face_attributes = std::move(soup.face_attributes);
   m.arrays_.positions = std::move(soup.positions);
   m.arrays_.face_offsets = std::move(soup.face_offsets);
   m.arrays_.corner_vertices = std::move(soup.face_vertices);
@@ -349,7 +350,7 @@ Mesh build_mesh_from(PolygonSoup& soup) {
   } catch (...) {
     soup.vertex_names = std::move(m.vertex_names_);
     soup.face_names = std::move(m.face_names_);
-    soup.face_colors = std::move(m.arrays_.face_colors);
+    soup.face_attributes = std::move(m.arrays_.face_attributes);
     soup.positions = std::move(m.arrays_.positions);
     soup.face_offsets = std::move(m.arrays_.face_offsets);
     soup.face_vertices = std::move(m.arrays_.corner_vertices);
@@ -442,7 +443,7 @@ PolygonSoup to_soup(const Mesh& mesh) {
   soup.face_vertices = mesh.corner_vertices();
   soup.vertex_names = mesh.vertex_names();
   soup.face_names = mesh.face_names();
-  soup.face_colors = mesh.face_colors();
+  soup.face_attributes = mesh.face_attributes();
   add_features_to_soup(mesh, soup);
   return soup;
 }

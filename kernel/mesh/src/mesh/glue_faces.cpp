@@ -132,7 +132,7 @@ GluedFaces glue_faces(const PolygonSoup& soup) {
   glued.hole_faces = soup.hole_faces;
   glued.face_offsets = soup.face_offsets;
   glued.face_names = soup.face_names;
-  glued.face_colors = soup.face_colors;
+  glued.face_attributes = soup.face_attributes;
   out.mesh = build_mesh(std::move(glued));
   return out;
 }

@@ -8,9 +8,9 @@ namespace {
 
 bool is_empty(const PolygonSoup& s) {
   return s.positions.empty() && s.face_vertices.empty() && s.face_offsets.size() == 1 &&
-         s.vertex_names.empty() && s.face_names.empty() && s.face_colors.empty() && s.sharp_edges.empty() &&
-         s.sharp_edge_weights.empty() && s.sharp_vertices.empty() && s.hole_faces.empty() &&
-         s.face_origins.empty() && !s.grid;
+         s.vertex_names.empty() && s.face_names.empty() && s.face_attributes.empty() &&
+         s.sharp_edges.empty() && s.sharp_edge_weights.empty() && s.sharp_vertices.empty() &&
+         s.hole_faces.empty() && s.face_origins.empty() && !s.grid;
 }
 
 }  // namespace
@@ -33,11 +33,10 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   }
   const bool has_names = !into.vertex_names.empty() || !part.vertex_names.empty();
   const bool has_face_names = !into.face_names.empty() || !part.face_names.empty();
-  const bool has_colors = !into.face_colors.empty() || !part.face_colors.empty();
   if (has_names) into.vertex_names.resize(into.positions.size());
   if (has_face_names) into.face_names.resize(into.num_faces());
-  if (has_colors) into.face_colors.resize(into.num_faces(), no_face_color);
 
+  into.face_attributes.append(part.face_attributes, face_base);
   into.positions.insert(into.positions.end(), part.positions.begin(), part.positions.end());
   for (Index v : part.face_vertices) into.face_vertices.push_back(v + base);
   for (size_t f = 1; f < part.face_offsets.size(); ++f)
@@ -49,10 +48,6 @@ void append_soup(PolygonSoup& into, const PolygonSoup& part) {
   if (has_face_names) {
     into.face_names.append(part.face_names);
     into.face_names.resize(into.num_faces());
-  }
-  if (has_colors) {
-    into.face_colors.insert(into.face_colors.end(), part.face_colors.begin(), part.face_colors.end());
-    into.face_colors.resize(into.num_faces(), no_face_color);
   }
   // Weights: where only one side has them, the other's sharp edges are infinitely sharp.
   if (!into.sharp_edge_weights.empty() || !part.sharp_edge_weights.empty()) {

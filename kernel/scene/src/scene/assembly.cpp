@@ -18,20 +18,14 @@ bool is_same_topology(const PolygonSoup& a, const PolygonSoup& b) {
 
 // Appends the whole piece: its arrays in bulk. Returns whether any of its faces has a colour of its own.
 bool append_whole_piece(Piece& out, const Piece& piece) {
-  const Index base = out.soup.num_vertices(), faces_before = out.soup.num_faces();
+  const Index base = out.soup.num_vertices();
   append_soup(out.soup, piece.soup);
-  if (out.has_face_colors() || piece.has_face_colors()) {
-    out.face_has_color.resize(faces_before, 0);
-    out.face_has_color.insert(out.face_has_color.end(), piece.face_has_color.begin(),
-                              piece.face_has_color.end());
-    out.face_has_color.resize(out.soup.num_faces(), 0);
-  }
   for (const RimLine& r : piece.rims) {
     RimLine rim{r.name, r.vertices, r.is_loop, r.color};
     for (Index& v : rim.vertices) v += base;
     out.rims.push_back(std::move(rim));
   }
-  return std::find(piece.face_has_color.begin(), piece.face_has_color.end(), 1) != piece.face_has_color.end();
+  return piece.has_face_colors();
 }
 
 // Appends the piece's faces but the deleted ones, and its vertices unless every face using them is
@@ -53,8 +47,8 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
   std::vector<Index> new_id(s.num_vertices(), no_index);
   for (Index v = 0; v < s.num_vertices(); ++v)
     if (is_kept[v] || !is_used[v]) new_id[v] = out.add_vertex(s.positions[v], s.vertex_names[v]);
-  bool has_color = false;
-  std::vector<Index> corners;
+  const Index faces_before = out.soup.num_faces();
+  std::vector<Index> kept_faces, corners;
   for (Index f = 0; f < s.num_faces(); ++f) {
     if (is_deleted[f]) continue;
     corners.clear();
@@ -62,11 +56,11 @@ bool append_piece(Piece& out, const Piece& piece, const std::unordered_set<std::
       corners.push_back(new_id[s.face_vertices[c]]);
     out.soup.note_origin(s.origin(f));
     out.add_face(corners, s.face_names[f]);
-    if (piece.has_face_color(f)) {
-      out.set_face_color(out.soup.num_faces() - 1, s.face_colors[f]);
-      has_color = true;
-    }
+    kept_faces.push_back(f);
   }
+  out.soup.face_attributes.append(carried(s.face_attributes, kept_faces), faces_before);
+  bool has_color = false;
+  for (Index f : kept_faces) has_color = has_color || piece.has_face_color(f);
   for (size_t i = 0; i < s.sharp_edges.size(); ++i) {
     const auto [a, b] = s.sharp_edges[i];
     if (new_id[a] != no_index && new_id[b] != no_index)
@@ -92,12 +86,7 @@ void Scene::assemble(Index top) {
   bool has_color = false;
   for (const Placement& p : placements_)
     if (p.top == top && is_leaf(p)) has_color = append_piece(out, p.world, deleted) || has_color;
-  if (!has_color) {
-    out.soup.face_colors.clear();
-  } else {
-    for (Index f = 0; f < out.soup.num_faces(); ++f)
-      if (!out.has_face_color(f)) out.soup.face_colors[f] = no_face_color;
-  }
+  if (!has_color) out.soup.face_attributes.remove(color_attribute);
   SceneInstance& inst = instances_[top];
   if (!is_same_topology(inst.geometry.soup, out.soup) || inst.geometry_version == 0) ++inst.topology_version;
   ++inst.geometry_version;
@@ -128,6 +117,16 @@ Buffer<Vec3> Scene::combined_positions() const {
   out.reserve(count);
   for (const SceneInstance& i : instances_)
     out.insert(out.end(), i.geometry.soup.positions.begin(), i.geometry.soup.positions.end());
+  return out;
+}
+
+Attributes Scene::combined_face_attributes() const {
+  Attributes out;
+  Index faces = 0;
+  for (const SceneInstance& i : instances_) {
+    out.append(i.geometry.soup.face_attributes, faces);
+    faces += i.geometry.soup.num_faces();
+  }
   return out;
 }
 

@@ -25,10 +25,10 @@ bool has_same_topology(const Piece& a, const Piece& b) {
   const PolygonSoup& t = b.soup;
   return s.positions.size() == t.positions.size() && s.face_offsets == t.face_offsets &&
          s.face_vertices == t.face_vertices && s.vertex_names == t.vertex_names &&
-         s.face_names == t.face_names && s.face_colors == t.face_colors && s.sharp_edges == t.sharp_edges &&
-         s.sharp_edge_weights == t.sharp_edge_weights && s.sharp_vertices == t.sharp_vertices &&
-         s.hole_faces == t.hole_faces && same_origins(s.face_origins, t.face_origins) && s.grid == t.grid &&
-         a.face_has_color == b.face_has_color && same_rims(a.rims, b.rims);
+         s.face_names == t.face_names && s.face_attributes == t.face_attributes &&
+         s.sharp_edges == t.sharp_edges && s.sharp_edge_weights == t.sharp_edge_weights &&
+         s.sharp_vertices == t.sharp_vertices && s.hole_faces == t.hole_faces &&
+         same_origins(s.face_origins, t.face_origins) && s.grid == t.grid && same_rims(a.rims, b.rims);
 }
 
 }  // namespace nome::scene

@@ -22,4 +22,12 @@ RimLines scene_rim_lines(const Scene& scene) {
   return rims;
 }
 
+std::vector<Vec3> scene_rim_positions(const Scene& scene) {
+  std::vector<Vec3> positions;
+  for (const SceneInstance& instance : scene.instances())
+    for (const RimLine& rim : instance.geometry.rims)
+      for (Index v : rim.vertices) positions.push_back(instance.geometry.soup.positions[v]);
+  return positions;
+}
+
 }  // namespace nome::scene

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 
+#include "nome/mesh/input_faces.hpp"
+
 namespace nome::scene {
 namespace {
 
@@ -37,12 +39,21 @@ std::optional<SourcePlace> face_statement(const PolygonSoup& soup, Index face) {
   return parse_source_place(soup.origin(face));
 }
 
+std::optional<SourcePlace> shown_face_statement(const Mesh& shown, const PolygonSoup& soup, Index face) {
+  if (face >= shown.num_faces()) return std::nullopt;
+  if (shown.face_attributes().find<Index>(input_face_attribute)) {
+    const std::optional<Index> input = input_face(shown, face);
+    return input ? face_statement(soup, *input) : std::nullopt;
+  }
+  return face_statement(soup, face);
+}
+
 std::optional<SourcePlace> vertex_statement(const Mesh& shown, const PolygonSoup& soup, Index vertex) {
   if (vertex >= shown.num_vertices()) return std::nullopt;
   Index first = no_index;
   for (Index corner : shown.vertex_corners(vertex)) first = std::min(first, shown.corner_face(corner));
   if (first == no_index) return std::nullopt;
-  return face_statement(soup, first);
+  return shown_face_statement(shown, soup, first);
 }
 
 }  // namespace nome::scene

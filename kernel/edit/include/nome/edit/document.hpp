@@ -106,9 +106,18 @@ class Document {
   // The positions of pipeline_input()'s polygons alone: what a slider that only moved the scene's vertices
   // changes (see input_topology_version). No names, no polygons, no lookups by name.
   Buffer<Vec3> pipeline_positions() const;
-  // A new number, unique among all documents, whenever pipeline_input() has other polygons, names, colours
-  // or sharpness than before (new scene geometry, an edit, undo, redo); stays when only vertices moved.
+  // A new number, unique among all documents, whenever pipeline_input() has other polygons, names or
+  // sharpness than before (new scene geometry, an edit, undo, redo); stays when only vertices moved or
+  // only the faces' attributes changed.
   std::uint64_t input_topology_version() const { return input_topology_version_; }
+
+  // New attributes (colours) for the scene's faces, their polygons unchanged: the topology version stays
+  // and input_attributes_version() grows. Throws InvalidInputError for more values than faces.
+  void set_scene_face_attributes(Attributes faces);
+  // The face attributes of pipeline_input()'s polygons alone.
+  Attributes pipeline_face_attributes() const;
+  // Grows whenever pipeline_face_attributes() may have changed (also with every new topology).
+  std::uint64_t input_attributes_version() const { return input_attributes_version_; }
 
  private:
   struct AddTemporary {
@@ -147,6 +156,8 @@ class Document {
   void index_scene();
   // After anything but moved vertices: a new input topology, whose edited vertices' sources are found again.
   void note_new_topology();
+  // The scene faces pipeline_input() keeps: all but the deleted ones.
+  std::vector<Index> kept_scene_faces() const;
   float text_sharpness(Index u, Index w) const;
   std::vector<EdgeUse> uses_of(Index u, Index w) const;
   // Why a new face cannot be added next to the current faces plus `pending` (faces of the same edit),
@@ -175,7 +186,7 @@ class Document {
   std::vector<Command> history_;
   size_t done_ = 0;  // history_[0, done_) is applied; the rest can be redone
   std::size_t face_counter_ = 0;
-  std::uint64_t input_topology_version_ = 0;
+  std::uint64_t input_topology_version_ = 0, input_attributes_version_ = 0;
   std::vector<Index> edited_vertex_sources_;  // of the consolidated and temporary parts, in input order
 };
 

@@ -55,7 +55,8 @@ class SceneDocument {
   void set_print_setup(std::optional<PrintPlacementOptions> setup);
 
   // Gives the instance (a placement path, `sh_tun1`) a colour, or names its surface again (an undo),
-  // as Scene::set_instance_color and set_instance_surface do; the faces take the colour at once. Throws
+  // as Scene::set_instance_color and set_instance_surface do; the faces take the colour at once (new face
+  // attributes, the same topology). Throws
   // InvalidInputError for flat geometry or an unknown instance.
   void set_instance_color(const std::string& path, Color color);
   void set_instance_surface(const std::string& path, const std::optional<std::string>& surface);
@@ -77,6 +78,9 @@ class SceneDocument {
   // positions moved, and pipeline_positions() holds them (Document's).
   Buffer<Vec3> pipeline_positions() const { return document_.pipeline_positions(); }
   std::uint64_t input_topology_version() const { return document_.input_topology_version(); }
+  // A colour changed: new face attributes for the same polygons (Document's).
+  Attributes pipeline_face_attributes() const { return document_.pipeline_face_attributes(); }
+  std::uint64_t input_attributes_version() const { return document_.input_attributes_version(); }
   FaceParts face_parts(const PipelineInput& input) const;
 
   // The edits a saved file holds: the consolidated faces, deletions and sharp edges (the temporary faces,

@@ -35,6 +35,8 @@ struct ThreeMfModel {
     std::vector<Vec3> vertices;
     std::vector<std::array<Index, 3>> triangles;
     std::vector<Color> colors;  // one per triangle (its first corner's), or empty when it has none
+    // Numbers named in the triangles' base materials ("material=3;region=1", as write_3mf names them).
+    Attributes numbers;
   };
   std::vector<Object> objects;
 };

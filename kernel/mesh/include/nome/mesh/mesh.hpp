@@ -10,6 +10,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "nome/buffer.hpp"
+#include "nome/mesh/attributes.hpp"
 #include "nome/mesh/polygon_soup.hpp"
 #include "nome/mesh/types.hpp"
 
@@ -50,7 +51,7 @@ struct MeshArrays {
   Buffer<Index> fan_edges;
   Buffer<Index> face_components;  // empty: found by a walk over faces
   Index num_components = 0;
-  std::vector<Color> face_colors;  // empty, or one per face
+  Attributes face_attributes;  // colours and whatever else a caller attaches to faces
   // Semi-sharp crease weights (see Mesh::edge_sharpness), corner weights and hole marks: each empty, or
   // one per edge / vertex / face.
   std::vector<float> edge_sharpness;
@@ -182,8 +183,9 @@ class Mesh {
   // Optional attributes carried from the soup: empty when not given.
   const Names& vertex_names() const { return vertex_names_; }
   const Names& face_names() const { return face_names_; }
-  const std::vector<Color>& face_colors() const { return arrays_.face_colors; }
-  std::vector<Color>& face_colors() { return arrays_.face_colors; }
+  // Per-face data (colours and what else a caller attaches), carried through every operation.
+  const Attributes& face_attributes() const { return arrays_.face_attributes; }
+  Attributes& face_attributes() { return arrays_.face_attributes; }
   // "v12" or the vertex's name: for messages.
   std::string vertex_label(Index v) const;
   std::string face_label(Index f) const;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "nome/buffer.hpp"
+#include "nome/mesh/attributes.hpp"
 #include "nome/mesh/names.hpp"
 #include "nome/mesh/soup_grid.hpp"
 #include "nome/mesh/types.hpp"
@@ -21,14 +22,14 @@ struct FaceOrigin {
 };
 
 // Positions and polygons as given, before any topology: the input of build_mesh.
-// Optional per-element names and colours travel with the elements into the Mesh.
+// Optional per-element names and attributes travel with the elements into the Mesh.
 struct PolygonSoup {
   Buffer<Vec3> positions;
   Buffer<Index> face_offsets{0};  // face f has corners [face_offsets[f], face_offsets[f+1])
   Buffer<Index> face_vertices;
   Names vertex_names;                                // empty, or one per vertex
   Names face_names;                                  // empty, or one per face
-  std::vector<Color> face_colors;                    // empty, or one per face
+  Attributes face_attributes;                        // colours and what else faces carry
   std::vector<std::pair<Index, Index>> sharp_edges;  // vertex pairs whose edge is marked sharp
   // Empty: every sharp edge is infinitely sharp; otherwise one crease weight per sharp_edges pair
   // (OpenSubdiv's sharpness: from infinite_sharpness up, infinitely sharp).
@@ -61,9 +62,9 @@ struct PolygonSoup {
   Index num_faces() const { return static_cast<Index>(face_offsets.size() - 1); }
 };
 
-// Appends `part` to `into` as separate vertices and faces, keeping names, colours, origins and sharp marks:
-// where only one of them has names, the other's elements get empty ones; where only one has colours, the
-// other's faces get no_face_color. A grid layout is kept when `into` was empty.
+// Appends `part` to `into` as separate vertices and faces, keeping names, attributes, origins and sharp
+// marks: where only one of them has names, the other's elements get empty ones; where only one has an
+// attribute, the other's faces get its fallback. A grid layout is kept when `into` was empty.
 void append_soup(PolygonSoup& into, const PolygonSoup& part);
 
 }  // namespace nome

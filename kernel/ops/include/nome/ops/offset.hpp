@@ -26,6 +26,10 @@ struct OffsetOptions {
 // InvalidInputError when the distance is not positive and finite.
 Mesh offset(const Mesh& mesh, const OffsetOptions& options);
 
+// For each face of the offset of `mesh`: the face of `mesh` it copies (both copies of a face) or the face
+// whose border edge its rim quad stands on.
+ElementOrigins offset_face_origins(const Mesh& mesh);
+
 // The same with the mesh's normals already computed (a caller that also wants their warnings).
 Mesh offset(const Mesh& mesh, const Normals& normals, const OffsetOptions& options);
 

@@ -90,6 +90,10 @@ class Pipeline {
   void replace_input(PipelineInput input);
   // The scene stage as a mesh the caller built (compared with the last one).
   void set_input(const Mesh& scene_mesh);
+  // New face attributes (colours) for the last input's faces: every stage carries them at its next run,
+  // through the positions pass (no rebuild). Throws InvalidInputError without an input or for more
+  // values than faces.
+  void set_input_face_attributes(Attributes faces);
   // New positions for the vertices of the last set_input(PipelineInput), its polygons unchanged (a slider
   // that moved vertices: Scene::combined_positions): no comparison, no copy of its polygons. Throws
   // InvalidInputError when the count differs or there was no such input.
@@ -172,6 +176,8 @@ class Pipeline {
     // What changed in the stage's input since its last pass (the stages a run skips catch up at the next
     // run that reaches them).
     Change pending = Change::topology;
+    // The input's face attributes changed since the stage last carried them (a positions pass keeps them).
+    bool attributes_pending = true;
     bool has_result = false;
     int source = -1;            // the stage whose result was the input of its last pass
     PipelineSettings settings;  // of its last pass

@@ -56,6 +56,9 @@ class PipelineStage {
   // Moves the output's positions to follow `input`'s. Returns Change::positions, or Change::topology when
   // the stage found it had to make the output anew (the merge joining other vertices).
   virtual Change positions_pass(const Mesh& input, const StagePass& pass) = 0;
+  // For each face of the output: the face of `input` it was made from (after a pass on that input). The
+  // pipeline carries the input's face attributes by it when a positions pass keeps the faces.
+  virtual ElementOrigins face_origins(const Mesh& /*input*/) const { return ElementOrigins::identity(); }
   // Whether the positions pass can run on `input`: what it needs of the last topology pass is there.
   virtual bool can_take_positions(const Mesh& /*input*/) const { return true; }
 

@@ -86,10 +86,12 @@ class Refinement {
   void allow_vector_instructions(bool is_allowed) { is_vector_allowed_ = is_allowed; }
 
   // The last level as a full Mesh with the given positions (from refine_positions), built from the
-  // level before it without any search; faces keep the colours and components of their ancestors. The
+  // level before it without any search; faces keep the attributes and components of their ancestors. The
   // descendants of hole faces are left out, with the vertices only they use; where that leaves faces
   // touching at a vertex only, the vertex becomes one per fan.
   Mesh mesh(const Mesh& base, Buffer<Vec3> positions, int threads = 1) const;
+  // For each face of mesh(): its base face (its ancestor), holes' descendants left out as mesh() does.
+  ElementOrigins face_origins(const Mesh& base) const;
   // The position pass into `result`, the mesh this refinement's mesh() made last (the fast path).
   void refine_positions(const Mesh& base, SubdivisionRule rule, Mesh& result, int threads = 1);
 

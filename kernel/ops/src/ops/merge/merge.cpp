@@ -404,7 +404,7 @@ MergeResult merge_by_plan(const Mesh& mesh, MergePlan plan) {
   soup.face_vertices.reserve(mesh.num_corners());
   for (Index v : mesh.corner_vertices()) soup.face_vertices.push_back(plan.vertex_map[v]);
   soup.face_names = mesh.face_names();
-  soup.face_colors = mesh.face_colors();
+  soup.face_attributes = carried(mesh.face_attributes(), ElementOrigins::identity());
   add_features_to_soup(mesh, soup);
   for (auto& [a, b] : soup.sharp_edges) a = plan.vertex_map[a], b = plan.vertex_map[b];
   for (auto& [v, w] : soup.sharp_vertices) v = plan.vertex_map[v];

@@ -97,7 +97,8 @@ class OffsetBuilder {
     write_offset_positions(m_, normals, distance, a.positions);
     faces(a.face_offsets, a.corner_vertices);
     edges(a);
-    a.face_colors = face_colors();
+    if (!m_.face_attributes().empty())
+      a.face_attributes = carried(m_.face_attributes(), offset_face_origins(m_));
     if (helper.valid())
       helper.get();
     else
@@ -158,18 +159,6 @@ class OffsetBuilder {
         q[2] = out_vertex(va, 1 - positive_side(ca));
         q[3] = out_vertex(vb, 1 - positive_side(cb));
       }
-  }
-
-  // A border quad takes the colour of its edge's face.
-  std::vector<Color> face_colors() const {
-    std::vector<Color> colors;
-    if (m_.face_colors().empty()) return colors;
-    colors.reserve(2 * size_t(nf_) + num_border_);
-    for (int copy = 0; copy < 2; ++copy)
-      colors.insert(colors.end(), m_.face_colors().begin(), m_.face_colors().end());
-    for (Index l = 0; l < m_.num_boundary_loops(); ++l)
-      for (Index e : m_.loop_edges(l)) colors.push_back(m_.face_colors()[m_.edge(e).faces[0]]);
-    return colors;
   }
 
   // Input edge e gives edge 2e (in the positive copy of its first face) and 2e+1 (in the negative copy);
@@ -373,6 +362,16 @@ std::vector<Index> vertex_ranks(const Mesh& mesh, Index& count) {
   for (Index v = 0; v < mesh.num_vertices(); ++v)
     if (!mesh.is_isolated_vertex(v)) rank[v] = count++;
   return rank;
+}
+
+ElementOrigins offset_face_origins(const Mesh& mesh) {
+  ElementOrigins origins;
+  origins.parents.reserve(2 * size_t(mesh.num_faces()));
+  for (int copy = 0; copy < 2; ++copy)
+    for (Index f = 0; f < mesh.num_faces(); ++f) origins.parents.push_back(f);
+  for (Index l = 0; l < mesh.num_boundary_loops(); ++l)
+    for (Index e : mesh.loop_edges(l)) origins.parents.push_back(mesh.edge(e).faces[0]);
+  return origins;
 }
 
 Mesh offset(const Mesh& mesh, const OffsetOptions& options) {

@@ -26,7 +26,6 @@ Change MergeStage::positions_pass(const Mesh& input, const StagePass& pass) {
     return Change::topology;
   }
   merged_positions(input, plan, merged_->mesh.positions());
-  merged_->mesh.face_colors() = input.face_colors();
   merged_->tolerance = plan.tolerance;
   summary_.skipped = std::move(plan.skipped);
   return Change::positions;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nome/mesh/normals.hpp"
+#include "nome/ops/offset.hpp"
 #include "nome/ops/pipeline_stage.hpp"
 
 namespace nome {
@@ -18,6 +19,7 @@ class OffsetStage final : public PipelineStage {
   }
   void topology_pass(const Mesh& input, const StagePass& pass) override;
   Change positions_pass(const Mesh& input, const StagePass& pass) override;
+  ElementOrigins face_origins(const Mesh& input) const override { return offset_face_origins(input); }
   Mesh& result() override { return result_; }
   bool free_while_off() override;
   std::optional<TopologyReport> derived_report(const Mesh& input) const override;

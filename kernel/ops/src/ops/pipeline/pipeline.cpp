@@ -98,6 +98,8 @@ int Pipeline::find(std::string_view stage_name) const {
 
 void Pipeline::input_changed(Change change) {
   slots_.front().pending = combined(slots_.front().pending, change);
+  if (change != Change::none && scene().attributes_changed())
+    for (Slot& slot : slots_) slot.attributes_pending = true;
   result_ = -1;
 }
 
@@ -111,6 +113,10 @@ void Pipeline::replace_input(PipelineInput input) {
 
 void Pipeline::move_input_vertices(Buffer<Vec3> positions) {
   input_changed(scene().move_vertices(std::move(positions)));
+}
+
+void Pipeline::set_input_face_attributes(Attributes faces) {
+  input_changed(scene().set_face_attributes(std::move(faces)));
 }
 
 void Pipeline::set_input(const Mesh& scene_mesh) {
@@ -186,7 +192,11 @@ Change Pipeline::run_stage(int i, int source, const PipelineSettings& s) {
     stage.topology_pass(input, pass);
   } else if (change == Change::positions) {
     change = stage.positions_pass(input, pass);
+    // The faces stayed; their attributes may not have (a colour changed in the scene).
+    if (change == Change::positions && slot.attributes_pending && source != i)
+      stage.result().face_attributes() = carried(input.face_attributes(), stage.face_origins(input));
   }
+  slot.attributes_pending = false;
   slot.work = change == Change::topology    ? StageWork::rebuilt
               : change == Change::positions ? StageWork::positions
                                             : StageWork::cached;

@@ -134,13 +134,14 @@ Change SceneStage::take(PipelineInput input, bool may_be_same) {
                  std::move(soup.vertex_names),
                  std::move(soup.face_names),
                  soup.num_vertices(),
-                 input.joining,
-                 !soup.face_colors.empty()};
+                 input.joining};
   if (may_be_same && has_input_ && next == structure_ && faces_match(soup.face_offsets, soup.face_vertices)) {
     take_positions(soup.positions);
-    mesh_.face_colors() = std::move(soup.face_colors);
+    attributes_changed_ = !(mesh_.face_attributes() == soup.face_attributes);
+    if (attributes_changed_) mesh_.face_attributes() = std::move(soup.face_attributes);
     return Change::positions;
   }
+  attributes_changed_ = true;
   structure_ = std::move(next);
   soup.sharp_edges = structure_.sharp_edges;
   soup.sharp_edge_weights = structure_.sharp_edge_weights;
@@ -173,7 +174,20 @@ Change SceneStage::move_vertices(Buffer<Vec3> positions) {
                             " positions for an input of " + std::to_string(structure_.num_vertices) +
                             " vertices (set_input first)");
   take_positions(positions);
+  attributes_changed_ = false;
   return Change::positions;
+}
+
+Change SceneStage::set_face_attributes(Attributes faces) {
+  if (!has_input_ && !has_mesh_)
+    throw InvalidInputError("Pipeline::set_input_face_attributes: there is no input (set_input first)");
+  for (const Attributes::Entry& e : faces.entries())
+    if (e.column->size() > mesh_.num_faces())
+      throw InvalidInputError("Pipeline::set_input_face_attributes: '" + e.name +
+                              "' has more values than the " + std::to_string(mesh_.num_faces()) + " faces");
+  attributes_changed_ = !(faces == mesh_.face_attributes());
+  mesh_.face_attributes() = std::move(faces);
+  return attributes_changed_ ? Change::positions : Change::none;
 }
 
 void SceneStage::keep_input_faces(PolygonSoup& soup) {
@@ -224,13 +238,14 @@ Change SceneStage::update(const Mesh& mesh) {
       mesh.edge_sharpness_weights() == mesh_.edge_sharpness_weights() &&
       mesh.vertex_sharpness_weights() == mesh_.vertex_sharpness_weights() &&
       mesh.face_holes() == mesh_.face_holes();
-  if (is_same_topology && mesh.positions() == mesh_.positions()) {
-    return Change::none;
-  }
-  if (is_same_topology)
+  attributes_changed_ = !(mesh.face_attributes() == mesh_.face_attributes());
+  if (is_same_topology && mesh.positions() == mesh_.positions() && !attributes_changed_) return Change::none;
+  if (is_same_topology) {
     mesh_.positions() = mesh.positions();
-  else
+    mesh_.face_attributes() = mesh.face_attributes();
+  } else {
     mesh_ = mesh;
+  }
   has_mesh_ = true;
   vertex_sources_.clear();
   structure_ = {};

@@ -11,9 +11,9 @@
 namespace nome {
 
 // The pipeline's first stage: the input's polygons as one mesh. It keeps what the mesh was built from, so
-// that an input whose polygons are the same (only positions or colours moved) updates the mesh in place:
-// a slider that moves vertices builds no mesh. Its mesh is made as the input arrives, so that a topology
-// error reaches the caller that gave the input; its passes at a run hand on the input's problems.
+// that an input whose polygons are the same (only positions or face attributes changed) updates the mesh in
+// place: a slider that moves vertices builds no mesh. Its mesh is made as the input arrives, so that a
+// topology error reaches the caller that gave the input; its passes at a run hand on the input's problems.
 class SceneStage final : public PipelineStage {
  public:
   std::string_view name() const override { return "scene"; }
@@ -33,13 +33,18 @@ class SceneStage final : public PipelineStage {
   // New positions for the last input's vertices, its polygons unchanged. Throws InvalidInputError when
   // there is no such input or the count differs.
   Change move_vertices(Buffer<Vec3> positions);
+  // New face attributes for the mesh's faces (attributes_changed() then says so). Throws
+  // InvalidInputError when there is no mesh or a column holds more values than it has faces.
+  Change set_face_attributes(Attributes faces);
 
   // What the joining left apart: edges of three or more faces (across_edges joining), vertices split
   // where faces only touch (parts that may touch at vertices).
   const std::vector<std::string>& problems() const { return problems_; }
+  // Whether the last input changed the faces' attributes (a colour), besides what its Change says.
+  bool attributes_changed() const { return attributes_changed_; }
 
  private:
-  // What the mesh was built from, except positions, colours and faces (compared by faces_match).
+  // What the mesh was built from, except positions, face attributes and faces (compared by faces_match).
   struct Structure {
     std::vector<std::pair<Index, Index>> sharp_edges;
     std::vector<float> sharp_edge_weights;
@@ -48,7 +53,6 @@ class SceneStage final : public PipelineStage {
     Names vertex_names, face_names;  // shared with the soup and the mesh, not copied
     Index num_vertices = 0;
     Joining joining = Joining::manifold;
-    bool has_colors = false;
     bool operator==(const Structure&) const = default;
   };
 
@@ -69,6 +73,7 @@ class SceneStage final : public PipelineStage {
   Mesh mesh_;
   std::vector<Index> vertex_sources_;  // mesh vertex -> input vertex (empty: the same numbers)
   std::vector<std::string> problems_;
+  bool attributes_changed_ = true;
 };
 
 }  // namespace nome

@@ -25,6 +25,7 @@ class SubdivisionStage : public PipelineStage {
   bool can_take_positions(const Mesh& input) const override {
     return refinement_ && refinement_->fits(input);
   }
+  ElementOrigins face_origins(const Mesh& input) const override { return refinement_->face_origins(input); }
   Mesh& result() override { return result_; }
   bool free_while_off() override;
   void free_positions_data() override { refinement_.reset(); }

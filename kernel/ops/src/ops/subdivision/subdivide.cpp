@@ -57,7 +57,6 @@ PolygonSoup without_holes(const Mesh& full, const std::vector<bool>& is_base_fac
     face.clear();
     for (Index v : full.face_vertices(f)) face.push_back(new_index[v]);
     soup.add_face(face);
-    if (!full.face_colors().empty()) soup.face_colors.push_back(full.face_colors()[f]);
   }
   for (const Edge& e : full.edges())
     if (e.is_sharp && new_index[e.vertices[0]] != no_index && new_index[e.vertices[1]] != no_index)
@@ -293,12 +292,14 @@ Mesh Refinement::mesh(const Mesh& base, Buffer<Vec3> positions, int threads) con
   a.face_components.resize(nf);
   for (Index f = 0; f < nf; ++f) a.face_components[f] = base.face_component(base.corner_face(f >> shift));
   a.num_components = base.num_components();
-  if (!base.face_colors().empty()) {
-    a.face_colors.resize(nf);
-    for (Index f = 0; f < nf; ++f) a.face_colors[f] = base.face_colors()[base.corner_face(f >> shift)];
+  if (is_hole_.empty()) {
+    if (!base.face_attributes().empty())
+      a.face_attributes = carried(base.face_attributes(), face_origins(base));
+    return assemble_mesh(std::move(a));
   }
-  if (is_hole_.empty()) return assemble_mesh(std::move(a));
   PolygonSoup soup = without_holes(assemble_mesh(std::move(a)), is_hole_, shift, base, kept_vertices_);
+  if (!base.face_attributes().empty())
+    soup.face_attributes = carried(base.face_attributes(), face_origins(base));
   output_vertices_ = kept_vertices_;
   try {
     return build_mesh(soup);
@@ -316,6 +317,17 @@ Mesh Refinement::mesh(const Mesh& base, Buffer<Vec3> positions, int threads) con
     glued.mesh.set_vertex_origins(std::move(origins));
     return std::move(glued.mesh);
   }
+}
+
+ElementOrigins Refinement::face_origins(const Mesh& base) const {
+  const unsigned shift = 2 * unsigned(levels_.size() - 1);
+  ElementOrigins origins;
+  origins.parents.reserve(num_faces());
+  for (Index f = 0; f < num_faces(); ++f) {
+    const Index ancestor = base.corner_face(f >> shift);
+    if (is_hole_.empty() || !is_hole_[ancestor]) origins.parents.push_back(ancestor);
+  }
+  return origins;
 }
 
 Mesh subdivide(const Mesh& mesh, const SubdivisionOptions& options) {

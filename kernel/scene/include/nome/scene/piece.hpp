@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "nome/mesh/color_attribute.hpp"
 #include "nome/mesh/polygon_soup.hpp"
 
 namespace nome::scene {
@@ -20,10 +21,9 @@ struct RimLine {
 // The geometry of one definition or one placed instance: named vertices and faces, rim lines, and which
 // faces carry their own colour (the others take the colour of the instance that places them).
 struct Piece {
-  // vertex_names and face_names always filled; face_colors, like face_has_color, empty while no face has a
-  // colour of its own (most pieces: no array of a colour per face to write and copy), else one per face.
+  // vertex_names and face_names always filled; the colour attribute absent while no face has a colour of
+  // its own (most pieces: no array of a colour per face to write and copy).
   PolygonSoup soup;
-  std::vector<unsigned char> face_has_color;
   std::vector<RimLine> rims;
   // Nonzero when the generator can tell its topology without making it: two pieces of one definition with
   // the same key have the same faces and names (a slider that only moves vertices keeps it).
@@ -37,22 +37,17 @@ struct Piece {
   void add_face(const Range& vertices, std::string name) {
     soup.add_face(vertices);
     soup.face_names.push_back(std::move(name));
-    if (!face_has_color.empty()) {
-      soup.face_colors.push_back(Color(0));
-      face_has_color.push_back(0);
-    }
   }
-  bool has_face_color(Index f) const { return !face_has_color.empty() && face_has_color[f]; }
-  bool has_face_colors() const { return !face_has_color.empty(); }
+  bool has_face_color(Index f) const {
+    const Column<Color>* colors = find_colors(soup.face_attributes);
+    return colors && (*colors)[f] != no_face_color;
+  }
+  bool has_face_colors() const {
+    const Column<Color>* colors = find_colors(soup.face_attributes);
+    return colors && !colors->values().empty();
+  }
   // Gives face f a colour of its own.
-  void set_face_color(Index f, const Color& color) {
-    if (face_has_color.empty()) {
-      soup.face_colors.assign(soup.num_faces(), Color(0));
-      face_has_color.assign(soup.num_faces(), 0);
-    }
-    soup.face_colors[f] = color;
-    face_has_color[f] = 1;
-  }
+  void set_face_color(Index f, const Color& color) { add_colors(soup.face_attributes).set(f, color); }
 };
 
 // Whether b differs from a in its positions alone: the same faces, names, colours, sharp marks and rims.

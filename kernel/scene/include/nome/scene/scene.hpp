@@ -160,6 +160,8 @@ class Scene {
   const std::vector<SceneInstance>& instances() const { return instances_; }
   // Every top-level instance as parts of one soup (a disjoint union; merging is a later stage).
   PolygonSoup combined_soup() const;
+  // combined_soup()'s face attributes alone (its colours), without its polygons.
+  Attributes combined_face_attributes() const;
   // The positions of combined_soup() alone (for Pipeline::move_input_vertices when no instance's
   // topology_version changed).
   Buffer<Vec3> combined_positions() const;

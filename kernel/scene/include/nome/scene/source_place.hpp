@@ -27,8 +27,13 @@ std::optional<SourcePlace> parse_source_place(std::string_view text);
 // (a consolidated or temporary face) or past the end.
 std::optional<SourcePlace> face_statement(const PolygonSoup& soup, Index face);
 
-// The statement that made a vertex of `shown`, a mesh whose faces are the soup's in the same order (the
-// scene and merged stages): that of its first face (the lowest index); none for an isolated vertex.
+// The statement that made face `face` of `shown`, a mesh made from the soup at any stage: through the input
+// face its faces carry (mark_input_faces), or, where they carry none, the soup's face of the same number
+// (the scene and merged stages keep the soup's faces in order).
+std::optional<SourcePlace> shown_face_statement(const Mesh& shown, const PolygonSoup& soup, Index face);
+
+// The statement that made a vertex of `shown` (as above): that of its first face (the lowest index); none for
+// an isolated vertex.
 std::optional<SourcePlace> vertex_statement(const Mesh& shown, const PolygonSoup& soup, Index vertex);
 
 }  // namespace nome::scene
