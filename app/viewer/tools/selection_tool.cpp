@@ -69,7 +69,7 @@ bool SelectionTool::click(ToolContext& context, glm::dvec2 pixel) {
   Selection& selection = context.selection;
   const std::string hint =
       selection.mode() == SelectionMode::instance
-          ? select_instance(selection, *shown, context.stage.picking_bvh(), context.sessions.scene(),
+          ? select_instance(selection, *shown, context.stage.picking_bvh(), context.sessions.session(),
                             projection, pixel)
           : select_at(selection, *shown, context.stage.picking_bvh(), context.rims, projection, pixel);
   if (!hint.empty()) context.log.info(hint);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "nome/mesh/input_faces.hpp"
 #include "nome/mesh/named_sharp_edge.hpp"
 #include "nome/query/pick.hpp"
 #include "nome/query/pick_edge.hpp"
@@ -28,6 +29,17 @@ std::string select_border(Selection& selection, const StageResult& shown, const 
                    : shown.mesh->vertex_label(border.vertices.front()));
   }
   return hint;
+}
+
+// The name of the scene face that face f of `shown` came from: through the input face it carries, or its
+// own name where the stage keeps the scene's faces without marks.
+std::optional<std::string> scene_face_name(const Mesh& shown, const PolygonSoup& input, Index f) {
+  if (const std::optional<Index> from = input_face(shown, f)) {
+    if (*from < input.face_names.size()) return input.face_names[*from];
+    return std::nullopt;
+  }
+  if (f < shown.face_names().size()) return shown.face_names()[f];
+  return std::nullopt;
 }
 
 // The vertex under the pixel: a rim vertex whose cube is in front of the surface, else the nearest corner
@@ -80,13 +92,14 @@ std::string select_at(Selection& selection, const StageResult& shown, const Tria
 }
 
 std::string select_instance(Selection& selection, const StageResult& shown, const TriangleBvh& bvh,
-                            const scene::Scene* scene, const ScreenProjection& projection, glm::dvec2 pixel) {
+                            const Session* session, const ScreenProjection& projection, glm::dvec2 pixel) {
   const auto face = pick_face(bvh, projection, pixel);
   if (!face) return {};
-  const auto& names = shown.mesh->face_names();
-  const auto path =
-      scene && face->index() < names.size() ? scene->instance_of_face(names[face->index()]) : std::nullopt;
-  if (!path) return "no instance: instance mode needs a scene file on the scene or merged stage";
+  const scene::Scene* scene = session ? session->scene() : nullptr;
+  const std::optional<std::string> name =
+      session ? scene_face_name(*shown.mesh, session->polygons(), face->index()) : std::nullopt;
+  const auto path = scene && name ? scene->instance_of_face(*name) : std::nullopt;
+  if (!path) return "no instance: instance mode needs a scene file";
   selection.click_instance(*path);
   const auto& selected = selection.instances();
   return "instance " + *path +

@@ -30,9 +30,10 @@ std::string select_at(Selection& selection, const StageResult& shown, const Tria
                       const PickableRims& rims, const ScreenProjection& projection, glm::dvec2 pixel);
 
 // A click in instance mode: the instance that placed the face under the pixel (report 8.4) is selected,
-// or deselected. Returns the log line.
+// or deselected, at any stage (a face of the smoothed solid through the input face it came from). Returns
+// the log line.
 std::string select_instance(Selection& selection, const StageResult& shown, const TriangleBvh& bvh,
-                            const scene::Scene* scene, const ScreenProjection& projection, glm::dvec2 pixel);
+                            const Session* session, const ScreenProjection& projection, glm::dvec2 pixel);
 
 // A selected border as the zipper reads it: whole loops from their first vertex, segments end to end in
 // the direction they were picked.

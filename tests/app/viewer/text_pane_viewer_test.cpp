@@ -5,10 +5,13 @@
 #include <regex>
 
 #include "app/viewer_support.hpp"
+#include "nome/io/ply.hpp"
 #include "nome/io/read_scene.hpp"
+#include "nome/mesh/color_attribute.hpp"
 #include "nome/mesh/glue_faces.hpp"
 #include "nome/mesh/input_faces.hpp"
 #include "nome/ops/pipeline.hpp"
+#include "support/mesh_measures.hpp"
 #include "support/placed_scene.hpp"
 #include "viewer/tools/text_pane_tool.hpp"
 #include "viewer/window.hpp"
@@ -157,7 +160,9 @@ TEST_CASE("a face picked on the smoothed solid maps to the line of the statement
   REQUIRE(on_quad);
   const std::string script = test::write_script(
       dir, "subdiv 1\noffset 0.1\nview 20 60\nmode face\n" + test::click_line(*on_funnel) +
-               "state\naction clear-selection\n" + test::click_line(*on_quad) + "state\nquit\n");
+               "state\naction clear-selection\n" + test::click_line(*on_quad) +
+               "state\naction clear-selection\nmode instance\n" + test::click_line(*on_funnel) +
+               "color 1 0 0\nexport " + dir + "/solid.ply\nquit\n");
   const auto r = test::run_window(dir + "/s.nome --script " + script);
   INFO(r.err);
   REQUIRE(r.status == 0);
@@ -166,6 +171,19 @@ TEST_CASE("a face picked on the smoothed solid maps to the line of the statement
   CHECK_THAT(texts[0], Catch::Contains("statement line 1"));
   CHECK_THAT(texts[1], Catch::Contains("statement line 7"));
   CHECK_THAT(r.err, Catch::Contains("offset stage"));
+  // Instance mode finds the instance from a face of the solid too; its colour reaches the solid's faces.
+  CHECK_THAT(r.err, Catch::Contains("instance i1 selected"));
+  const PolygonSoup exported = read_ply(dir + "/solid.ply");
+  REQUIRE(exported.num_faces() == solid.num_faces());
+  const Column<Color>* colors = exported.face_attributes.find<Color>(color_attribute);
+  REQUIRE(colors);
+  int red = 0;
+  for (Index f = 0; f < exported.num_faces(); ++f) {
+    const bool is_funnel = test::face_centre(exported, f).x < 2.5;
+    CHECK(((*colors)[f] == Color(1.0f, 0.0f, 0.0f)) == is_funnel);
+    red += is_funnel ? 1 : 0;
+  }
+  CHECK(red > 0);
 }
 
 TEST_CASE("applying a good edit changes the geometry, and saving writes the text without a reload", "[app]") {
