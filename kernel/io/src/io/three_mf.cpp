@@ -94,6 +94,9 @@ std::vector<ObjectArrays> split_components(const Mesh& mesh, double scale, Mater
   const Column<Color>* colors = find_colors(mesh.face_attributes());
   const bool has_materials = has_numbers(mesh);
   const bool has_colors = !has_materials && colors && !colors->values().empty();
+  // A face's triangles come one after another: its material is named once.
+  Index material_face = no_index;
+  DWORD material = 0;
   for (Index t = 0; t < triangles.size(); ++t) {
     const Index f = triangles.faces[t];
     ObjectArrays& object = objects[mesh.face_component(f)];
@@ -112,7 +115,11 @@ std::vector<ObjectArrays> split_components(const Mesh& mesh, double scale, Mater
       const Color c = written_face_color((*colors)[f]);
       object.colors.push_back({color_byte(c.r), color_byte(c.g), color_byte(c.b), 255});
     }
-    if (has_materials) object.materials.push_back(materials.of(mesh, f));
+    if (has_materials) {
+      if (f != material_face) material = materials.of(mesh, f);
+      material_face = f;
+      object.materials.push_back(material);
+    }
   }
   return objects;
 }

@@ -2,10 +2,10 @@
 
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <typeinfo>
 #include <utility>
 #include <vector>
@@ -52,6 +52,8 @@ constexpr ScalarKind scalar_kind_of() {
 
 template <class T>
 class Column final : public AttributeColumn {
+  static_assert(!std::is_same_v<T, bool>, "std::vector<bool> hands out no references: use std::uint8_t");
+
  public:
   explicit Column(T fallback) : fallback_(std::move(fallback)) {}
 
