@@ -3,7 +3,7 @@
 PACKAGES := build-essential cmake pkg-config clang-format lib3mf-dev libglfw3-dev libimgui-dev libstb-dev libglm-dev \
             python3-glad libtinyobjloader-dev libtinygltf-dev libgif-dev catch2 libegl-dev libgl1-mesa-dri libosmesa6-dev xvfb xauth \
             libbenchmark-dev libopenmesh-dev libcgal-dev libosd-dev clang-14 libclang-rt-14-dev clang-tidy \
-            file desktop-file-utils shared-mime-info graphviz
+            file desktop-file-utils shared-mime-info graphviz tcl8.6-dev
 
 # The browser build's packages (make web, make test); desktop-only runs never install them.
 WEB_PACKAGES := emscripten node-acorn nlohmann-json3-dev chromium

@@ -31,7 +31,8 @@ set(CPACK_DEBIAN_DEVELOPMENT_DESCRIPTION "Nome's mesh kernel as a static C++20 l
 find_package(Nome) gives Nome::kernel: the index-array mesh, Catmull-Clark subdivision and
 the offset that are right on one-sided surfaces, the scene language, OBJ/STL/SIF input and output.")
 # A static library has no shared-library dependencies to compute: these are its headers' and CMake
-# package's (find_dependency(glm), find_dependency(tinyobjloader), find_dependency(TinyGLTF)).
-set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS "libglm-dev, libtinyobjloader-dev, libtinygltf-dev")
+# package's (find_dependency(glm), find_dependency(tinyobjloader), find_dependency(TinyGLTF)) and Tcl, which
+# the slide layer links by its library path.
+set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS "libglm-dev, libtinyobjloader-dev, libtinygltf-dev, tcl8.6-dev")
 
 include(CPack)

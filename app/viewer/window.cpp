@@ -224,6 +224,9 @@ void Window::apply_file_defaults() {
   }
   // A file that asks for subdivision or an offset is shown with them, as JIPCAD shows it.
   const scene::StageSettings stages = scene->stage_settings();
+  followed_stages_ = stages;
+  followed_values_.clear();
+  for (const scene::Parameter& p : scene->parameters()) followed_values_.push_back(p.value);
   PipelineSettings& settings = stage_.settings();
   if (stages.subdivision_levels) {
     settings.subdivision_levels = *stages.subdivision_levels;
@@ -275,9 +278,30 @@ void Window::answer_recovery(bool restore) {
 
 // ------------------------------------------------------------------------------------ geometry, picks
 
+void Window::follow_file_stages(const scene::Scene& scene) {
+  std::vector<double> values;
+  for (const scene::Parameter& p : scene.parameters()) values.push_back(p.value);
+  if (values == followed_values_) return;
+  followed_values_ = std::move(values);
+  scene::StageSettings stages;
+  try {
+    stages = scene.stage_settings();
+  } catch (const Error& e) {
+    log_.error(e.what());
+    return;
+  }
+  PipelineSettings& settings = stage_.settings();
+  if (stages.subdivision_levels && stages.subdivision_levels != followed_stages_.subdivision_levels)
+    settings.subdivision_levels = *stages.subdivision_levels;
+  if (stages.offset_distance && stages.offset_distance != followed_stages_.offset_distance)
+    settings.offset_distance = *stages.offset_distance;
+  followed_stages_ = stages;
+}
+
 void Window::update_stage() {
   const Session* session = sessions_.session();
   if (!session) return;
+  if (const scene::Scene* scene = session->scene()) follow_file_stages(*scene);
   const InputChange change = stage_.request(*session);
   const scene::Scene* scene = session->scene();
   // A slider that only moved vertices moves the rim lines' vertices; their names, ids and colours stay.

@@ -63,6 +63,9 @@ class Window : private ScriptHost {
   void open(const std::filesystem::path& path);
   // The file's stage blocks and render statements as the control panel's and the view's starting point.
   void apply_file_defaults();
+  // A file whose subdivision level or offset reads a slider (SLIDE's subdivision node, `sd_level {expr
+  // $b.n}`) is followed when its sliders move, as it was applied at opening.
+  void follow_file_stages(const scene::Scene& scene);
   // Opens a file the user chose: asks about unsaved changes first; an .anom file applies instead.
   void request_open(const std::filesystem::path& path);
   // Files dropped on the window (GLFW's drop callback and the script's `drop`): the last scene or mesh
@@ -131,6 +134,8 @@ class Window : private ScriptHost {
   // Shows a place of a located message the user clicked in the log.
   void show_place(const scene::SourcePlace& place);
   bool run_tool_script(const ScriptCommand& command) override;
+  std::vector<double> followed_values_;  // the sliders the file's stage settings were last read at
+  scene::StageSettings followed_stages_;
   // window_history.cpp
   struct ViewState {
     PipelineSettings settings;

@@ -129,3 +129,40 @@ TEST_CASE("the viewer opens at the stage and levels the scene's blocks ask for, 
     CHECK(shown[0].faces == 16);
   }
 }
+
+// SLIDE's subdivision node reads its level from a slider of the file's Tcl: the viewer subdivides at that
+// level when the file opens and follows the slider when it moves.
+TEST_CASE("a SLIDE scene's subdivision slider sets the viewer's level, there and back", "[app]") {
+  const std::string dir = nome::test::private_scratch_dir("viewer_slide_level");
+  const std::string scene = dir + "/tetra.slf";
+  std::ofstream(scene) << "tclinit {\n"
+                          "  package require slideui\n"
+                          "  toplevel .slfWindow.ui\n"
+                          "  CreateSLIDESubdivisionObject oSubdivision\n"
+                          "  pack [CreateSLIDESubdivisionUI .slfWindow.ui oSubdivision]\n"
+                          "}\n"
+                          "point a (0 0 0) endpoint point b (1 0 0) endpoint point c (0 1 0) endpoint\n"
+                          "point d (0 0 1) endpoint\n"
+                          "face f1 (a c b) endface face f2 (a b d) endface face f3 (a d c) endface\n"
+                          "face f4 (b c d) endface\n"
+                          "object tetra (f1 f2 f3 f4) solid SLF_SOLID endobject\n"
+                          "subdivision oSubdiv type {expr $oSubdivision(type)}\n"
+                          "  subdivisions {expr $oSubdivision(subdivisions)}\n"
+                          "  instance tetra endinstance\n"
+                          "endsubdivision\n"
+                          "group gRoot instance oSubdiv endinstance endgroup\n";
+  const std::string path = write_script(
+      dir,
+      "state\nset ui_oSubdivision_subdivisions 2\nstate\nset ui_oSubdivision_subdivisions 1\nstate\nquit\n");
+  const auto r = run_window(scene + " --script " + path);
+  INFO(r.err);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.err, !Catch::Contains("error:"));
+  const std::vector<test::ViewerState> states = logged_states(r.err);
+  REQUIRE(states.size() == 3);
+  CHECK(states[0].stage == "subdivided");
+  CHECK(states[0].faces == 12);  // each triangle makes 3 quads
+  CHECK(states[1].faces == 48);
+  CHECK(states[2].faces == 12);
+  CHECK(states[2].borders == 0);
+}

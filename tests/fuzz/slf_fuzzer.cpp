@@ -6,7 +6,8 @@
 #include "nome/scene/parser.hpp"
 #include "nome/scene/scene.hpp"
 
-// Arbitrary bytes as a .slf file (the SLIDE subset), the way read_scene reads one.
+// Arbitrary bytes as a .slf file: its statements as read_scene reads them (the Tcl they hold is not run: a
+// braced value is then refused, located).
 NOME_FUZZ_TARGET(slf) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   nome::PolygonSoup soup;

@@ -13,7 +13,7 @@ cat "$root/info.txt"
 grep -qx " Package: nome" "$root/info.txt" || fail "package name"
 depends=$(sed -n 's/^ Depends: //p' "$root/info.txt")
 # Computed by dpkg-shlibdeps from the binary's libraries, plus the hand-listed Mesa drivers.
-for package in libc6 libstdc++6 libglfw3 libegl1 libosmesa6 libgl1-mesa-dri; do
+for package in libc6 libstdc++6 libglfw3 libegl1 libosmesa6 libgl1-mesa-dri libtcl8.6; do
   case ", $depends," in *", $package "* | *", $package,"*) ;; *) fail "Depends lacks $package: $depends" ;; esac
 done
 dpkg-deb --contents "$runtime" | awk '{ print $6 }' >"$root/contents.txt"
@@ -24,7 +24,7 @@ for path in ./usr/bin/nome ./usr/share/nome/shaders/mesh.vert ./usr/share/applic
 done
 ! grep -q "^./usr/include/" "$root/contents.txt" || fail "headers belong in nome-dev"
 dpkg-deb --info "$dev" | grep -qx " Package: nome-dev" || fail "nome-dev package name"
-for layer in support mesh ops query scene io edit; do
+for layer in support mesh ops query scene slide io edit; do
   dpkg-deb --contents "$dev" | grep -q "/libnome_$layer\.a$" || fail "nome-dev lacks the kernel's $layer library"
 done
 dpkg-deb --contents "$dev" | grep -q "/cmake/Nome/NomeConfig\.cmake$" || fail "nome-dev lacks the CMake package"

@@ -130,23 +130,19 @@ TEST_CASE("the .slf subset reads points, faces, objects, groups and instances", 
       Catch::EndsWith("cube.slf:1:1: warning: surface 'Y' ignored: colours of .slf files are not read"));
 }
 
-TEST_CASE("minSubdiv.slf is refused: every unsupported construct is named with its place", "[io]") {
+TEST_CASE("minSubdiv.slf opens: its subdivision node sets the level, a slider of its Tcl moves it", "[io]") {
   NOME_NEEDS_SHARED_EXAMPLES("original");
-  try {
-    read_scene(test::originals_dir() + "minSubdiv.slf");
-    FAIL("minSubdiv.slf should be refused");
-  } catch (const scene::SceneError& e) {
-    std::vector<std::string> messages;
-    for (const auto& d : e.diagnostics())
-      messages.push_back(std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + " " +
-                         d.message);
-    CHECK(messages ==
-          std::vector<std::string>{"5:1 not supported yet: tclinit", "37:1 not supported yet: subdivision",
-                                   "75:1 not supported yet: camera", "80:1 not supported yet: light",
-                                   "85:1 not supported yet: light", "93:5 not supported yet: lookat",
-                                   "102:1 not supported yet: render", "108:1 not supported yet: viewport",
-                                   "111:1 not supported yet: window"});
-  }
+  scene::Scene s = read_scene(test::originals_dir() + "minSubdiv.slf");
+  REQUIRE(s.instances().size() == 1);
+  CHECK(s.instances()[0].name == "gRoot");
+  CHECK(s.instances()[0].geometry.soup.num_vertices() == 8);
+  CHECK(s.instances()[0].geometry.soup.num_faces() == 6);
+  const auto level = s.find_parameter("ui_oSubdivision_subdivisions");
+  REQUIRE(level);
+  CHECK(s.parameters()[*level].max == 6);
+  CHECK(s.stage_settings().subdivision_levels == 1);
+  s.set_parameter(*level, 3);
+  CHECK(s.stage_settings().subdivision_levels == 3);
 }
 
 TEST_CASE("assets/mobius_band.sif: a single-sided band whose triangles all pair into quads", "[io]") {

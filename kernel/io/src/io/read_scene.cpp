@@ -6,7 +6,8 @@
 
 #include "nome/error.hpp"
 #include "nome/io/file_extension.hpp"
-#include "nome/scene/parser.hpp"
+#include "nome/io/read_polygons.hpp"
+#include "nome/slide/read_slf.hpp"
 
 namespace nome {
 std::string read_text_file(const std::filesystem::path& path) {
@@ -33,10 +34,8 @@ scene::Scene read_scene(const std::filesystem::path& path, const scene::SceneOpt
 scene::Scene read_scene_text(std::string_view text, const std::filesystem::path& path,
                              const scene::SceneOptions& options) {
   if (lower_extension(path) != ".slf") return scene::Scene::from_text(text, path.string(), options);
-  scene::Diagnostics diagnostics(path.string());
-  scene::SceneAst ast = scene::parse_slf(text, diagnostics);
-  diagnostics.throw_if_errors();
-  return scene::Scene::from_ast(std::move(ast), diagnostics.all(), options);
+  return slide::read_slf_scene(text, path, options, {},
+                               [](const std::filesystem::path& file) { return read_polygons(file); });
 }
 
 }  // namespace nome

@@ -188,6 +188,10 @@ double evaluate(const ExpressionPool& pool, ExprId id, std::span<const double> p
       return parameters[n.parameter.index()];
     case ExprOp::negate:
       return -arg(0);
+    case ExprOp::script:
+      if (!pool.script())
+        throw EvaluationError(n.location, "this value is a program, and no program runs here");
+      return pool.script()->evaluate(n.script_expression, parameters, reads);
     case ExprOp::call: {
       const double a = arg(0);
       const double b = n.args[1] == no_index ? 0.0 : arg(1);
@@ -235,6 +239,8 @@ std::string to_source(const ExpressionPool& pool, ExprId id) {
       return "$" + n.parameter_name;
     case ExprOp::negate:
       return "(-" + to_source(pool, n.args[0]) + ")";
+    case ExprOp::script:
+      return pool.script() ? "{" + pool.script()->text(n.script_expression) + "}" : "{}";
     case ExprOp::call:
       return std::string(function_name(n.function)) + "(" + to_source(pool, n.args[0]) +
              (n.args[1] == no_index ? "" : ", " + to_source(pool, n.args[1])) + ")";
@@ -246,6 +252,7 @@ std::string to_source(const ExpressionPool& pool, ExprId id) {
 
 std::string to_source(const ExpressionPool& pool, const Value& value) {
   if (value.expr == no_index) return format_number(value.literal);
+  if (pool.node(value.expr).op == ExprOp::script) return to_source(pool, value.expr);
   return "{expr " + to_source(pool, value.expr) + "}";
 }
 

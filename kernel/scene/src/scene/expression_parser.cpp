@@ -23,6 +23,13 @@ struct DepthGuard {
 
 Value StatementParser::value() {
   const Token start = peek();
+  if (is_slf_ && start.is_symbol("{")) {
+    ast_->script_values.push_back(take_braced_script());
+    const ExprId e = node(ExprOp::script, start.location);
+    ast_->expressions.node(e).script_expression = Index(ast_->script_values.size() - 1);
+    if (peek().is_symbol(",")) take();
+    return {0, e, start.location};
+  }
   if (start.is_symbol("{") && !is_operator_next()) {
     take();
     if (peek().is_word("expr")) take();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "scene/slide/slf_text.hpp"
 #include "scene/statement_parser.hpp"
 
 namespace nome::scene {
@@ -9,7 +10,10 @@ namespace nome::scene {
 SceneAst StatementParser::parse_scene() {
   ast_->file = diagnostics_.file();
   parse_statements();
-  if (is_slf_) choose_slf_roots();
+  if (is_slf_) {
+    set_aside_slide_cameras_and_lights();
+    choose_slf_roots();
+  }
   name_backfaces();
   if (options_.dialect) ast_->dialect = {*options_.dialect, "--dialect"};
   return std::move(*ast_);
@@ -37,15 +41,19 @@ void StatementParser::top_level_statement() {
   const Token t = peek();
   statement_end_ = {};
   const std::optional<Index> kind = t.kind == TokenKind::word ? find_statement_kind(t.text) : std::nullopt;
-  if (is_slf_ && !(kind && statement_kinds()[*kind].dialect == StatementDialect::slide)) {
+  const StatementDialect dialect = kind ? statement_kinds()[*kind].dialect : StatementDialect::nome;
+  if (is_slf_ && !(kind && is_slide_statement(dialect))) {
     if (t.kind != TokenKind::word) fail(t, "a statement (" + statement_keyword_list(true) + ")");
     diagnostics_.error(t.location, "not supported yet: " + t.text);
     skip_unsupported(t.text);
     return;
   }
   if (!kind) fail(t, "a statement (" + statement_keyword_list() + ")");
+  if (!is_slf_ && !is_nome_statement(dialect))
+    fail(t, "a statement (" + statement_keyword_list() + "): '" + t.text +
+                "' runs SLIDE's Tcl, read from .slf files only");
   const StatementKind& row = statement_kinds()[*kind];
-  if (row.dialect == StatementDialect::successor)
+  if (row.dialect == StatementDialect::successor || row.dialect == StatementDialect::successor_and_slide)
     note_dialect(Dialect::jipcad, "'" + t.text + "'", t.location);
   row.parse(*this, *kind);
 }
@@ -69,10 +77,38 @@ void StatementParser::skip_unsupported(const std::string& word) {
     }
 }
 
-// .slf files name no root: without top-level instances, every group no instance uses is one (else every
-// object, else every face), as SLIDE's render statement would draw it.
+// SLIDE places cameras and lights with instances inside groups: they draw nothing, so they go with the
+// render statements. A `lookat` orients a camera or a light; on geometry it is not read yet.
+void StatementParser::set_aside_slide_cameras_and_lights() {
+  const auto is_render = [&](const InstanceDecl& i) {
+    return std::any_of(ast_->render.begin(), ast_->render.end(),
+                       [&](const RenderDecl& r) { return r.name && r.name->text == i.target.text; });
+  };
+  for (GroupDecl& g : ast_->groups) {
+    std::vector<InstanceDecl> kept;
+    for (InstanceDecl& i : g.instances) {
+      if (is_render(i))
+        ast_->render_instances.push_back(std::move(i));
+      else if (i.look_at)
+        diagnostics_.error(i.look_at->location, "not supported yet: lookat on '" + i.target.text +
+                                                    "', which is not a camera or a light");
+      else
+        kept.push_back(std::move(i));
+    }
+    g.instances = std::move(kept);
+  }
+}
+
+// .slf files name no root: SLIDE draws the root of the first render statement; without one, every group no
+// instance uses is one (else every object, else every face).
 void StatementParser::choose_slf_roots() {
   if (!ast_->instances.empty()) return;
+  for (const RenderDecl& r : ast_->render)
+    for (const RenderField& f : r.fields)
+      if (r.keyword == "render" && f.key.text == "root" && f.word) {
+        ast_->instances.push_back({*f.word, *f.word, {}, std::nullopt, f.word->location});
+        return;
+      }
   std::vector<std::string> used;
   for (const GroupDecl& g : ast_->groups)
     for (const InstanceDecl& i : g.instances) used.push_back(i.target.text);
@@ -175,7 +211,10 @@ SceneAst parse_nome(std::string_view text, Diagnostics& diagnostics, const Parse
 }
 
 SceneAst parse_slf(std::string_view text, Diagnostics& diagnostics) {
-  return StatementParser(text, diagnostics, true).parse_scene();
+  SlfText split = split_slf_text(text, diagnostics);
+  StatementParser parser(split.statements, diagnostics, true);
+  parser.set_slf_braces(std::move(split.braces));
+  return parser.parse_scene();
 }
 
 AnomAst parse_anom(std::string_view text, Diagnostics& diagnostics) {

@@ -11,7 +11,8 @@ std::string SceneWriter::run() {
   out_ << "# Saved by Nome: the sliders' current values, the scene, deletions and the consolidated mesh.\n";
   if (ast_.dialect.dialect == Dialect::jipcad) out_ << jipcad_header << "\n";
   const std::span<const StatementKind> kinds = statement_kinds();
-  for (Index k = 0; k < kinds.size(); ++k) kinds[k].save(*this, k);
+  for (Index k = 0; k < kinds.size(); ++k)
+    if (kinds[k].save) kinds[k].save(*this, k);
   return out_.str();
 }
 

@@ -95,6 +95,11 @@ void Scene::register_parameters(std::vector<Diagnostic>& errors) {
     parameter_ids_[name] = ParameterId(Index(values_.size()));
     values_.push_back(0);
   }
+  if (ExpressionScript* script = ast_.expressions.script())
+    script->bind([&](const std::string& name) -> std::optional<ParameterId> {
+      const auto it = parameter_ids_.find(name);
+      return it == parameter_ids_.end() ? std::nullopt : std::optional(it->second);
+    });
   std::vector<std::string> parameter_names;
   for (const Parameter& p : parameters_) parameter_names.push_back(p.full_name);
   for (Index e = 0; e < ast_.expressions.size(); ++e) {

@@ -76,11 +76,19 @@ RenderDefaults Scene::render_defaults() const {
       if (r.keyword == "light" && r.name && r.name->text == placed.target.text) {
         SceneLight light;
         const RenderField* type = find_field(r, "type");
-        light.kind = type && type->word && type->word->text == "NOME_AMBIENT" ? SceneLight::Kind::ambient
-                                                                              : SceneLight::Kind::directional;
+        const bool is_slide = type && type->word && type->word->text.starts_with("SLF_");
+        light.kind =
+            type && type->word && (type->word->text == "NOME_AMBIENT" || type->word->text == "SLF_AMBIENT")
+                ? SceneLight::Kind::ambient
+                : SceneLight::Kind::directional;
         light.color = color(find_field(r, "color")).value_or(Color(1.0f));
         if (const RenderField* d = find_field(r, "direction"); d && d->values.size() == 3)
           light.direction = Vec3(current(d->values[0]), current(d->values[1]), current(d->values[2]));
+        // SLIDE's lights shine down their -z axis, or from a lookat's eye to its target.
+        if (is_slide) light.direction = Vec3(0.0, 0.0, -1.0);
+        if (placed.look_at)
+          for (int k = 0; k < 3; ++k)
+            light.direction[k] = current(placed.look_at->target[k]) - current(placed.look_at->eye[k]);
         ParameterReads reads;
         light.direction = glm::dmat3(instance_matrix(placed, reads)) * light.direction;
         const double length = glm::length(light.direction);

@@ -60,6 +60,9 @@ StatementKind sweep_statement();
 StatementKind sweep_morph_statement();
 StatementKind morph_visualizer_statement();
 StatementKind ribbon_statement();
+StatementKind script_block_statement();
+StatementKind render_statement();
+StatementKind slide_mirror_statement();
 
 namespace {
 
@@ -116,6 +119,10 @@ std::vector<StatementKind>& table() {
       sweep_morph_statement(),       // a sweep whose cross-sections blend between control points
       morph_visualizer_statement(),  // one of a sweep's cross-sections
       ribbon_statement(),            // a band along a rim line (report 6.3's rim ribbon)
+
+      script_block_statement(),  // SLIDE: `tclinit { Tcl }`
+      render_statement(),        // SLIDE: what is drawn, through which camera
+      slide_mirror_statement(),  // SLIDE: a group whose mirrored faces are turned back
   };
   return rows;
 }
@@ -142,10 +149,19 @@ std::optional<Index> find_statement_kind(std::string_view keyword) {
   return Index(it - kinds.begin());
 }
 
+bool is_slide_statement(StatementDialect dialect) {
+  return dialect == StatementDialect::slide || dialect == StatementDialect::slide_only ||
+         dialect == StatementDialect::successor_and_slide;
+}
+
+bool is_nome_statement(StatementDialect dialect) {
+  return dialect != StatementDialect::slide_only;
+}
+
 std::string statement_keyword_list(bool is_slf) {
   std::string list;
   for (const StatementKind& k : statement_kinds())
-    if (!is_slf || k.dialect == StatementDialect::slide)
+    if (is_slf ? is_slide_statement(k.dialect) : is_nome_statement(k.dialect))
       list += (list.empty() ? "" : ", ") + std::string(k.keyword);
   return list;
 }

@@ -20,7 +20,10 @@ StatementParser::StatementParser(std::string_view text, Diagnostics& diagnostics
 
 StatementParser::StatementParser(std::string_view text, Diagnostics& diagnostics, StatementParser& parent,
                                  std::vector<std::string> include_chain)
-    : diagnostics_(diagnostics), tokens_(tokenize(text, diagnostics)), ast_(parent.ast_) {
+    : diagnostics_(diagnostics),
+      tokens_(tokenize(text, diagnostics)),
+      is_slf_(parent.is_slf_),
+      ast_(parent.ast_) {
   options_.include_chain = std::move(include_chain);
 }
 
@@ -212,6 +215,11 @@ void StatementParser::instance_transform(const Token& t, InstanceDecl& inst) {
     take();
     inst.name = take_name("an instance id");
     return;
+  } else if (skip_display_field()) {
+    return;
+  } else if (is_slf_ && t.is_word("lookat")) {
+    look_at(inst);
+    return;
   } else if (is_slf_ && t.kind == TokenKind::word) {
     diagnostics_.error(t.location, "not supported yet: " + t.text);
     throw SyntaxError{};
@@ -219,6 +227,17 @@ void StatementParser::instance_transform(const Token& t, InstanceDecl& inst) {
     fail(t, "a transform (translate, rotate, scale, mirror), 'surface', 'backface' or 'endinstance'");
   }
   inst.transforms.push_back(tr);
+}
+
+// SLIDE's `lookat eye (x y z) target (x y z) up (x y z) endlookat`: how a camera or a light looks.
+void StatementParser::look_at(InstanceDecl& inst) {
+  LookAtDecl look{{}, {}, {}, take().location};
+  for (auto [field, values] : {std::pair{"eye", look.eye}, {"target", look.target}, {"up", look.up}}) {
+    expect_word(field);
+    value_tuple(values, 3, field);
+  }
+  expect_word("endlookat");
+  inst.look_at = look;
 }
 
 std::vector<Name> StatementParser::vertex_blocks(std::string_view end_word, const Token& opener) {
@@ -237,6 +256,65 @@ void StatementParser::ignore_surface(const Token& at, std::optional<Name>& surfa
   diagnostics_.warning(at.location,
                        "surface '" + surface->text + "' ignored: colours of .slf files are not read");
   surface.reset();
+}
+
+bool StatementParser::skip_display_field() {
+  const Token t = peek();
+  if (!is_slf_ || !(t.is_word("solid") || t.is_word("shading") || t.is_word("lod"))) return false;
+  take();
+  skip_display_value();
+  return true;
+}
+
+void StatementParser::skip_display_value() {
+  const Token v = peek();
+  if (v.is_symbol("{"))
+    take_braced_script();
+  else if (v.kind == TokenKind::word || v.kind == TokenKind::number)
+    take();
+  else
+    fail(v, "a flag (SLF_...), a number or a braced value");
+}
+
+void StatementParser::skip_texture_coordinates() {
+  if (!is_slf_ || !peek().is_word("texture")) return;
+  take();
+  Value uv[2];
+  value_tuple(uv, 2, "texture");
+}
+
+bool StatementParser::skip_slide_surface() {
+  if (!is_slf_ || !peek().is_word("surface")) return false;
+  take();
+  take_name("a surface name");
+  return true;
+}
+
+std::string StatementParser::quoted_text(const char* what) {
+  const Token open = peek();
+  if (!open.is_symbol("\"")) fail(open, what);
+  take();
+  std::string text;
+  while (!peek().is_symbol("\"")) {
+    if (peek().kind == TokenKind::end || peek().location.line != open.location.line)
+      fail(peek(), "a closing '\"'");
+    text += take().text;
+  }
+  take();
+  return text;
+}
+
+ScriptText StatementParser::take_braced_script() {
+  const Token open = peek();
+  if (!open.is_symbol("{")) fail(open, "'{' and Tcl code");
+  const auto before = [](const SlfBrace& b, SourceLocation at) {
+    return b.at.line != at.line ? b.at.line < at.line : b.at.column < at.column;
+  };
+  const auto it = std::lower_bound(slf_braces_.begin(), slf_braces_.end(), open.location, before);
+  take();
+  expect_symbol("}");
+  if (it == slf_braces_.end() || !(it->at == open.location)) fail(open, "Tcl code in braces");
+  return {it->text, open.location};
 }
 
 }  // namespace nome::scene

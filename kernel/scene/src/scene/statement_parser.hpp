@@ -9,6 +9,7 @@
 #include "nome/scene/lexer.hpp"
 #include "nome/scene/parser.hpp"
 #include "nome/scene/statement_kinds.hpp"
+#include "scene/slide/slf_text.hpp"
 
 namespace nome::scene {
 
@@ -75,6 +76,20 @@ class StatementParser {
   const std::vector<std::string>& include_chain() const { return options_.include_chain; }
 
   bool is_slf() const { return is_slf_; }
+  // .slf: the braced Tcl texts cut out of the text (split_slf_text), and the one whose `{` is the next token
+  // (taking both braces); a syntax error when there is none.
+  void set_slf_braces(std::vector<SlfBrace> braces) { slf_braces_ = std::move(braces); }
+  ScriptText take_braced_script();
+  // .slf: SLIDE's display fields of a node (`solid`, `shading`, `lod` with a flag, a number or a braced
+  // value): read and set aside, for they change only how SLIDE drew it. False when none is next.
+  bool skip_display_field();
+  void skip_display_value();
+  // `"text"` (a file name): the words between the quotes, as written.
+  std::string quoted_text(const char* what);
+  // .slf: a node's `surface NAME` (a material, which .slf colours do not set): read and set aside.
+  bool skip_slide_surface();
+  // .slf: a point's `texture (u v)`, which Nome does not map: read and set aside.
+  void skip_texture_coordinates();
   SceneAst& ast() { return *ast_; }
   Diagnostics& diagnostics() { return diagnostics_; }
 
@@ -83,8 +98,10 @@ class StatementParser {
   bool near_miss(std::string_view end_word);
   void top_level_statement();
   void instance_transform(const Token& t, InstanceDecl& inst);
+  void look_at(InstanceDecl& inst);
   void skip_unsupported(const std::string& word);
   void choose_slf_roots();
+  void set_aside_slide_cameras_and_lights();
   void name_backfaces();
   void anom_statement(AnomAst& anom, const BlockContext& top);
 
@@ -111,6 +128,7 @@ class StatementParser {
   std::vector<int> expression_depth_;  // height of each expression node's subtree
   int parse_depth_ = 0;                // expression grammar levels being parsed
   bool is_bare_value_ = false;         // parsing a value written without `{expr ...}`
+  std::vector<SlfBrace> slf_braces_;   // in text order
 };
 
 bool is_top_level_keyword(const Token& t);

@@ -161,6 +161,12 @@ struct TransformDecl {
 };
 
 // `instance NAME TARGET [transforms] [surface S] endinstance`
+// SLIDE's `lookat eye (x y z) target (x y z) up (x y z) endlookat` in an instance of a camera or a light.
+struct LookAtDecl {
+  Value eye[3], target[3], up[3];
+  SourceLocation location;
+};
+
 struct InstanceDecl {
   Name name;
   Name target;
@@ -170,6 +176,7 @@ struct InstanceDecl {
   std::optional<Name> backface =
       std::nullopt;        // the successor's `backface B` (or `surface B` naming a backface)
   Index stage = no_index;  // top level: the stage block (SceneAst::stages) it is written in, if any
+  std::optional<LookAtDecl> look_at = std::nullopt;  // .slf: how a camera or a light looks
 };
 
 // `subdivision NAME [sd_type T] sd_level N instance ... endsubdivision` and `offset NAME [offset_type T]
@@ -222,9 +229,17 @@ struct SharpEdgeDecl {
 };
 
 // One parsed .nome text. Definitions are resolved by name, so their order does not matter.
+// Program text inside a scene (SLIDE's Tcl in .slf files), with where it stands.
+struct ScriptText {
+  std::string text;
+  SourceLocation location;
+};
+
 struct SceneAst {
   std::string file;
   ExpressionPool expressions;
+  std::vector<ScriptText> script_blocks;  // `tclinit { ... }`, in file order: run before any evaluation
+  std::vector<ScriptText> script_values;  // braced values: ExprOp::script nodes name them by index
   std::vector<BankDecl> banks;
   std::vector<SurfaceDecl> surfaces;
   std::vector<PointDecl> points;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -8,6 +9,7 @@
 #include "nome/error.hpp"
 #include "nome/mesh/types.hpp"
 #include "nome/scene/diagnostic.hpp"
+#include "nome/scene/expression_script.hpp"
 #include "nome/scene/ids.hpp"
 
 namespace nome::scene {
@@ -37,7 +39,9 @@ enum class ExprOp {
   logical_not,
   logical_and,
   logical_or,
-  condition
+  condition,
+  // A value the scene's script computes (ExpressionScript, SLIDE's Tcl).
+  script
 };
 
 enum class Function {
@@ -77,6 +81,7 @@ struct ExprNode {
   ParameterId parameter;                  // resolved: the scene's value it reads
   Function function = Function::sin;      // ExprOp::call
   ExprId args[2] = {no_index, no_index};  // operands / call arguments
+  Index script_expression = no_index;     // ExprOp::script: which of the script's expressions
   SourceLocation location;
 };
 
@@ -87,9 +92,13 @@ class ExpressionPool {
   const ExprNode& node(ExprId id) const { return nodes_[id]; }
   ExprNode& node(ExprId id) { return nodes_[id]; }
   Index size() const { return static_cast<Index>(nodes_.size()); }
+  // The script that computes the ExprOp::script nodes; shared by copies of the scene.
+  ExpressionScript* script() const { return script_.get(); }
+  void set_script(std::shared_ptr<ExpressionScript> script) { script_ = std::move(script); }
 
  private:
   std::vector<ExprNode> nodes_;
+  std::shared_ptr<ExpressionScript> script_;
 };
 
 // A number slot of the language: a literal or an expression (`{expr ...}`), with where it stands.

@@ -28,10 +28,16 @@ struct DeclaredName {
 // The texts a statement belongs to. Both .nome dialects read the statements of either (`--dialect 2016`
 // reads a sphere too), so one the successor alone has tells a file's dialect: the first such decides it.
 enum class StatementDialect {
-  slide,      // SLIDE's subset read from .slf files, and every .nome file
-  nome,       // every .nome file, the 2016 report's or the successor's
-  successor,  // JIPCAD's: it makes a .nome file the successor's; a .slf file refuses it
+  slide,                // SLIDE's subset read from .slf files, and every .nome file
+  nome,                 // every .nome file, the 2016 report's or the successor's
+  successor,            // JIPCAD's: it makes a .nome file the successor's; a .slf file refuses it
+  slide_only,           // SLIDE's own (its Tcl, its render statement): only .slf files
+  successor_and_slide,  // JIPCAD's in a .nome file (a cue, as `successor`), and SLIDE's too (camera, light)
 };
+
+// Whether a .slf file reads the statement, and whether a .nome file does.
+bool is_slide_statement(StatementDialect dialect);
+bool is_nome_statement(StatementDialect dialect);
 
 // One top-level statement of the .nome language: how it is parsed, saved and, for a definition that makes
 // geometry, evaluated. The parser, the writer and the scene read this table only, so that adding a
@@ -47,7 +53,8 @@ struct StatementKind {
   StatementDialect dialect = StatementDialect::nome;
   // Reads the statement at the parser's position (its keyword not yet taken) into the parser's AST.
   void (*parse)(StatementParser& parser, Index kind) = nullptr;
-  // Writes every statement of this kind (the writer runs the rows in table order).
+  // Writes every statement of this kind (the writer runs the rows in table order). Null for a row whose
+  // statements another row writes (SLIDE's mirror node is a group).
   void (*save)(SceneWriter& writer, Index kind) = nullptr;
   // Definitions only: the names this kind defines, and the geometry of one of them.
   void (*declare)(const SceneAst& ast, Index kind, std::vector<DeclaredName>& out) = nullptr;

@@ -1,5 +1,7 @@
 // `mesh NAME face ... endface ... [sharp [weight] (v1 v2 ...) ... endsharp] endmesh`: faces over named
-// vertices.
+// vertices. SLIDE's meshes hold `vertex ... endvertex` and `facet ... endfacet`.
+#include <algorithm>
+
 #include "nome/scene/statement_kinds.hpp"
 #include "scene/definition_context.hpp"
 #include "scene/scene_writer.hpp"
@@ -9,16 +11,48 @@
 namespace nome::scene {
 namespace {
 
+// SLIDE's `vertex NAME (x y z) [texture (u v)] endvertex`: a point named within its mesh (MESH_NAME).
+PointDecl slide_vertex(StatementParser& parser, const std::string& mesh) {
+  parser.take();
+  PointDecl p;
+  p.name = parser.take_name("a vertex name");
+  p.name.text = mesh + "_" + p.name.text;
+  parser.value_tuple(p.xyz, 3, "vertex");
+  parser.skip_texture_coordinates();
+  parser.expect_word("endvertex");
+  return p;
+}
+
+// SLIDE's `facet NAME (v1 v2 ...) endfacet` over the mesh's own vertices (or points).
+FaceDecl slide_facet(StatementParser& parser, const std::string& mesh, const std::vector<std::string>& own) {
+  parser.take();
+  FaceDecl f;
+  f.name = parser.take_name("a facet name");
+  f.vertices = parser.name_list("a vertex name or ')'");
+  for (Name& v : f.vertices)
+    if (std::find(own.begin(), own.end(), v.text) != own.end()) v.text = mesh + "_" + v.text;
+  parser.skip_slide_surface();
+  parser.expect_word("endfacet");
+  return f;
+}
+
 void parse_mesh(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
   const Token opener = parser.take();
   MeshDecl m;
   m.name = parser.take_name("a mesh name");
-  const BlockContext inner{{"face", "sharp", "point"}, end};
+  const BlockContext inner{{"face", "sharp", "point", "vertex", "facet"}, end};
+  std::vector<std::string> own_vertices;  // SLIDE's, named within the mesh
   while (!parser.block_closed(opener, end, inner)) {
     const size_t start = parser.position();
     try {
-      if (parser.peek().is_word("face")) {
+      if (parser.is_slf() && parser.peek().is_word("vertex")) {
+        PointDecl p = slide_vertex(parser, m.name.text);
+        own_vertices.push_back(p.name.text.substr(m.name.text.size() + 1));
+        parser.ast().points.push_back(std::move(p));
+      } else if (parser.is_slf() && parser.peek().is_word("facet")) {
+        m.faces.push_back(slide_facet(parser, m.name.text, own_vertices));
+      } else if (parser.peek().is_word("face")) {
         m.faces.push_back(parser.face_statement());
       } else if (parser.peek().is_word("sharp")) {
         parse_sharp(parser, m.sharps, false);
@@ -79,6 +113,7 @@ void vertex_lists_mesh(const DefinitionScope& scope, Index decl, std::vector<con
 StatementKind mesh_statement() {
   return {.keyword = "mesh",
           .end_keyword = "endmesh",
+          .dialect = StatementDialect::slide,
           .parse = parse_mesh,
           .save = save_mesh,
           .declare = declare_mesh,

@@ -14,6 +14,8 @@ void parse_object(StatementParser& parser, Index kind) {
   ObjectDecl o;
   o.name = parser.take_name("an object name");
   o.faces = parser.name_list("a face name or ')'");
+  while (parser.skip_display_field() || parser.skip_slide_surface()) {
+  }
   parser.expect_word(end);
   parser.ast().objects.push_back(std::move(o));
 }

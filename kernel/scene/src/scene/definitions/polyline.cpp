@@ -1,4 +1,5 @@
-// `polyline NAME (v1 v2 ...) [isloop | closed] endpolyline`: a rim line over named vertices.
+// `polyline NAME (v1 v2 ...) [isloop | closed] endpolyline`: a rim line over named vertices (SLIDE's
+// `polyline NAME pointlist (...) endpolyline` too).
 #include "nome/scene/statement_kinds.hpp"
 #include "scene/curves.hpp"
 #include "scene/definition_context.hpp"
@@ -14,8 +15,23 @@ void parse_polyline(StatementParser& parser, Index kind) {
   parser.take();
   PolylineDecl p;
   p.name = parser.take_name("a polyline name");
+  // SLIDE: `polyline NAME pointlist (p1 p2 ...) [drawpoints b] [display fields] endpolyline`; a list that
+  // ends where it starts is a loop.
+  if (parser.is_slf()) parser.expect_word("pointlist");
   const Token open = parser.peek();
   p.vertices = parser.name_list("a vertex name or ')'");
+  if (parser.is_slf()) {
+    while (parser.skip_display_field() || parser.skip_slide_surface())
+      ;
+    if (parser.peek().is_word("drawpoints")) {
+      parser.take();
+      parser.skip_display_value();
+    }
+    if (p.vertices.size() > 2 && p.vertices.front().text == p.vertices.back().text) {
+      p.vertices.pop_back();
+      p.is_loop = true;
+    }
+  }
   if (p.vertices.size() < 2)
     parser.diagnostics().error(open.location, "polyline '" + p.name.text +
                                                   "' needs at least 2 vertices, found " +
@@ -69,6 +85,7 @@ void vertex_lists_polyline(const DefinitionScope& scope, Index decl,
 StatementKind polyline_statement() {
   return {.keyword = "polyline",
           .end_keyword = "endpolyline",
+          .dialect = StatementDialect::slide,
           .parse = parse_polyline,
           .save = save_polyline,
           .declare = declare_polyline,

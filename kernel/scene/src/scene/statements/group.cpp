@@ -11,10 +11,12 @@ void parse_group(StatementParser& parser, Index kind) {
   const Token opener = parser.take();
   GroupDecl g;
   g.name = parser.take_name("a group name");
-  const BlockContext inner{{"instance"}, end};
+  // A SLIDE group names its material (`surface S`) among its instances.
+  const BlockContext inner{{"instance", "surface"}, end};
   while (!parser.block_closed(opener, end, inner)) {
     const size_t start = parser.position();
     try {
+      if (parser.skip_display_field() || parser.skip_slide_surface()) continue;
       if (!parser.peek().is_word("instance")) parser.fail(parser.peek(), "'instance' or 'endgroup'");
       g.instances.push_back(parser.instance_statement());
     } catch (const SyntaxError&) {
@@ -45,6 +47,16 @@ StatementKind group_statement() {
           .parse = parse_group,
           .save = save_group,
           .declare = declare_group};
+}
+
+// SLIDE's `mirror NAME instance ... endmirror`: a group whose faces SLIDE reversed, for the instances under
+// it mirror their geometry with a negative scale. Nome reverses the faces of every placement whose
+// transform mirrors, so the node is a group here: declared and saved as one.
+StatementKind slide_mirror_statement() {
+  return {.keyword = "mirror",
+          .end_keyword = "endmirror",
+          .dialect = StatementDialect::slide_only,
+          .parse = parse_group};
 }
 
 }  // namespace nome::scene

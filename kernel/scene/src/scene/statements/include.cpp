@@ -1,6 +1,6 @@
 // `include [file.nom] endinclude` or `include file.nom endinclude` (the successor's): the file's statements
 // as if written here. The path is relative to the including file; included files may include others, and a
-// cycle is refused with its chain.
+// cycle is refused with its chain. SLIDE writes `include "file.slf"`.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -57,15 +57,27 @@ void read_included(StatementParser& parser, const Token& at, const std::string& 
   std::vector<std::string> inner_chain = chain;
   inner_chain.push_back(path.string());
   Diagnostics inner(path.string());
-  StatementParser(text.str(), inner, parser, inner_chain).parse_statements();
+  if (parser.is_slf()) {
+    SlfText split = split_slf_text(text.str(), inner);
+    StatementParser included(split.statements, inner, parser, inner_chain);
+    included.set_slf_braces(std::move(split.braces));
+    included.parse_statements();
+  } else {
+    StatementParser(text.str(), inner, parser, inner_chain).parse_statements();
+  }
   for (const Diagnostic& d : inner.all()) parser.diagnostics().add(d);
   parser.ast().included_files.push_back(path.string());
 }
 
 void parse_include(StatementParser& parser, Index kind) {
   const std::string_view end = statement_kinds()[kind].end_keyword;
-  parser.set_statement_end(end);
   const Token opener = parser.take();
+  // SLIDE's: `include "file.slf"`, no end word.
+  if (parser.is_slf()) {
+    read_included(parser, opener, parser.quoted_text("a file name in quotes"));
+    return;
+  }
+  parser.set_statement_end(end);
   // JIPCAD's grammar also takes the name as one identifier (`include z_inclSurfaces.nom endinclude`: '.'
   // is an identifier character), as its tutorials write it.
   std::string written;
@@ -87,7 +99,7 @@ void save_include(SceneWriter&, Index) {}
 StatementKind include_statement() {
   return {.keyword = "include",
           .end_keyword = "endinclude",
-          .dialect = StatementDialect::successor,
+          .dialect = StatementDialect::successor_and_slide,
           .parse = parse_include,
           .save = save_include};
 }

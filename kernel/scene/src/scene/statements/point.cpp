@@ -13,6 +13,7 @@ void parse_point(StatementParser& parser, Index kind) {
   PointDecl p;
   p.name = parser.take_name("a point name");
   parser.value_tuple(p.xyz, 3, "point");
+  parser.skip_texture_coordinates();
   parser.expect_word(end);
   parser.ast().points.push_back(std::move(p));
 }

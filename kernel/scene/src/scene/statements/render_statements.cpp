@@ -22,17 +22,27 @@ std::vector<Value> values(StatementParser& parser) {
   return out;
 }
 
-RenderField field(StatementParser& parser) {
+// A field: its key, then a word or values; SLIDE's viewport names its window with a key alone (`viewport vp
+// Window endviewport`).
+RenderField field(StatementParser& parser, std::string_view end_keyword) {
   RenderField f;
   if (parser.peek().is_symbol("(")) {  // a viewport's `(left top width height)` (the docs' form)
     f.key = {"", parser.peek().location};
   } else {
     f.key = parser.take_name("a setting (type, color, projection, frustum, cameraID, origin, size, ...)");
   }
-  if (parser.peek().kind == TokenKind::word)
-    f.word = parser.take_name("a name");
-  else
+  if (parser.peek().kind == TokenKind::word) {
+    if (!parser.peek().is_word(end_keyword)) f.word = parser.take_name("a name");
+  } else if (parser.peek().is_symbol("(")) {
     f.values = values(parser);
+    // SLIDE's frustum: `( xmin ymin zmin ) ( xmax ymax zmax )`.
+    if (parser.is_slf() && f.key.text == "frustum" && parser.peek().is_symbol("(")) {
+      const std::vector<Value> far_corner = values(parser);
+      f.values.insert(f.values.end(), far_corner.begin(), far_corner.end());
+    }
+  } else {
+    parser.fail(parser.peek(), "a name or '(' after '" + f.key.text + "'");
+  }
   return f;
 }
 
@@ -42,7 +52,8 @@ void parse_block(StatementParser& parser, Index kind) {
   RenderDecl r{std::string(row.keyword), parser.take_name("a name"), {}, opener.location};
   parser.set_statement_end(row.end_keyword);
   const BlockContext inner{{}, row.end_keyword};
-  while (!parser.block_closed(opener, row.end_keyword, inner)) r.fields.push_back(field(parser));
+  while (!parser.block_closed(opener, row.end_keyword, inner))
+    r.fields.push_back(field(parser, row.end_keyword));
   parser.ast().render.push_back(std::move(r));
 }
 
@@ -67,6 +78,40 @@ void parse_color(StatementParser& parser, Index kind) {
     parser.take();
   r.fields.push_back(std::move(color));
   parser.ast().render.push_back(std::move(r));
+}
+
+// SLIDE's `render VIEWPORT CAMERA_PATH ROOT [light LIGHT_PATH [FLAG]] ... endrender`: what is drawn (the
+// root) and how; kept as the fields "viewport", "camera", "root" and one "light" each.
+void parse_render(StatementParser& parser, Index kind) {
+  const StatementKind& row = statement_kinds()[kind];
+  const Token opener = parser.take();
+  parser.set_statement_end(row.end_keyword);
+  RenderDecl r{std::string(row.keyword), std::nullopt, {}, opener.location};
+  for (const char* key : {"viewport", "camera", "root"}) {
+    const Name word = parser.take_name(key == std::string("root") ? "the node to draw" : "a name");
+    r.fields.push_back({{key, word.location}, word, {}});
+  }
+  while (!parser.peek().is_word(row.end_keyword)) {
+    const Token light = parser.peek();
+    parser.expect_word("light");
+    const Name path = parser.take_name("a light's path");
+    r.fields.push_back({{"light", light.location}, path, {}});
+    if (parser.peek().kind == TokenKind::number || parser.peek().is_symbol("{") ||
+        (parser.peek().kind == TokenKind::word && parser.peek().text.starts_with("SLF_")))
+      parser.skip_display_value();
+  }
+  parser.take();
+  parser.ast().render.push_back(std::move(r));
+}
+
+void save_slide_render(SceneWriter& writer, Index) {
+  for (const RenderDecl& r : writer.ast().render) {
+    if (r.keyword != "render") continue;
+    writer.out() << "render";
+    for (const RenderField& f : r.fields)
+      writer.out() << (f.key.text == "light" ? " light " : " ") << f.word->text;
+    writer.out() << " endrender\n";
+  }
 }
 
 void save_render_statements(SceneWriter& writer, Index kind) {
@@ -94,7 +139,7 @@ void save_render_statements(SceneWriter& writer, Index kind) {
 StatementKind block(std::string_view keyword, std::string_view end_keyword) {
   return {.keyword = keyword,
           .end_keyword = end_keyword,
-          .dialect = StatementDialect::successor,
+          .dialect = StatementDialect::successor_and_slide,
           .parse = parse_block,
           .save = save_render_statements};
 }
@@ -111,6 +156,13 @@ StatementKind color(std::string_view keyword, std::string_view end_keyword,
 
 }  // namespace
 
+StatementKind render_statement() {
+  return {.keyword = "render",
+          .end_keyword = "endrender",
+          .dialect = StatementDialect::slide_only,
+          .parse = parse_render,
+          .save = save_slide_render};
+}
 StatementKind camera_statement() {
   return block("camera", "endcamera");
 }

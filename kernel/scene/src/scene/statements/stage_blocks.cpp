@@ -18,6 +18,15 @@ StageWords words(StageKind kind) {
   return {"offset_type", "height", "width"};
 }
 
+// SLIDE's settings of a subdivision or offset node that change how it was drawn or tuned SLIDE's own
+// algorithms, not the surface Nome makes.
+bool is_slide_node_setting(std::string_view word) {
+  for (const char* setting : {"type", "drawcontrols", "drawcurrent", "drawvertices", "errormetric", "uknots",
+                              "uorder", "vknots", "vorder", "tolerance", "facetsmax"})
+    if (word == setting) return true;
+  return false;
+}
+
 // The settings before the instances: each at most once, in any order.
 void stage_settings(StatementParser& parser, StageDecl& stage) {
   const StageWords w = words(stage.kind);
@@ -67,11 +76,65 @@ void parse_stage_blocks(StatementParser& parser, StageKind kind, std::string_vie
   }
 }
 
+// SLIDE's `subdivision NAME subdivisions N ... instance ... endsubdivision` and `offset NAME height H width W
+// ... instance ... endoffset` are nodes that groups instance. Nome's pipeline subdivides and thickens the
+// whole scene, so such a node is read as a group of its instances that sets the pipeline's level or
+// distance; a second node of the same kind (whose level could differ) is refused. SLIDE's `type` (Nome
+// subdivides by Catmull-Clark and offsets both ways), display fields and tuning hacks are set aside.
+void parse_slide_stage(StatementParser& parser, StageKind kind, std::string_view end) {
+  const Token opener = parser.take();
+  StageDecl stage{
+      kind, parser.take_name("a node name"), std::nullopt, {}, std::nullopt, std::nullopt, opener.location};
+  parser.set_statement_end(end);
+  for (const StageDecl& other : parser.ast().stages)
+    if (other.kind == kind)
+      parser.diagnostics().error(
+          opener.location, "not supported yet: a second " + opener.text + " node ('" + other.name.text +
+                               "' is at " + location_text(other.location) + "): Nome's pipeline has one " +
+                               opener.text + " for the whole scene");
+  const std::string_view amount = kind == StageKind::subdivision ? "subdivisions" : "height";
+  bool has_amount = false;
+  GroupDecl group{stage.name, {}};
+  const BlockContext inner{{"instance"}, end};
+  while (!parser.block_closed(opener, end, inner)) {
+    const size_t start = parser.position();
+    const Token t = parser.peek();
+    try {
+      if (t.is_word(amount)) {
+        parser.take();
+        stage.amount = parser.value();
+        has_amount = true;
+      } else if (kind == StageKind::offset && t.is_word("width")) {
+        parser.take();
+        stage.width = parser.value();
+      } else if (t.is_word("instance")) {
+        group.instances.push_back(parser.instance_statement());
+      } else if (parser.skip_display_field() || parser.skip_slide_surface()) {
+      } else if (t.kind == TokenKind::word && is_slide_node_setting(t.text)) {
+        parser.take();
+        parser.skip_display_value();
+      } else {
+        parser.fail(t, "'" + std::string(amount) + "', a setting, 'instance' or '" + std::string(end) + "'");
+      }
+    } catch (const SyntaxError&) {
+      parser.resynchronise(inner, start);
+    }
+  }
+  if (!has_amount)
+    parser.diagnostics().error(opener.location, "'" + opener.text + "' needs '" + std::string(amount) + "'");
+  parser.ast().stages.push_back(std::move(stage));
+  parser.ast().groups.push_back(std::move(group));
+}
+
 void parse_subdivision(StatementParser& parser, Index kind) {
+  if (parser.is_slf())
+    return parse_slide_stage(parser, StageKind::subdivision, statement_kinds()[kind].end_keyword);
   parse_stage_blocks(parser, StageKind::subdivision, statement_kinds()[kind].end_keyword);
 }
 
 void parse_offset(StatementParser& parser, Index kind) {
+  if (parser.is_slf())
+    return parse_slide_stage(parser, StageKind::offset, statement_kinds()[kind].end_keyword);
   parse_stage_blocks(parser, StageKind::offset, statement_kinds()[kind].end_keyword);
 }
 
@@ -106,7 +169,7 @@ void save_offset(SceneWriter& writer, Index) {
 StatementKind subdivision_statement() {
   return {.keyword = "subdivision",
           .end_keyword = "endsubdivision",
-          .dialect = StatementDialect::successor,
+          .dialect = StatementDialect::successor_and_slide,
           .parse = parse_subdivision,
           .save = save_subdivision};
 }
@@ -114,7 +177,7 @@ StatementKind subdivision_statement() {
 StatementKind offset_statement() {
   return {.keyword = "offset",
           .end_keyword = "endoffset",
-          .dialect = StatementDialect::successor,
+          .dialect = StatementDialect::successor_and_slide,
           .parse = parse_offset,
           .save = save_offset};
 }
