@@ -33,7 +33,8 @@ std::string scene_text(const SceneDocument& document) {
     for (scene::ParameterId id : bank.parameters) {
       const scene::Parameter& p = scene.parameters()[id];
       out << "    $" << p.full_name << " = " << format_number(p.value) << "  [" << format_number(p.min)
-          << ", " << format_number(p.max) << "] step " << format_number(p.step) << "\n";
+          << ", " << format_number(p.max) << "] step " << format_number(p.step)
+          << (p.label.empty() ? "" : "  \"" + p.label + "\"") << "\n";
     }
   }
   for (const scene::SceneInstance& i : scene.instances()) {

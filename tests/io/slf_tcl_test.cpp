@@ -58,6 +58,7 @@ TEST_CASE("a .slf file's Tcl makes its sliders and computes its braced values, a
   CHECK(s.parameters()[*r].min == 1.0);
   CHECK(s.parameters()[*r].max == 10.0);
   CHECK(s.parameters()[*r].step == 0.5);
+  CHECK(s.parameters()[*r].label == "radius");
   CHECK(s.parameters()[*n].value == 3);
   CHECK(test::vertex_position(s, "g_o_b") == Vec3(2.5, 0, 0));
   // A slider of whole steps gives Tcl an integer, so `/` divides as SLIDE's Tcl did: 3 / 2 is 1.

@@ -38,7 +38,9 @@ std::vector<scene::ParameterId> filtered_parameters(const scene::Scene& scene, c
   if (wanted.empty() || lower(bank.name).find(wanted) != std::string::npos) return shown;
   std::vector<scene::ParameterId> kept;
   for (scene::ParameterId id : shown)
-    if (lower(scene.parameters()[id].name).find(wanted) != std::string::npos) kept.push_back(id);
+    if (lower(scene.parameters()[id].name).find(wanted) != std::string::npos ||
+        lower(scene.parameters()[id].label).find(wanted) != std::string::npos)
+      kept.push_back(id);
   return kept;
 }
 

@@ -58,7 +58,9 @@ std::optional<double> draw_slider(const scene::Parameter& p, scene::ParameterId 
   double value = p.value;
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 6.0f);
   // Ctrl+click types an exact value (ImGui's own behaviour).
-  if (ImGui::SliderScalar(p.name.c_str(), ImGuiDataType_Double, &value, &range.first, &range.second, "%.4g"))
+  // A SLIDE scale's label where it has one; its name keeps the row's id.
+  const std::string text = p.label.empty() ? p.name : p.label + "##" + p.name;
+  if (ImGui::SliderScalar(text.c_str(), ImGuiDataType_Double, &value, &range.first, &range.second, "%.4g"))
     moved = snap_to_step(p, value, range);
   continues = ImGui::IsItemActive() && !ImGui::IsItemActivated();
   if (is_moved) ImGui::PopStyleColor();

@@ -72,9 +72,9 @@ void Scene::register_parameters(std::vector<Diagnostic>& errors) {
   for (const BankDecl& b : ast_.banks) {
     Bank bank{b.name.text, {}, {}};
     for (const SliderDecl& s : b.sliders) {
-      Parameter p{b.name.text,     s.name.text,    b.name.text + "_" + s.name.text,
-                  s.value.literal, s.min.literal,  s.max.literal,
-                  s.step.literal,  s.value.literal};
+      Parameter p{b.name.text,     s.name.text,     b.name.text + "_" + s.name.text,
+                  s.value.literal, s.min.literal,   s.max.literal,
+                  s.step.literal,  s.value.literal, s.label};
       if (parameter_ids_.count(p.full_name)) {
         errors.push_back(located(s.name.location, "duplicate parameter '" + p.full_name + "'"));
         continue;

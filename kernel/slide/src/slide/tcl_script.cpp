@@ -241,7 +241,8 @@ std::vector<scene::BankDecl> TclScript::slider_banks() {
          ++k)
       name = parameter_word(variable) + "_" + std::to_string(k);
     const auto literal = [](double x) { return scene::Value{x, no_index, {}}; };
-    bank->sliders.push_back({{name, w.at}, literal(value), literal(from), literal(to), literal(resolution)});
+    bank->sliders.push_back(
+        {{name, w.at}, literal(value), literal(from), literal(to), literal(resolution), w.option("label")});
     const bool is_whole = std::floor(resolution) == resolution && std::floor(from) == from;
     bindings_.push_back(std::make_unique<Binding>(
         Binding{variable, bank_name + "_" + name, is_whole, {}, value, this, w.option("command"), w.at}));

@@ -30,6 +30,7 @@ struct DialectChoice {
 struct SliderDecl {
   Name name;
   Value value, min, max, step;
+  std::string label = {};  // a SLIDE scale's -label
 };
 
 // `bank NAME set ... [list (ids)] endbank`: the successor's `list` names the sliders the panel shows.

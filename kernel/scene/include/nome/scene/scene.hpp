@@ -28,6 +28,7 @@ struct Parameter {
   std::string full_name;  // BANK_NAME
   double value = 0, min = 0, max = 0, step = 0;
   double file_value = 0;  // what the file's `set` gives it: `value` differs where the slider was moved
+  std::string label;      // the panel's text for it (a SLIDE scale's -label); empty: its name
 };
 
 // A slider panel.
