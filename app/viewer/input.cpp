@@ -18,6 +18,7 @@ InputFrame read_imgui_input() {
   if (io.WantCaptureKeyboard) return input;
   const KeyModifier modifiers = (io.KeyShift ? KeyModifier::shift : KeyModifier::none) |
                                 (io.KeyCtrl ? KeyModifier::control : KeyModifier::none);
+  input.held = modifiers;
   // ImGui 1.86 indexes its key state by the platform's key codes (GLFW's here).
   for (int key = 0; key < IM_ARRAYSIZE(io.KeysDown); ++key)
     if (ImGui::IsKeyPressed(key, false)) input.keys.push_back({key, modifiers});

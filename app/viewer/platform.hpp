@@ -24,8 +24,9 @@ struct InputFrame {
   std::array<bool, 3> is_down{};
   bool is_double_click = false;  // the left press of this frame is the second of a double-click
   double wheel = 0.0;
-  bool is_over_panel = false;  // a panel takes the mouse: no camera moves or picks start
-  std::vector<KeyPress> keys;  // pressed this frame and not taken by a panel's text field
+  bool is_over_panel = false;            // a panel takes the mouse: no camera moves or picks start
+  std::vector<KeyPress> keys;            // pressed this frame and not taken by a panel's text field
+  KeyModifier held = KeyModifier::none;  // the modifier keys held now
 };
 
 // The window system under the viewer: a GLFW window, or a test's fixed-size one with its own clock.

@@ -82,9 +82,14 @@ bool Window::frame(const InputFrame& input) {
   // again after the script, whose keys and commands may change it.
   arrange_layout();
   sessions_.update(platform_.now());
-  handle_mouse(input);
-  for (const KeyPress& key : input.keys)
-    if (actions_.press(key.key, key.modifiers)) break;
+  last_cursor_ = input.cursor;
+  const bool is_taken = std::any_of(tools_.begin(), tools_.end(),
+                                    [&](const auto& tool) { return tool->take_input(tool_context_, input); });
+  if (!is_taken) {
+    handle_mouse(input);
+    for (const KeyPress& key : input.keys)
+      if (actions_.press(key.key, key.modifiers)) break;
+  }
   update_stage();
   // The first frames lay out the panels; a screenshot taken then would show them half-built. Each
   // command sees the result of the one before: the stage and busy tools' work are awaited.

@@ -163,7 +163,8 @@ class Window : private ScriptHost {
   void click(glm::dvec2 pixel) override;
   bool double_click(glm::dvec2 pixel) override;
   void answer_unsaved(UnsavedAnswer answer) override;
-  bool press_key(const std::string& label) override { return actions_.press(label); }
+  // A script's key: to the tool that holds the input (a drag) as a key pressed now, else to the action table.
+  bool press_key(const std::string& label) override;
   bool run_action(Action action) override { return actions_.run(action); }
   void set_view(double azimuth, double elevation) override;
   void take_screenshot(const std::filesystem::path& path) override {
@@ -221,6 +222,7 @@ class Window : private ScriptHost {
   float style_scale_ = 0.0f;
   bool is_style_dark_ = false;
 
+  glm::dvec2 last_cursor_{0.0};  // where this frame's input put the cursor
   bool should_close_ = false;
   std::optional<std::filesystem::path> pending_screenshot_;
   bool is_screenshot_of_model_ = false;  // P: the viewport only; the script's screenshot: the window

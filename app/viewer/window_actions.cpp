@@ -198,6 +198,18 @@ void Window::print_state() {
   log_.info(line.str());
 }
 
+bool Window::press_key(const std::string& label) {
+  if (const auto key = key_of_label(label)) {
+    InputFrame frame;
+    frame.cursor = last_cursor_;
+    frame.keys.push_back({key->first, key->second});
+    frame.held = key->second;
+    for (const std::unique_ptr<Tool>& tool : tools_)
+      if (tool->take_input(tool_context_, frame)) return true;
+  }
+  return actions_.press(label);
+}
+
 void Window::click(glm::dvec2 pixel) {
   if (!stage_.shown()) return;
   for (const std::unique_ptr<Tool>& tool : tools_)

@@ -183,15 +183,18 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "The page's script call moves a slider, and the threaded page computes what the one-thread page does",
+    "The page's script call moves a slider and drags a vertex, and the threaded page computes what the "
+    "one-thread page does",
     "[app][web]") {
   NOME_NEEDS_WEB_PAGE();
   const PageServer server;
-  const std::string script = slider_script + "subdiv 3\noffset 0.05\nstate";
+  // A drag as the page's script makes it: the vertex's sliders solved for, as on the desktop.
+  const std::string script = slider_script + "subdiv 3\noffset 0.05\ndrag fun1_bc3 z -0.2\nstate";
   const PageRun threaded = open_page(server, "scene=funnel_cube.nome", "threaded.png", script);
   const PageRun single = open_page(server, "threads=0&scene=funnel_cube.nome", "single.png", script);
   INFO(threaded.log);
   CHECK(threaded.log.find("threads build") != std::string::npos);
+  CHECK(threaded.log.find("drag: fp_z -0.8 to -1") != std::string::npos);
   const std::vector<std::string> states = state_lines(threaded.log);
   REQUIRE(states.size() == 3);
   CHECK(states[0] != states[1]);

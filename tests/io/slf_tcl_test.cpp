@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 
+#include "nome/edit/scene_drag.hpp"
 #include "nome/error.hpp"
 #include "nome/io/read_scene.hpp"
 #include "nome/scene/parser.hpp"
@@ -292,4 +293,25 @@ TEST_CASE("SLIDE's render statements: the render root is what is drawn; cameras 
               "group g instance o lookat eye (1 1 1) target (0 0 0) up (0 1 0) endlookat endinstance "
               "endgroup\n"),
       Catch::Contains("t.slf:2:20: not supported yet: lookat on 'o', which is not a camera or a light"));
+}
+
+TEST_CASE("a SLIDE scene drags as a .nome scene does: its numbers, and the Tcl sliders behind its values",
+          "[io]") {
+  const std::string path = test::scratch_path("nome_slf_tcl", "drag.slf");
+  const scene::Scene s = slide::read_slf_scene(slider_scene, path);
+  const std::string a = s.resolve_vertex_name("a"), b = s.resolve_vertex_name("b");
+  SceneDrag literal(s, slider_scene, {{a}, {}});
+  const std::string moved = replaced_text(slider_scene, literal.move(Vec3(0.25, -1, 2)).replacements);
+  std::string expected = slider_scene;
+  expected.replace(expected.find("point a (0 0 0)"), 15, "point a (0.25 -1 2)");
+  CHECK(moved == expected);
+  const scene::Scene again = slide::read_slf_scene(moved, path);
+  CHECK(test::vertex_position(again, a) == Vec3(0.25, -1, 2));
+
+  SceneDrag slider(s, slider_scene, {{b}, {}});
+  CHECK(slider.description() == "slider w_f_r");
+  const DragStep step = slider.move(Vec3(1, 0, 0));
+  REQUIRE(step.sliders.size() == 1);
+  CHECK(step.sliders[0].second == 3.5);
+  CHECK(step.slider_miss < 1e-12);
 }

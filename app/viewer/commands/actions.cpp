@@ -55,6 +55,9 @@ const ActionInfo table[] = {
     {accept, "accept", GLFW_KEY_A, control, "accept the temporary faces (consolidate)"},
     {delete_faces, "delete", GLFW_KEY_DELETE, none, "delete the selected faces"},
     {toggle_sharp, "sharp", GLFW_KEY_K, none, "mark the selected edges sharp (smooth if all are sharp)"},
+    {move, "move", GLFW_KEY_G, none,
+     "drag the selected vertices or instances: X/Y/Z an axis (Shift: across it), Ctrl the grid, a number "
+     "that far; click or Enter keeps, Esc or right click cancels"},
     {clear_selection, "clear-selection", GLFW_KEY_ESCAPE, none, "clear the selection"},
     {clear_temporary, "clear", 0, none, "clear the temporary faces"},
     {zip, "zip", 0, none, "zip the two selected borders"},
@@ -136,6 +139,15 @@ std::string key_label(int key, KeyModifier modifiers) {
   if (has(modifiers, KeyModifier::control)) label += "Ctrl+";
   if (has(modifiers, KeyModifier::shift)) label += "Shift+";
   return label + key_name(key);
+}
+
+std::optional<std::pair<int, KeyModifier>> key_of_label(const std::string& label) {
+  const std::string wanted = lower(label);
+  for (const KeyModifier m : {KeyModifier::none, KeyModifier::shift, KeyModifier::control,
+                              KeyModifier::control | KeyModifier::shift})
+    for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key)
+      if (lower(key_label(key, m)) == wanted) return std::pair{key, m};
+  return std::nullopt;
 }
 
 void ActionRegistry::bind(Action action, Handler handler) {

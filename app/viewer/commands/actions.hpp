@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace nome::viewer {
@@ -55,6 +56,7 @@ enum class Action {
   toggle_parameter_lock,
   toggle_sif_pairing,
   toggle_sharp,
+  move,
   toggle_turntable,
   measure_distance,
   measure_wall,
@@ -89,6 +91,8 @@ std::string action_names();
 std::string shortcut(Action action);
 // "Ctrl+Shift+F1", "W", "?" from a GLFW key code and modifiers.
 std::string key_label(int key, KeyModifier modifiers);
+// The key code and modifiers of a label as key_label writes it (case-insensitive); none for another text.
+std::optional<std::pair<int, KeyModifier>> key_of_label(const std::string& label);
 
 // A command a tool adds beside the table's: its script name (`tool NAME`), its key (0: none) and the help
 // overlay's words.

@@ -70,6 +70,10 @@ const Syntax syntaxes[] = {
     {"text-set", ScriptCommand::Kind::text_set, 1, 0, "text-set PATH (the text pane's text, not applied)"},
     {"log-click", ScriptCommand::Kind::log_click, 0, 1, "log-click N (the N-th newest log message)"},
     {"tool", ScriptCommand::Kind::tool, 1, 0, "tool NAME (a command a tool adds)"},
+    {"drag", ScriptCommand::Kind::drag, 1, 3, "drag SELECTION DX DY DZ"},
+    {"drag", ScriptCommand::Kind::drag, 2, 1, "drag SELECTION x|y|z DISTANCE"},
+    {"drag-hold", ScriptCommand::Kind::drag_hold, 1, 3, "drag-hold SELECTION DX DY DZ"},
+    {"drag-hold", ScriptCommand::Kind::drag_hold, 2, 1, "drag-hold SELECTION x|y|z DISTANCE"},
     {"quit", ScriptCommand::Kind::quit, 0, 0, "quit"},
 };
 
@@ -78,6 +82,7 @@ const char* const recovery_answers[] = {"restore", "discard"};
 const char* const settings[] = {"creases", "smooth-triangles", "border", "sharpness"};
 const char* const unsaved_answers[] = {"save", "discard", "cancel"};
 const char* const scrolled_panels[] = {"controls", "parameters", "log"};
+const char* const axes[] = {"x", "y", "z"};
 const char* const display_colors[] = {"default",   "back-faces", "selected",    "background",
                                       "rim-lines", "temporary",  "consolidated"};
 
@@ -118,7 +123,8 @@ const Word* outside_unit_range(const ScriptCommand& command, const std::vector<W
 
 std::string command_words() {
   std::string list;
-  for (const Syntax& s : syntaxes) list += std::string(list.empty() ? "" : ", ") + s.word;
+  for (const Syntax& s : syntaxes)
+    if (list.find(s.word) == std::string::npos) list += std::string(list.empty() ? "" : ", ") + s.word;
   return list;
 }
 
@@ -157,6 +163,13 @@ const char* script_synopsis() {
          "  log-click N               click the N-th newest log message (1: the newest): a located\n"
          "                            one puts the text pane's cursor at its line and column\n"
          "  tool NAME                 run a command a tool adds (listed with its key in the help)\n"
+         "  drag SELECTION DX DY DZ   drag vertices or instances by that offset, as G and the mouse do:\n"
+         "                            SELECTION is `selection` (the selected vertices or instances), a\n"
+         "                            vertex's name or an instance's path; the text or sliders follow\n"
+         "  drag SELECTION x|y|z D    the same along one axis\n"
+         "  drag-hold SELECTION ...   the same, the drag left held as by the mouse (the handle and the\n"
+         "                            changed numbers show): key Enter keeps it, key Esc cancels,\n"
+         "                            keys X Y Z and digits act as while dragging\n"
          "  quit                      end the session (without asking: key Ctrl+Q asks)\n";
 }
 
@@ -173,9 +186,11 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     ++line_number;
     const std::vector<Word> words = split(line);
     if (words.empty()) continue;
+    // A command with several forms takes the one its word count fits (else its first form is expected).
     const Syntax* syntax = nullptr;
     for (const Syntax& s : syntaxes)
-      if (words[0].text == s.word) syntax = &s;
+      if (words[0].text == s.word && (!syntax || words.size() == std::size_t(1 + s.words + s.numbers)))
+        syntax = syntax && words.size() == std::size_t(1 + syntax->words + syntax->numbers) ? syntax : &s;
     if (!syntax) {
       fail(words[0].column, "expected a command (" + command_words() + "), found '" + words[0].text + "'");
       continue;
@@ -205,6 +220,12 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     if (!is_valid) continue;
     if (const std::string expected = expected_word(command); !expected.empty()) {
       fail(words[1].column, "expected " + expected + ", found '" + command.words[0] + "'");
+      continue;
+    }
+    const bool is_drag =
+        command.kind == ScriptCommand::Kind::drag || command.kind == ScriptCommand::Kind::drag_hold;
+    if (is_drag && command.words.size() == 2 && !is_one_of(command.words[1], axes)) {
+      fail(words[2].column, "expected an axis x, y or z, found '" + command.words[1] + "'");
       continue;
     }
     if (const Word* w = outside_unit_range(command, words, syntax->words)) {

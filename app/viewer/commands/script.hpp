@@ -33,6 +33,8 @@ struct ScriptCommand {
     text_set,
     log_click,
     tool,
+    drag,
+    drag_hold,
     quit
   };
   Kind kind = Kind::quit;

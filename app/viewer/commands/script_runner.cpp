@@ -88,6 +88,8 @@ bool run_command(ScriptHost& host, const ScriptCommand& c) {
     case Kind::text_set:
     case Kind::log_click:
     case Kind::tool:
+    case Kind::drag:
+    case Kind::drag_hold:
       return host.run_tool_script(c);
     case Kind::screenshot:
       host.take_screenshot(c.words[0]);

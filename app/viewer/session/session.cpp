@@ -28,8 +28,12 @@ Session Session::open(const std::filesystem::path& path, bool pair_sif_triangles
   Session session;
   session.path_ = path;
   session.pair_sif_triangles_ = pair_sif_triangles;
-  session.document_ = is_scene_file(path) ? SceneDocument::from_scene(read_scene(path, for_document))
-                                          : SceneDocument::from_polygons(session.read_flat());
+  if (is_scene_file(path)) {
+    session.text_ = read_text_file(path);
+    session.document_ = SceneDocument::from_scene(read_scene_text(session.text_, path, for_document));
+  } else {
+    session.document_ = SceneDocument::from_polygons(session.read_flat());
+  }
   session.update_input();
   return session;
 }
@@ -203,6 +207,21 @@ void Session::reload_text(std::string_view text) {
   if (!scene())
     throw InvalidInputError(path_.filename().string() + " is not a scene: its text is not evaluated");
   document_.reload(read_scene_text(text, path_, for_document));
+  text_ = text;
+  update_input();
+}
+
+void Session::apply_drag_step(const std::string& text,
+                              const std::vector<std::pair<scene::ParameterId, double>>& sliders) {
+  bool is_changed = text != text_;
+  if (is_changed) reload_text(text);
+  for (const auto& [parameter, value] : sliders)
+    if (scene()->parameters()[parameter].value != value) {
+      document_.set_parameter(parameter, value);
+      is_changed = true;
+    }
+  if (!is_changed) return;
+  is_modified_ = true;
   update_input();
 }
 

@@ -119,6 +119,14 @@ class Session {
   // The same with `text` as the file's content (the text pane's Apply): one evaluation for both. Throws
   // InvalidInputError for flat geometry.
   void reload_text(std::string_view text);
+  // The text the scene was read from: the file's, or the last one reload_text applied; empty for flat
+  // geometry.
+  const std::string& text() const { return text_; }
+  // A drag's step (sculpting by hand): `text` read as the file's content when it differs from text() (the
+  // vertices alone move while the faces stay), then the sliders moved. Throws as reload_text and
+  // set_parameter do; an unsaved change.
+  void apply_drag_step(const std::string& text,
+                       const std::vector<std::pair<scene::ParameterId, double>>& sliders);
 
  private:
   EditOutcome changed(EditOutcome outcome);
@@ -127,6 +135,7 @@ class Session {
   PolygonSoup read_flat() const;
 
   std::filesystem::path path_;
+  std::string text_;
   bool pair_sif_triangles_ = false;
   SceneDocument document_;
   std::shared_ptr<const PipelineInput> polygons_;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "nome/edit/scene_drag.hpp"
 #include "viewer/commands/actions.hpp"
 #include "viewer/message_log.hpp"
 #include "viewer/session/autosave.hpp"
@@ -102,6 +103,27 @@ class SessionController {
   // Changes whenever the file on disk may hold another text: opened, changed by another program, saved.
   std::uint64_t disk_version() const { return disk_version_; }
 
+  // Sculpting by hand (session_drag.cpp): a drag of vertices (full names) and instances (placement paths)
+  // from the scene's current text (SceneDrag). Refused, logged, with false: flat geometry, a text pane
+  // with changes not applied, a selection nothing moves, sliders to move while they are locked.
+  bool begin_drag(const DragSelection& selection);
+  // The selection `offset` away from where it was at the press: the text rewritten and read again and the
+  // sliders solved for (the vertices alone move while the faces stay). False (logged) when refused.
+  bool drag_to(const Vec3& offset);
+  // Keeps the drag as one step of the undo history; cancel_drag returns to the press.
+  void end_drag();
+  void cancel_drag();
+  const SceneDrag* drag() const { return drag_ ? &drag_->drag : nullptr; }
+  const DragStep* drag_step() const { return drag_ ? &drag_->step : nullptr; }
+  // The byte ranges of the current scene text that the drag in progress rewrote (the text pane marks them).
+  std::vector<std::pair<std::size_t, std::size_t>> drag_marks() const;
+  // The text the scene was read from (Session::text), and a number that grows whenever it changes other
+  // than by the text pane's own Apply or Save (a drag, its undo): the text pane then shows it.
+  const std::string& scene_text() const;
+  std::uint64_t scene_text_version() const { return scene_text_version_; }
+  // The text pane says whether it holds changes not applied (a drag would overwrite them).
+  void set_unapplied_text(bool has_changes) { has_unapplied_text_ = has_changes; }
+
   // Once a frame: reloads the file when it changed on disk (every half second at most) and keeps the
   // recovery file of unsaved changes.
   void update(double now);
@@ -123,6 +145,19 @@ class SessionController {
   UndoHistory history_;
   std::vector<scene::Diagnostic> text_errors_;
   std::uint64_t disk_version_ = 0;
+
+  struct DragInProgress {
+    SceneDrag drag;
+    DragStep step;
+    std::vector<std::pair<scene::ParameterId, double>> sliders_before;
+    std::vector<UnresolvedEdit> unresolved_before;
+  };
+  std::optional<DragInProgress> drag_;
+  std::uint64_t scene_text_version_ = 0;
+  bool has_unapplied_text_ = false;
+  // Puts the scene to a text and slider values (a drag's step, its undo and redo); logged when refused.
+  bool apply_drag_state(const std::string& text,
+                        const std::vector<std::pair<scene::ParameterId, double>>& sliders);
 
   bool is_parameter_lock_on_ = false;
   bool pair_sif_triangles_ = true;

@@ -3,9 +3,13 @@
 #include <sstream>
 
 #include "nome/io/read_scene.hpp"
-#include "viewer/session/source_text.hpp"
+#include "nome/scene/source_text.hpp"
 
 namespace nome::viewer {
+
+using scene::byte_offset;
+using scene::line_count;
+using scene::location_at;
 
 void TextPane::sync(const std::filesystem::path& file, bool is_scene, std::uint64_t disk_version) {
   if (file == file_ && is_scene == is_scene_ && disk_version == disk_version_) return;
@@ -60,6 +64,12 @@ void TextPane::set_statement(const std::optional<scene::SourcePlace>& place) {
       place && is_in_file(place->file) ? std::optional(place->location.line) : std::nullopt;
   if (line && line != statement_line_) pending_scroll_line_ = line;
   statement_line_ = line;
+}
+
+void TextPane::set_marks(std::vector<std::pair<std::size_t, std::size_t>> marks) {
+  if (!marks.empty() && (marks_.empty() || marks.front().first != marks_.front().first))
+    pending_scroll_line_ = location_at(text_, marks.front().first).line;
+  marks_ = std::move(marks);
 }
 
 void TextPane::go_to(scene::SourceLocation at) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "nome/scene/source_place.hpp"
@@ -52,6 +53,10 @@ class TextPane {
   // one is scrolled to.
   void set_statement(const std::optional<scene::SourcePlace>& place);
   std::optional<int> statement_line() const { return statement_line_; }
+  // Byte ranges of the text to mark (the numbers a drag in progress rewrites); a new first one is scrolled
+  // to.
+  void set_marks(std::vector<std::pair<std::size_t, std::size_t>> marks);
+  const std::vector<std::pair<std::size_t, std::size_t>>& marks() const { return marks_; }
   // Puts the text cursor at a place of this file, scrolled into view (a click on an error in the log).
   void go_to(scene::SourceLocation at);
   // Where the text cursor is (1-based line and byte column).
@@ -83,6 +88,7 @@ class TextPane {
   bool is_changed_on_disk_ = false;
   std::vector<scene::Diagnostic> errors_;  // in this file
   std::optional<int> statement_line_;
+  std::vector<std::pair<std::size_t, std::size_t>> marks_;
   std::size_t cursor_offset_ = 0;
   std::size_t followed_offset_ = 0;  // where the cursor was when the view last followed it
   std::optional<std::size_t> pending_cursor_;

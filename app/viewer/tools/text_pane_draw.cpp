@@ -8,13 +8,17 @@
 #define GLFW_INCLUDE_NONE  // GL comes from glad (render/gl.hpp)
 #include <GLFW/glfw3.h>
 
-#include "viewer/session/source_text.hpp"
+#include "nome/scene/source_text.hpp"
 #include "viewer/tools/text_pane.hpp"
 
 namespace nome::viewer {
+
+using scene::byte_offset;
+using scene::line_count;
 namespace {
 
 const ImVec4 error_color(0.85f, 0.15f, 0.15f, 1.0f);
+const ImVec4 mark_color(0.95f, 0.65f, 0.10f, 1.0f);
 
 ImU32 tint(const ImVec4& color, float alpha) {
   return ImGui::GetColorU32(ImVec4(color.x, color.y, color.z, alpha));
@@ -121,6 +125,19 @@ void TextPane::draw_gutter(float gutter, float width) {
     const float w = ImGui::CalcTextSize(number).x;
     draw->AddText(ImVec2(origin.x + gutter - w - style.ItemSpacing.x, y),
                   ImGui::GetColorU32(error.empty() ? ImGuiCol_TextDisabled : ImGuiCol_Text), number);
+  }
+  // The numbers a drag rewrites, tinted and underlined.
+  for (const auto& [begin, end] : marks_) {
+    const scene::SourceLocation at = scene::location_at(text_, begin);
+    if (at.line < first + 1 || at.line > last) continue;
+    const std::size_t start = byte_offset(text_, {at.line, 1});
+    const float x = origin.x + gutter + style.FramePadding.x +
+                    ImGui::CalcTextSize(text_.data() + start, text_.data() + begin).x;
+    const float w = ImGui::CalcTextSize(text_.data() + begin, text_.data() + std::min(end, text_.size())).x;
+    const float y = top + (at.line - 1) * line_height;
+    draw->AddRectFilled(ImVec2(x - 1.0f, y), ImVec2(x + w + 1.0f, y + line_height), tint(mark_color, 0.35f));
+    draw->AddLine(ImVec2(x, y + line_height - 1.0f), ImVec2(x + w, y + line_height - 1.0f),
+                  tint(mark_color, 1.0f), 2.0f);
   }
   // The first error's column, underlined under the text (while the field is not scrolled sideways).
   if (const scene::Diagnostic* e = first_error();

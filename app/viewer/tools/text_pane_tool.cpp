@@ -33,8 +33,15 @@ bool TextPaneTool::save_text(ToolContext& context) {
 }
 
 void TextPaneTool::sync(ToolContext& context) {
-  const SessionController& sessions = context.sessions;
+  SessionController& sessions = context.sessions;
   pane_.sync(sessions.path(), sessions.has_scene(), sessions.disk_version());
+  // A drag (or its undo) rewrote the scene's text: the pane shows it, not saved.
+  if (sessions.scene_text_version() != seen_scene_text_) {
+    seen_scene_text_ = sessions.scene_text_version();
+    if (pane_.is_scene()) pane_.set_text(sessions.scene_text());
+  }
+  sessions.set_unapplied_text(pane_.is_scene() && pane_.text() != sessions.scene_text());
+  pane_.set_marks(sessions.drag_marks());
   // The marks follow every evaluation of the file: Apply, Save, a reload after another program's change.
   pane_.set_errors(sessions.text_errors());
 }

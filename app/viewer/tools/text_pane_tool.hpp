@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -34,6 +35,7 @@ class TextPaneTool final : public Tool {
   std::optional<scene::SourcePlace> selection_statement(const ToolContext& context) const;
 
   TextPane pane_;
+  std::uint64_t seen_scene_text_ = 0;  // SessionController::scene_text_version shown
 };
 
 }  // namespace nome::viewer

@@ -47,6 +47,9 @@ class Tool {
   virtual void before_draw(ToolContext&) {}
   // Over the viewport, after the panels.
   virtual void draw_overlay(ToolContext&) {}
+  // This frame's mouse and keys before the camera and the shortcuts see them: true when the tool took
+  // them (a drag it holds), and nothing else gets them.
+  virtual bool take_input(ToolContext&, const InputFrame&) { return false; }
   // A left click in the viewport on the shown stage: true when the tool took it (the first one wins).
   virtual bool click(ToolContext&, glm::dvec2) { return false; }
   // A script command the tool answers (mode, color, text-set, ...): none when it is not the tool's, else

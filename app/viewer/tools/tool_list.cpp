@@ -1,6 +1,7 @@
 #include "viewer/tools/tool_list.hpp"
 
 #include "viewer/tools/measure_tool.hpp"
+#include "viewer/tools/move_tool.hpp"
 #include "viewer/tools/print_check_tool.hpp"
 #include "viewer/tools/print_setup_tool.hpp"
 #include "viewer/tools/section_tool.hpp"
@@ -13,6 +14,7 @@ namespace nome::viewer {
 // One line a tool. Measuring comes before selecting: while a measuring mode is on, clicks measure.
 std::vector<std::unique_ptr<Tool>> make_tools() {
   std::vector<std::unique_ptr<Tool>> tools;
+  tools.push_back(std::make_unique<MoveTool>());
   tools.push_back(std::make_unique<PrintCheckTool>());
   tools.push_back(std::make_unique<PrintSetupTool>());
   tools.push_back(std::make_unique<MeasureTool>());

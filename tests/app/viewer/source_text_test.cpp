@@ -4,30 +4,30 @@
 #include <fstream>
 
 #include "app/viewer_support.hpp"
+#include "nome/scene/source_text.hpp"
 #include "support/missing_point_scene.hpp"
 #include "viewer/message_log.hpp"
 #include "viewer/session/session_controller.hpp"
-#include "viewer/session/source_text.hpp"
 
 using namespace nome;
 using nome::scene::SourceLocation;
 
 TEST_CASE("lines and columns of an edited text map to byte offsets and back", "[app]") {
   const std::string text = "bank b\n  set n 4 3 8 1\n\nendbank";
-  CHECK(viewer::line_count(text) == 4);
-  CHECK(viewer::line_count("") == 1);
-  CHECK(viewer::line_count("a\n") == 2);
-  CHECK(viewer::byte_offset(text, {1, 1}) == 0);
-  CHECK(viewer::byte_offset(text, {2, 3}) == 9);
-  CHECK(text.substr(viewer::byte_offset(text, {2, 3}), 3) == "set");
-  CHECK(viewer::byte_offset(text, {3, 1}) == 23);
+  CHECK(scene::line_count(text) == 4);
+  CHECK(scene::line_count("") == 1);
+  CHECK(scene::line_count("a\n") == 2);
+  CHECK(scene::byte_offset(text, {1, 1}) == 0);
+  CHECK(scene::byte_offset(text, {2, 3}) == 9);
+  CHECK(text.substr(scene::byte_offset(text, {2, 3}), 3) == "set");
+  CHECK(scene::byte_offset(text, {3, 1}) == 23);
   // Past a line's end: its end; past the last line: the text's end.
-  CHECK(viewer::byte_offset(text, {2, 99}) == 22);
-  CHECK(viewer::byte_offset(text, {9, 1}) == text.size());
+  CHECK(scene::byte_offset(text, {2, 99}) == 22);
+  CHECK(scene::byte_offset(text, {9, 1}) == text.size());
   for (std::size_t offset = 0; offset <= text.size(); ++offset)
-    CHECK(viewer::byte_offset(text, viewer::location_at(text, offset)) == offset);
-  CHECK(viewer::location_at(text, 9) == SourceLocation{2, 3});
-  CHECK(viewer::location_at(text, 1000) == SourceLocation{4, 8});
+    CHECK(scene::byte_offset(text, scene::location_at(text, offset)) == offset);
+  CHECK(scene::location_at(text, 9) == SourceLocation{2, 3});
+  CHECK(scene::location_at(text, 1000) == SourceLocation{4, 8});
 }
 
 TEST_CASE("the log keeps a diagnostic's place, and finds one at the start of an error's text", "[app]") {

@@ -57,6 +57,21 @@ void Document::set_scene_geometry(PolygonSoup geometry) {
   note_new_topology();
 }
 
+void Document::update_scene_geometry(PolygonSoup geometry) {
+  const PolygonSoup& now = scene_;
+  const bool same_polygons =
+      geometry.face_offsets == now.face_offsets && geometry.face_vertices == now.face_vertices &&
+      geometry.positions.size() == now.positions.size() && geometry.vertex_names == now.vertex_names &&
+      geometry.face_names == now.face_names && geometry.sharp_edges == now.sharp_edges &&
+      geometry.sharp_edge_weights == now.sharp_edge_weights &&
+      geometry.sharp_vertices == now.sharp_vertices && geometry.hole_faces == now.hole_faces;
+  if (!same_polygons) return set_scene_geometry(std::move(geometry));
+  scene_.face_origins = std::move(geometry.face_origins);
+  if (!(geometry.face_attributes == scene_.face_attributes))
+    set_scene_face_attributes(std::move(geometry.face_attributes));
+  move_scene_vertices(std::move(geometry.positions));
+}
+
 void Document::move_scene_vertices(Buffer<Vec3> positions) {
   if (positions.size() != scene_.positions.size())
     throw InvalidInputError("Document::move_scene_vertices: " + std::to_string(positions.size()) +

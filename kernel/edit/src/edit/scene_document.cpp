@@ -105,7 +105,7 @@ void SceneDocument::reload(scene::Scene fresh) {
     }
   }
   scene_.emplace(std::move(fresh));
-  document_.set_scene_geometry(scene_->combined_soup());
+  document_.update_scene_geometry(scene_->combined_soup());
 }
 
 void SceneDocument::reload(PolygonSoup polygons) {

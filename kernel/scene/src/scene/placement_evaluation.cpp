@@ -61,15 +61,22 @@ void place_points(Buffer<Vec3>& points, const glm::dmat4& m) {
 
 }  // namespace
 
-glm::dmat4 Scene::instance_matrix(const InstanceDecl& decl, ParameterReads& reads) const {
+glm::dmat4 Scene::transforms_matrix(const InstanceDecl& decl, std::size_t first, std::size_t end,
+                                    ParameterReads& reads) const {
   glm::dmat4 local(1.0);
-  for (const TransformDecl& t : decl.transforms) {
+  for (std::size_t i = first; i < end && i < decl.transforms.size(); ++i) {
+    const TransformDecl& t = decl.transforms[i];
     double a[4];
     const int count = t.kind == TransformKind::translate || t.kind == TransformKind::scale ? 3 : 4;
     for (int k = 0; k < count; ++k) a[k] = evaluate(ast_.expressions, t.args[k], values_, &reads);
     local = transform_matrix(t, a) * local;
   }
   return local;
+}
+
+glm::dmat4 Scene::transforms_matrix(const InstanceDecl& decl, std::size_t first, std::size_t end) const {
+  ParameterReads reads;
+  return transforms_matrix(decl, first, end, reads);
 }
 
 glm::dmat4 Scene::world_matrix(Index placement, ParameterReads& reads) const {

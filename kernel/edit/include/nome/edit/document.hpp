@@ -45,6 +45,10 @@ class Document {
 
   // Replaces the geometry after a slider change. Edits refer to names and are resolved again.
   void set_scene_geometry(PolygonSoup geometry);
+  // New geometry for the scene, which may differ from the current one in its positions alone (the scene's
+  // text read again after a number changed): then only the positions, the faces' origins and attributes
+  // change and the topology version stays; otherwise as set_scene_geometry.
+  void update_scene_geometry(PolygonSoup geometry);
   // New positions for the scene's vertices, its faces and names unchanged (a slider that only moved
   // vertices): the name indexes stay. Throws InvalidInputError when the count differs.
   void move_scene_vertices(Buffer<Vec3> positions);

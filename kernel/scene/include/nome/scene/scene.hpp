@@ -18,6 +18,7 @@
 #include "nome/scene/ids.hpp"
 #include "nome/scene/piece.hpp"
 #include "nome/scene/scene_edits.hpp"
+#include "nome/scene/vertex_origin.hpp"
 
 namespace nome::scene {
 
@@ -186,6 +187,19 @@ class Scene {
   // ambiguous name. The viewer lists the banks a selection depends on first.
   std::vector<ParameterId> parameters_of_vertex(const std::string& name) const;
 
+  // How the vertex of that full name is placed (vertex_origins.cpp); throws InvalidInputError for a name
+  // no placement made.
+  VertexOrigin vertex_origin(const std::string& full_name) const;
+  // The vertex of that full name (referencing placements included), or none.
+  std::optional<PlacedVertex> find_placed_vertex(const std::string& full_name) const;
+  // Where it is now: valid while the faces stay (Scene::last_change_moved_vertices_only).
+  Vec3 position(PlacedVertex v) const { return placements_[v.placement].world.soup.positions[v.vertex]; }
+  // How the instance of that placement path is placed; throws InvalidInputError for an unknown path.
+  InstanceOrigin instance_origin(const std::string& path) const;
+  const InstanceDecl& instance_statement(const InstanceOrigin& origin) const;
+  // The statement's transforms [first, end) as one matrix, at the current slider values.
+  glm::dmat4 transforms_matrix(const InstanceDecl& decl, std::size_t first, std::size_t end) const;
+
   // Instance colours (report 8.4: colours given to selected instances). An instance is named by its
   // placement's path (`sh_tun1`); the path of the instance that placed a face (the longest placement path
   // its name starts with), none for a face no placement made.
@@ -293,7 +307,11 @@ class Scene {
   void evaluate_definition(const Placement& p, Evaluated& out, std::vector<Diagnostic>& errors);
   glm::dmat4 world_matrix(Index placement, ParameterReads& reads) const;
   // The instance statement's own transforms, in order, as one matrix.
-  glm::dmat4 instance_matrix(const InstanceDecl& decl, ParameterReads& reads) const;
+  glm::dmat4 instance_matrix(const InstanceDecl& decl, ParameterReads& reads) const {
+    return transforms_matrix(decl, 0, decl.transforms.size(), reads);
+  }
+  glm::dmat4 transforms_matrix(const InstanceDecl& decl, std::size_t first, std::size_t end,
+                               ParameterReads& reads) const;
   std::optional<Color> placement_color(Index placement, ParameterReads& reads) const;
   Color surface_color(const Name& surface, ParameterReads& reads) const;
   void mark_references(const std::vector<Index>& placements);

@@ -1,14 +1,14 @@
-#include "viewer/session/source_text.hpp"
+#include "nome/scene/source_text.hpp"
 
 #include <algorithm>
 
-namespace nome::viewer {
+namespace nome::scene {
 
 int line_count(std::string_view text) {
   return 1 + int(std::count(text.begin(), text.end(), '\n'));
 }
 
-std::size_t byte_offset(std::string_view text, scene::SourceLocation at) {
+std::size_t byte_offset(std::string_view text, SourceLocation at) {
   std::size_t start = 0;
   for (int line = 1; line < at.line; ++line) {
     const std::size_t newline = text.find('\n', start);
@@ -19,7 +19,7 @@ std::size_t byte_offset(std::string_view text, scene::SourceLocation at) {
   return std::min(start + std::size_t(std::max(at.column, 1) - 1), end);
 }
 
-scene::SourceLocation location_at(std::string_view text, std::size_t offset) {
+SourceLocation location_at(std::string_view text, std::size_t offset) {
   offset = std::min(offset, text.size());
   const std::string_view before = text.substr(0, offset);
   const std::size_t newline = before.rfind('\n');
@@ -27,4 +27,4 @@ scene::SourceLocation location_at(std::string_view text, std::size_t offset) {
   return {line_count(before), int(offset - start) + 1};
 }
 
-}  // namespace nome::viewer
+}  // namespace nome::scene
