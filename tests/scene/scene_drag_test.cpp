@@ -226,3 +226,32 @@ TEST_CASE("a rim line's vertex drags by its point's numbers", "[scene]") {
   CHECK(moved.find("point b (1 2 0)") != std::string::npos);
   CHECK(test::vertex_position(read(moved), "r_b") == Vec3(1, 2, 1));
 }
+
+TEST_CASE("positions at trial slider values are those the sliders give, the scene unchanged", "[scene]") {
+  // The consolidated funnel cube's patches copy the funnels' vertices through rotations: a chain of copies.
+  scene::Scene s = test::load_scene_file(test::assets_dir() + "funnel_cube_consolidated.nome");
+  std::vector<std::string> names = {s.resolve_vertex_name("fun1_hc3")};
+  for (const scene::SceneInstance& instance : s.instances())
+    if (instance.name == "tp1" || instance.name == "tp6")
+      names.push_back(instance.geometry.soup.vertex_names[0]);
+  REQUIRE(names.size() == 3);
+  std::vector<scene::PlacedVertex> vertices;
+  for (const std::string& name : names) {
+    const auto v = s.find_placed_vertex(name);
+    REQUIRE(v);
+    vertices.push_back(*v);
+  }
+  const scene::ParameterId ro = *s.find_parameter("fp_ro"), z = *s.find_parameter("fp_z");
+  const std::vector<Vec3> before = s.positions_with(vertices, {});
+  const std::vector<std::pair<scene::ParameterId, double>> trial = {{ro, 0.8}, {z, -0.3}};
+  const std::vector<Vec3> with = s.positions_with(vertices, trial);
+  for (std::size_t i = 0; i < vertices.size(); ++i) CHECK(s.position(vertices[i]) == before[i]);
+  scene::Scene moved = s;
+  moved.set_parameter(ro, 0.8);
+  moved.set_parameter(z, -0.3);
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    INFO(names[i]);
+    CHECK(with[i] != before[i]);
+    CHECK(glm::distance(with[i], test::vertex_position(moved, names[i])) < 1e-12);
+  }
+}

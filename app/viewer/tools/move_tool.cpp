@@ -56,6 +56,23 @@ double segment_distance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
   return glm::distance(p, a + t * ab);
 }
 
+// What a script names: a vertex by any unique suffix of its name, a copied vertex (a consolidated mesh's) by
+// its full name, else an instance by its path; InvalidInputError for none of them.
+DragSelection named_selection(const scene::Scene& scene, const std::string& what) {
+  try {
+    return {{scene.resolve_vertex_name(what)}, {}};
+  } catch (const scene::SceneError& not_vertex) {
+    if (scene.find_placed_vertex(what)) return {{what}, {}};
+    try {
+      scene.instance_origin(what);
+    } catch (const Error&) {
+      throw InvalidInputError("drag: '" + what + "' is no instance path, and as a vertex: " +
+                              not_vertex.diagnostics().front().message);
+    }
+    return {{}, {what}};
+  }
+}
+
 }  // namespace
 
 void MoveTool::bind(ToolContext& context) {
@@ -336,24 +353,10 @@ std::optional<bool> MoveTool::run_script(ToolContext& context, const ScriptComma
 
 bool MoveTool::run_drag(ToolContext& context, const ScriptCommand& command) {
   if (drag_) finish(context, true);
-  DragSelection selection;
   const std::string& what = command.words[0];
-  if (what == "selection") {
-    selection = dragged(context);
-  } else if (const scene::Scene* scene = context.sessions.scene()) {
-    // A vertex's name (any unique suffix), else an instance's path (InvalidInputError for neither).
-    try {
-      selection.vertices.push_back(scene->resolve_vertex_name(what));
-    } catch (const scene::SceneError& not_vertex) {
-      try {
-        scene->instance_origin(what);
-      } catch (const Error&) {
-        throw InvalidInputError("drag: '" + what + "' is no instance path, and as a vertex: " +
-                                not_vertex.diagnostics().front().message);
-      }
-      selection.instances.push_back(what);
-    }
-  }
+  const scene::Scene* scene = context.sessions.scene();
+  const DragSelection selection =
+      what == "selection" || !scene ? dragged(context) : named_selection(*scene, what);
   Vec3 offset(0.0);
   int axis = -1;
   if (command.words.size() == 2) {

@@ -99,6 +99,7 @@ SceneDrag::SceneDrag(const scene::Scene& scene, std::string text, const DragSele
   for (const std::string& path : selection.instances) add_instance(scene, path);
   if (!slider_vertices_.empty()) {
     probe_.emplace(scene);
+    for (const SliderVertex& v : slider_vertices_) placed_.push_back(v.vertex);
     std::sort(candidate_sliders_.begin(), candidate_sliders_.end());
     candidate_sliders_.erase(std::unique(candidate_sliders_.begin(), candidate_sliders_.end()),
                              candidate_sliders_.end());
@@ -242,7 +243,6 @@ void SceneDrag::choose_sliders(const std::vector<scene::ParameterId>& candidates
       trial[j] = s.start + (s.step > 0 ? s.step : (s.max - s.min) / 100) * (s.start < s.max ? 1 : -1);
       moves = positions_at(trial)[i] != start[i];
     }
-    positions_at(starts);
     if (!moves)
       throw InvalidInputError("drag: vertex '" + slider_vertex_names_[i] +
                               "' cannot move: " + slider_vertices_[i].statement +
@@ -252,19 +252,9 @@ void SceneDrag::choose_sliders(const std::vector<scene::ParameterId>& candidates
 }
 
 std::vector<Vec3> SceneDrag::positions_at(const std::vector<double>& values) {
-  for (std::size_t j = 0; j < values.size(); ++j) {
-    const Slider& s = sliders_[j];
-    if (probe_->parameters()[s.id].value == values[j]) continue;
-    probe_->set_parameter(s.id, values[j]);
-    if (!probe_->last_change_moved_vertices_only()) {
-      // A value that changes the faces after all: back to the press's, and this trial is no solution.
-      probe_->set_parameter(s.id, s.start);
-      return std::vector<Vec3>(slider_vertices_.size(), Vec3(std::numeric_limits<double>::infinity()));
-    }
-  }
-  std::vector<Vec3> out;
-  for (const SliderVertex& v : slider_vertices_) out.push_back(probe_->position(v.vertex));
-  return out;
+  std::vector<std::pair<scene::ParameterId, double>> trial;
+  for (std::size_t j = 0; j < values.size(); ++j) trial.push_back({sliders_[j].id, values[j]});
+  return probe_->positions_with(placed_, trial);
 }
 
 double SceneDrag::miss(const std::vector<double>& values, const std::vector<Vec3>& targets) {
@@ -282,14 +272,17 @@ double SceneDrag::relax(std::vector<double>& x, const std::vector<bool>& fixed,
                         const std::vector<Vec3>& targets) {
   const std::size_t k = sliders_.size(), m = 3 * targets.size();
   double cost = miss(x, targets);
-  // Levenberg-Marquardt over the sliders not fixed, each kept in its range; derivatives by differences of
-  // the positions-only evaluation.
+  // Levenberg-Marquardt over the sliders not fixed, each kept in its range (a slider at an end that the
+  // descent pushes past it is held there for the iteration); derivatives by differences of the
+  // positions-only evaluation.
   double damping = 1e-3;
   for (int iteration = 0; iteration < 50 && cost > 1e-24; ++iteration) {
+    std::vector<bool> held = fixed;
+    if (std::all_of(held.begin(), held.end(), [](bool b) { return b; })) break;
     const std::vector<Vec3> at = positions_at(x);
     std::vector<double> jacobian(m * k, 0.0);
     for (std::size_t j = 0; j < k; ++j) {
-      if (fixed[j]) continue;
+      if (held[j]) continue;
       const Slider& s = sliders_[j];
       double h = 1e-6 * std::max(1.0, s.max - s.min);
       if (x[j] + h > s.max) h = -h;
@@ -299,22 +292,32 @@ double SceneDrag::relax(std::vector<double>& x, const std::vector<bool>& fixed,
       for (std::size_t i = 0; i < targets.size(); ++i)
         for (int c = 0; c < 3; ++c) jacobian[(3 * i + c) * k + j] = (moved[i][c] - at[i][c]) / h;
     }
-    std::vector<double> normal(k * k, 0.0), gradient(k, 0.0);
+    std::vector<double> normal(k * k, 0.0), descent(k, 0.0);
     for (std::size_t r = 0; r < m; ++r) {
       const double residual = at[r / 3][int(r % 3)] - targets[r / 3][int(r % 3)];
       for (std::size_t a = 0; a < k; ++a) {
-        gradient[a] -= jacobian[r * k + a] * residual;
+        descent[a] -= jacobian[r * k + a] * residual;
         for (std::size_t b = 0; b < k; ++b) normal[a * k + b] += jacobian[r * k + a] * jacobian[r * k + b];
       }
     }
+    for (std::size_t j = 0; j < k; ++j) {
+      const Slider& s = sliders_[j];
+      held[j] = held[j] || (x[j] <= s.min && descent[j] < 0) || (x[j] >= s.max && descent[j] > 0);
+      if (!held[j]) continue;
+      for (std::size_t a = 0; a < k; ++a) normal[a * k + j] = normal[j * k + a] = 0.0;
+      normal[j * k + j] = 1.0;
+      descent[j] = 0.0;
+    }
     bool improved = false;
-    for (int attempt = 0; attempt < 12 && !improved; ++attempt) {
+    const double cost_before = cost;
+    for (int attempt = 0; attempt < 8 && !improved; ++attempt) {
       std::vector<double> damped = normal, dx;
       for (std::size_t a = 0; a < k; ++a) damped[a * k + a] += damping * normal[a * k + a] + 1e-12;
-      if (!solve_linear(damped, gradient, dx)) break;
+      if (!solve_linear(damped, descent, dx)) break;
       std::vector<double> trial = x;
       for (std::size_t j = 0; j < k; ++j)
-        if (!fixed[j]) trial[j] = std::clamp(x[j] + dx[j], sliders_[j].min, sliders_[j].max);
+        if (!held[j]) trial[j] = std::clamp(x[j] + dx[j], sliders_[j].min, sliders_[j].max);
+      if (trial == x) break;  // nowhere left to go within the ranges
       const double trial_cost = miss(trial, targets);
       if (trial_cost < cost) {
         x = trial;
@@ -325,7 +328,8 @@ double SceneDrag::relax(std::vector<double>& x, const std::vector<bool>& fixed,
         damping *= 10;
       }
     }
-    if (!improved) break;
+    // Converged: another iteration would gain less than rounding does.
+    if (!improved || cost_before - cost <= 1e-9 * cost_before) break;
   }
   return cost;
 }
@@ -366,7 +370,7 @@ std::vector<double> SceneDrag::solve_sliders(const std::vector<Vec3>& targets) {
   const std::size_t k = sliders_.size();
   std::vector<double> x;
   for (const Slider& s : sliders_) x.push_back(s.start);
-  relax(x, std::vector<bool>(k, false), targets);
+  const double relaxed = relax(x, std::vector<bool>(k, false), targets);
   // The relaxed values put on their steps are the first answer; a search over the steps around them, each
   // slider put on one with the others relaxed again, looks for a closer one.
   Search search;
@@ -374,7 +378,9 @@ std::vector<double> SceneDrag::solve_sliders(const std::vector<Vec3>& targets) {
   for (std::size_t j = 0; j < k; ++j)
     search.best[j] = on_step(x[j], sliders_[j].min, sliders_[j].max, sliders_[j].step);
   search.best_cost = miss(search.best, targets);
-  search_steps(x, std::vector<bool>(k, false), targets, search);
+  // The relaxed miss bounds every answer on the steps: one as close needs no search.
+  if (search.best_cost > relaxed * (1 + 1e-9) + 1e-24)
+    search_steps(x, std::vector<bool>(k, false), targets, search);
   x = search.best;
   double cost = search.best_cost;
   // Then a step of one slider or of two at once while that lands closer.

@@ -106,7 +106,7 @@ class SceneDrag {
   struct Search {
     std::vector<double> best;
     double best_cost = 0;
-    int budget = 64;  // relaxations left
+    int budget = 16;  // relaxations left
   };
   void search_steps(std::vector<double> x, std::vector<bool> fixed, const std::vector<Vec3>& targets,
                     Search& search);
@@ -119,6 +119,8 @@ class SceneDrag {
   std::optional<scene::Scene> probe_;  // evaluates the slider vertices at trial values
   std::vector<LiteralPoint> points_;
   std::vector<SliderVertex> slider_vertices_;
+  std::vector<scene::PlacedVertex> placed_;  // the slider vertices'
+
   std::vector<std::string> slider_vertex_names_;
   std::vector<scene::ParameterId> candidate_sliders_;
   std::vector<Slider> sliders_;

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -194,6 +195,12 @@ class Scene {
   std::optional<PlacedVertex> find_placed_vertex(const std::string& full_name) const;
   // Where it is now: valid while the faces stay (Scene::last_change_moved_vertices_only).
   Vec3 position(PlacedVertex v) const { return placements_[v.placement].world.soup.positions[v.vertex]; }
+  // Where these vertices would be with the sliders at `values` (the others as they are), for an editor that
+  // searches slider values: only the placements that make them are evaluated, and nothing of the scene
+  // changes. Sliders that change the faces give no meaningful answer; a vertex that cannot be evaluated
+  // is NaN.
+  std::vector<Vec3> positions_with(std::span<const PlacedVertex> vertices,
+                                   std::span<const std::pair<ParameterId, double>> values);
   // How the instance of that placement path is placed; throws InvalidInputError for an unknown path.
   InstanceOrigin instance_origin(const std::string& path) const;
   const InstanceDecl& instance_statement(const InstanceOrigin& origin) const;
@@ -325,6 +332,9 @@ class Scene {
   // vertices) and whose faces take no colour of their own: copies their positions again. Its sources
   // have moved already; none of them is remade.
   bool move_copied_vertices(Index placement, Moved& previous);
+
+  // vertex_origins.cpp: the vertex a copied vertex was copied from; none for one its placement makes.
+  std::optional<VertexRef> copy_source(VertexRef ref) const;
 
   // vertex_names.cpp: names by unique suffix, indexed on the first lookup after they changed (a scene
   // that looks no vertex up by name, a sweep's, never pays for indexing its hundred thousand names).
