@@ -255,3 +255,20 @@ TEST_CASE("positions at trial slider values are those the sliders give, the scen
     CHECK(glm::distance(with[i], test::vertex_position(moved, names[i])) < 1e-12);
   }
 }
+
+TEST_CASE("a slider stopped at its range's end leaves the others to come as close as they can", "[scene]") {
+  // x reaches 1 at most; the second coordinate is x + y, so y must make up what x cannot.
+  const std::string text =
+      "bank b\n  set x 0.5 0 1 0.001\n  set y 0 -5 5 0.001\nendbank\n"
+      "point p ({expr $b_x} {expr $b_x + $b_y} 0) endpoint\n"
+      "point q (0 0 1) endpoint point r (1 0 1) endpoint\n"
+      "face f (p q r) endface\ninstance a f endinstance\n";
+  const scene::Scene s = read(text);
+  SceneDrag drag(s, text, {{"a_p"}, {}});
+  const Vec3 start = test::vertex_position(s, "a_p");
+  const DragStep step = drag.move(Vec3(3, 3, 0) - start);
+  REQUIRE(step.sliders.size() == 2);
+  CHECK(step.sliders[0].second == 1.0);
+  CHECK(step.sliders[1].second == Approx(2.0));
+  CHECK(step.slider_miss == Approx(2.0));
+}
