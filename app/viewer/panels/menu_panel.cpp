@@ -98,6 +98,7 @@ std::optional<std::filesystem::path> draw_main_menu(MenuSink& menus, const Actio
   if (menus.begin_menu("Edit")) {
     action_item(menus, actions, "Undo", Action::undo, context.can_undo);
     action_item(menus, actions, "Redo", Action::redo, context.can_redo);
+    action_item(menus, actions, "Move the selection", Action::move, context.has_scene);
     menus.end_menu();
   }
   if (menus.begin_menu("View")) {

@@ -79,6 +79,7 @@ TEST_CASE("the menus hold every command a user looks for there, with its shortcu
                            "File/Quit",
                            "Edit/Undo",
                            "Edit/Redo",
+                           "Edit/Move the selection",
                            "View/Faces",
                            "View/Wireframe overlay",
                            "View/Shading/Automatic: flat until subdivided",
@@ -130,7 +131,7 @@ TEST_CASE("a menu item is enabled only when its command can run, and choosing it
     RecordingMenus menus;
     draw_main_menu(menus, actions.registry, {recent, false, false, false, false}, display, layout);
     for (const char* greyed : {"File/Save", "File/Save As...", "File/Export STL / OBJ / glTF / PLY...",
-                               "Edit/Undo", "Edit/Redo"}) {
+                               "Edit/Undo", "Edit/Redo", "Edit/Move the selection"}) {
       INFO(greyed);
       CHECK_FALSE(menus.items[greyed].is_enabled);
     }
@@ -147,12 +148,14 @@ TEST_CASE("a menu item is enabled only when its command can run, and choosing it
     CHECK_FALSE(menus.items["File/Save"].is_enabled);
     CHECK(menus.items["Edit/Undo"].is_enabled);
     CHECK_FALSE(menus.items["Edit/Redo"].is_enabled);
+    CHECK_FALSE(menus.items["Edit/Move the selection"].is_enabled);  // a flat file has no text to change
   }
   SECTION("each command item runs its own action, once") {
     const std::map<std::string, Action> commands{{"File/Open...", Action::open},
                                                  {"File/Screenshot", Action::screenshot},
                                                  {"File/Quit", Action::quit},
                                                  {"Edit/Undo", Action::undo},
+                                                 {"Edit/Move the selection", Action::move},
                                                  {"View/Frame all", Action::frame_all},
                                                  {"View/Section plane", Action::toggle_section},
                                                  {"View/Reset view", Action::reset_view},
